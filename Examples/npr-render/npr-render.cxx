@@ -1,0 +1,480 @@
+// npr-render: renders model files headless into a PNG, with the vtkNPR styles.
+// Run `npr-render --help` for the flags; Documentation/cli.md describes them.
+#include "nprCameraJson.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkNPRModelReader.h"
+#include "vtkNPRRenderWindowFactory.h"
+#include "vtkNew.h"
+#include "vtkLogger.h"
+#include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace
+{
+const char* const Styles[] = { "shaded" };
+
+struct UsageError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+// Keeps VTK's multi-line messages off the terminal: npr-render reports one line per problem.
+// NPR_VERBOSE=1 prints them as well.
+class nprQuietOutputWindow : public vtkOutputWindow
+{
+public:
+  static nprQuietOutputWindow* New();
+  vtkTypeMacro(nprQuietOutputWindow, vtkOutputWindow);
+  void DisplayErrorText(const char* text) override { this->DisplayText(text); }
+  void DisplayWarningText(const char* text) override { this->DisplayText(text); }
+  void DisplayGenericWarningText(const char* text) override { this->DisplayText(text); }
+  void DisplayText(const char* text) override
+  {
+    if (text && *text)
+    {
+      this->Last = Summarise(text);
+      if (this->Verbose)
+      {
+        std::cerr << text;
+      }
+    }
+  }
+  // "ERROR: In file, line N\nvtkClass (0x..): message" -> "message"
+  static std::string Summarise(std::string text)
+  {
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+    {
+      text.pop_back();
+    }
+    text.erase(0, text.find_last_of('\n') + 1);
+    const size_t colon = text.find("): ");
+    if (text.compare(0, 3, "vtk") == 0 && colon != std::string::npos)
+    {
+      text.erase(0, colon + 3);
+    }
+    return text;
+  }
+  std::string Last;
+  bool Verbose = false;
+};
+vtkStandardNewMacro(nprQuietOutputWindow);
+
+struct Options
+{
+  std::vector<std::string> Models;
+  std::string Output;
+  int Width = 1024;
+  int Height = 768;
+  bool SizeGiven = false;
+  std::string Style = "shaded";
+  double Azimuth = 0.0;
+  double Elevation = 0.0;
+  double Zoom = 1.0;
+  double Background[3] = { 1.0, 1.0, 1.0 };
+  std::string CameraIn;
+  std::string CameraOut;
+  int Frames = 0;
+  std::string Backend;
+};
+
+void PrintHelp()
+{
+  std::cout <<
+    R"(usage: npr-render [options] MODEL [MODEL...]
+
+Renders one scene of the given models headless and writes a PNG.
+Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
+
+  -o, --output FILE        PNG to write
+  --size WxH               image size in pixels (default 1024x768)
+  --style NAME             shaded (default)
+  --azimuth DEG            rotate the camera about the view up after the reset
+  --elevation DEG          rotate the camera up or down after the reset
+  --zoom FACTOR            zoom (> 1 closer) after the reset
+  --background COLOR       r,g,b in 0..1 or #rrggbb (default white)
+  --camera-in FILE         use this camera (JSON; its clipping range as given)
+  --camera-out FILE        write the camera used (JSON)
+  --frames N               time N frames after a warm-up; print one JSON line
+  --backend NAME           egl, osmesa or x (default: NPR_BACKEND, else egl)
+  -h, --help               this text
+)";
+}
+
+double ParseNumber(const std::string& flag, const std::string& text)
+{
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end || !std::isfinite(value))
+  {
+    throw UsageError(flag + " expects a number, got '" + text + "'");
+  }
+  return value;
+}
+
+int ParseInteger(const std::string& flag, const std::string& text, int low, int high)
+{
+  char* end = nullptr;
+  const long value = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end || value < low || value > high)
+  {
+    throw UsageError(flag + " expects an integer in " + std::to_string(low) + ".." +
+      std::to_string(high) + ", got '" + text + "'");
+  }
+  return static_cast<int>(value);
+}
+
+void ParseColor(const std::string& flag, const std::string& text, double rgb[3])
+{
+  if (text.size() == 7 && text[0] == '#' &&
+    text.find_first_not_of("0123456789abcdefABCDEF", 1) == std::string::npos)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      rgb[i] = std::strtol(text.substr(1 + 2 * i, 2).c_str(), nullptr, 16) / 255.0;
+    }
+    return;
+  }
+  std::stringstream parts(text);
+  std::string part;
+  int count = 0;
+  while (std::getline(parts, part, ','))
+  {
+    const double value = count < 3 ? ParseNumber(flag, part) : -1.0;
+    if (count >= 3 || value < 0.0 || value > 1.0)
+    {
+      throw UsageError(flag + " expects r,g,b in 0..1 or #rrggbb, got '" + text + "'");
+    }
+    rgb[count++] = value;
+  }
+  if (count != 3)
+  {
+    throw UsageError(flag + " expects r,g,b in 0..1 or #rrggbb, got '" + text + "'");
+  }
+}
+
+Options ParseOptions(int argc, char* argv[])
+{
+  Options options;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc)
+      {
+        throw UsageError(arg + " needs a value");
+      }
+      return argv[++i];
+    };
+    if (arg == "-h" || arg == "--help")
+    {
+      PrintHelp();
+      std::exit(0);
+    }
+    else if (arg == "-o" || arg == "--output")
+    {
+      options.Output = value();
+    }
+    else if (arg == "--size")
+    {
+      const std::string text = value();
+      const size_t x = text.find('x');
+      if (x == std::string::npos)
+      {
+        throw UsageError("--size expects WxH (e.g. 1024x768), got '" + text + "'");
+      }
+      options.Width = ParseInteger("--size width", text.substr(0, x), 1, 16384);
+      options.Height = ParseInteger("--size height", text.substr(x + 1), 1, 16384);
+      options.SizeGiven = true;
+    }
+    else if (arg == "--style")
+    {
+      options.Style = value();
+      if (std::find(std::begin(Styles), std::end(Styles), options.Style) == std::end(Styles))
+      {
+        std::string valid;
+        for (const char* style : Styles)
+        {
+          valid += (valid.empty() ? "" : ", ") + std::string(style);
+        }
+        throw UsageError("unknown style '" + options.Style + "' (valid styles: " + valid + ")");
+      }
+    }
+    else if (arg == "--azimuth")
+    {
+      options.Azimuth = ParseNumber(arg, value());
+    }
+    else if (arg == "--elevation")
+    {
+      options.Elevation = ParseNumber(arg, value());
+    }
+    else if (arg == "--zoom")
+    {
+      options.Zoom = ParseNumber(arg, value());
+      if (options.Zoom <= 0.0)
+      {
+        throw UsageError("--zoom expects a positive factor");
+      }
+    }
+    else if (arg == "--background")
+    {
+      ParseColor(arg, value(), options.Background);
+    }
+    else if (arg == "--camera-in")
+    {
+      options.CameraIn = value();
+    }
+    else if (arg == "--camera-out")
+    {
+      options.CameraOut = value();
+    }
+    else if (arg == "--frames")
+    {
+      options.Frames = ParseInteger(arg, value(), 1, 100000);
+    }
+    else if (arg == "--backend")
+    {
+      options.Backend = value();
+      if (!vtkNPRRenderWindowFactory::IsKnownBackend(options.Backend.c_str()))
+      {
+        throw UsageError("unknown backend '" + options.Backend + "' (valid backends: " +
+          vtkNPRRenderWindowFactory::GetKnownBackends() + ")");
+      }
+    }
+    else if (arg.size() > 1 && arg[0] == '-')
+    {
+      throw UsageError("unknown option '" + arg + "' (see --help)");
+    }
+    else
+    {
+      options.Models.push_back(arg);
+    }
+  }
+  if (options.Models.empty())
+  {
+    throw UsageError("no model file given (see --help)");
+  }
+  if (options.Output.empty() && options.Frames == 0 && options.CameraOut.empty())
+  {
+    throw UsageError("nothing to do: give -o FILE, --frames N or --camera-out FILE");
+  }
+  return options;
+}
+
+// Pleasant, distinguishable surface colours for the models of a scene.
+const double Palette[][3] = { { 0.85, 0.82, 0.75 }, { 0.55, 0.70, 0.85 }, { 0.90, 0.60, 0.45 },
+  { 0.60, 0.80, 0.55 }, { 0.80, 0.65, 0.85 } };
+
+vtkIdType CountTriangles(vtkPolyData* data)
+{
+  vtkIdType triangles = 0;
+  for (vtkCellArray* cells : { data->GetPolys(), data->GetStrips() })
+  {
+    const vtkIdType connectivity = cells->GetNumberOfConnectivityIds();
+    triangles += connectivity - 2 * cells->GetNumberOfCells();
+  }
+  return triangles;
+}
+
+std::string JsonString(const std::string& text)
+{
+  std::string quoted = "\"";
+  for (char c : text)
+  {
+    if (c == '"' || c == '\\')
+    {
+      quoted += '\\';
+    }
+    quoted += (static_cast<unsigned char>(c) < 0x20) ? ' ' : c;
+  }
+  return quoted + "\"";
+}
+
+int Run(const Options& options, nprQuietOutputWindow* messages)
+{
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(options.Background[0], options.Background[1], options.Background[2]);
+  vtkIdType triangles = 0;
+  for (size_t i = 0; i < options.Models.size(); ++i)
+  {
+    vtkNew<vtkNPRModelReader> reader;
+    reader->SetFileName(options.Models[i].c_str());
+    reader->Update();
+    if (*reader->GetErrorMessage())
+    {
+      throw std::runtime_error(reader->GetErrorMessage());
+    }
+    if (*reader->GetWarningMessage())
+    {
+      std::cerr << "npr-render: warning: " << reader->GetWarningMessage() << "\n";
+    }
+    vtkPolyData* model = reader->GetOutput();
+    triangles += CountTriangles(model);
+
+    vtkNew<vtkPolyDataMapper> mapper;
+    if (model->GetPointData()->GetNormals() || model->GetNumberOfPolys() + model->GetNumberOfStrips() == 0)
+    {
+      mapper->SetInputData(model);
+    }
+    else
+    {
+      // Smooth shading that keeps sharp (> 30 degree) edges sharp, as CAD users expect.
+      vtkNew<vtkPolyDataNormals> normals;
+      normals->SetInputData(model);
+      normals->SetFeatureAngle(30.0);
+      normals->SplittingOn();
+      normals->ConsistencyOff();
+      normals->Update();
+      mapper->SetInputData(normals->GetOutput());
+    }
+    mapper->ScalarVisibilityOff();
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    const double* color = Palette[i % (sizeof(Palette) / sizeof(Palette[0]))];
+    actor->GetProperty()->SetColor(color[0], color[1], color[2]);
+    actor->GetProperty()->SetSpecular(0.2);
+    actor->GetProperty()->SetSpecularPower(30.0);
+    renderer->AddActor(actor);
+  }
+
+  int width = options.Width, height = options.Height;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  if (!options.CameraIn.empty())
+  {
+    const nprCameraState state = nprReadCameraFile(options.CameraIn);
+    state.ApplyTo(camera);
+    if (!options.SizeGiven && state.Size[0] > 0)
+    {
+      width = state.Size[0];
+      height = state.Size[1];
+    }
+  }
+  else
+  {
+    renderer->ResetCamera();
+    camera->Azimuth(options.Azimuth);
+    camera->Elevation(options.Elevation);
+    camera->OrthogonalizeViewUp();
+    camera->Zoom(options.Zoom);
+    renderer->ResetCameraClippingRange();
+  }
+
+  vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
+    vtkNPRRenderWindowFactory::CreateRenderWindow(options.Backend.c_str()));
+  if (!window)
+  {
+    throw std::runtime_error(messages->Last);
+  }
+  window->SetSize(width, height);
+  window->AddRenderer(renderer);
+  if (options.CameraIn.empty())
+  {
+    // Aspect ratio is known now; the reset above used it only for the bounds.
+    renderer->ResetCameraClippingRange();
+  }
+  window->Render();
+
+  if (options.Frames > 0)
+  {
+    using Clock = std::chrono::steady_clock;
+    window->Render(); // warm-up: shader compilation and buffer uploads are done by now
+    window->WaitForCompletion();
+    std::vector<double> times;
+    for (int i = 0; i < options.Frames; ++i)
+    {
+      const Clock::time_point start = Clock::now();
+      camera->Modified(); // a real frame, not a cached one
+      window->Render();
+      window->WaitForCompletion();
+      times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    }
+    std::vector<double> sorted = times;
+    std::sort(sorted.begin(), sorted.end());
+    const size_t n = sorted.size();
+    const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    std::cout << "{\"style\":" << JsonString(options.Style) << ",\"frames\":" << n
+              << ",\"median_ms\":" << nprFormatNumber(median)
+              << ",\"min_ms\":" << nprFormatNumber(sorted.front())
+              << ",\"max_ms\":" << nprFormatNumber(sorted.back()) << ",\"triangles\":" << triangles
+              << ",\"pixels\":" << static_cast<long long>(width) * height
+              << ",\"width\":" << width << ",\"height\":" << height
+              << ",\"backend\":" << JsonString(vtkNPRRenderWindowFactory::GetBackendName(window))
+              << ",\"renderer\":" << JsonString(vtkNPRRenderWindowFactory::GetGLRenderer(window))
+              << "}" << std::endl;
+  }
+
+  if (!options.Output.empty())
+  {
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->ReadFrontBufferOff();
+    grab->Update();
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetFileName(options.Output.c_str());
+    writer->SetInputConnection(grab->GetOutputPort());
+    writer->Write();
+    if (writer->GetErrorCode() != 0)
+    {
+      throw std::runtime_error(options.Output + ": cannot write the PNG");
+    }
+  }
+  if (!options.CameraOut.empty())
+  {
+    nprWriteCameraFile(options.CameraOut, nprCameraState::FromCamera(camera, width, height));
+  }
+  return 0;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  vtkNew<nprQuietOutputWindow> messages;
+  const char* verbose = std::getenv("NPR_VERBOSE");
+  messages->Verbose = verbose && *verbose && std::strcmp(verbose, "0") != 0;
+  vtkOutputWindow::SetInstance(messages);
+  if (!messages->Verbose)
+  {
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // VTK logs warnings here too
+  }
+  int status = 0;
+  try
+  {
+    status = Run(ParseOptions(argc, argv), messages);
+  }
+  catch (const UsageError& error)
+  {
+    std::cerr << "npr-render: error: " << error.what() << "\n";
+    status = 2;
+  }
+  catch (const std::exception& error)
+  {
+    std::cerr << "npr-render: error: " << error.what() << "\n";
+    status = 1;
+  }
+  vtkOutputWindow::SetInstance(nullptr);
+  return status;
+}

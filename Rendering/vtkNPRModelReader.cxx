@@ -1,0 +1,359 @@
+#include "vtkNPRModelReader.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCompositeDataGeometryFilter.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataSetReader.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkGLTFReader.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNPRModelFormatChecks.h"
+#include "vtkNPROFFReader.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkObjectFactory.h"
+#include "vtkPLYReader.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSTLReader.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLPolyDataReader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sys/stat.h>
+#include <vector>
+
+vtkStandardNewMacro(vtkNPRModelReader);
+
+namespace
+{
+std::string LowerCaseExtension(const std::string& fileName)
+{
+  const size_t dot = fileName.find_last_of('.');
+  const size_t slash = fileName.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+  {
+    return "";
+  }
+  std::string extension = fileName.substr(dot);
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+// Collects the first error (and warning) a reader reports, instead of printing it.
+class MessageCatcher
+{
+public:
+  explicit MessageCatcher(vtkObject* reader)
+  {
+    this->Callback->SetClientData(this);
+    this->Callback->SetCallback(&MessageCatcher::Catch);
+    reader->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+    reader->AddObserver(vtkCommand::WarningEvent, this->Callback);
+  }
+  std::string Error;
+  std::string Warning;
+
+private:
+  static void Catch(vtkObject*, unsigned long event, void* clientData, void* callData)
+  {
+    auto* self = static_cast<MessageCatcher*>(clientData);
+    std::string& slot = event == vtkCommand::ErrorEvent ? self->Error : self->Warning;
+    if (slot.empty() && callData)
+    {
+      slot = static_cast<const char*>(callData);
+      // VTK's messages carry the class and file position on their first lines; keep the last.
+      while (!slot.empty() && std::isspace(static_cast<unsigned char>(slot.back())))
+      {
+        slot.pop_back();
+      }
+      const size_t newline = slot.find_last_of('\n');
+      if (newline != std::string::npos)
+      {
+        slot.erase(0, newline + 1);
+      }
+      const size_t owner = slot.find("): "); // "vtkSTLReader (0x...): "
+      if (slot.compare(0, 3, "vtk") == 0 && owner != std::string::npos)
+      {
+        slot.erase(0, owner + 3);
+      }
+    }
+  }
+  vtkNew<vtkCallbackCommand> Callback;
+};
+
+vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& extension, const std::string& name)
+{
+  if (extension == ".stl")
+  {
+    auto reader = vtkSmartPointer<vtkSTLReader>::New();
+    reader->SetFileName(name.c_str());
+    reader->MergingOff(); // keep the file's vertices as they are
+    return reader;
+  }
+  if (extension == ".obj")
+  {
+    auto reader = vtkSmartPointer<vtkOBJReader>::New();
+    reader->SetFileName(name.c_str());
+    return reader;
+  }
+  if (extension == ".ply")
+  {
+    auto reader = vtkSmartPointer<vtkPLYReader>::New();
+    reader->SetFileName(name.c_str());
+    return reader;
+  }
+  if (extension == ".vtp")
+  {
+    auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    reader->SetFileName(name.c_str());
+    return reader;
+  }
+  if (extension == ".vtk")
+  {
+    auto reader = vtkSmartPointer<vtkDataSetReader>::New();
+    reader->SetFileName(name.c_str());
+    return reader;
+  }
+  if (extension == ".gltf" || extension == ".glb")
+  {
+    auto reader = vtkSmartPointer<vtkGLTFReader>::New();
+    reader->SetFileName(name.c_str());
+    return reader;
+  }
+  if (extension == ".off")
+  {
+    auto reader = vtkSmartPointer<vtkNPROFFReader>::New();
+    reader->SetFileName(name.c_str());
+    return reader;
+  }
+  return nullptr;
+}
+
+// Copies the cells of one kind whose points are all finite, renumbering their points.
+void CopyFiniteCells(vtkCellArray* cells, const std::vector<vtkIdType>& newPointIds,
+  vtkIdType& inputCellId, vtkCellData* inputData, vtkCellData* outputData, vtkCellArray* kept,
+  vtkIdType& dropped)
+{
+  vtkIdType size = 0;
+  const vtkIdType* ids = nullptr;
+  std::vector<vtkIdType> renumbered;
+  for (cells->InitTraversal(); cells->GetNextCell(size, ids); ++inputCellId)
+  {
+    renumbered.resize(static_cast<size_t>(size));
+    bool finite = true;
+    for (vtkIdType k = 0; k < size && finite; ++k)
+    {
+      renumbered[static_cast<size_t>(k)] = newPointIds[static_cast<size_t>(ids[k])];
+      finite = renumbered[static_cast<size_t>(k)] >= 0;
+    }
+    if (!finite)
+    {
+      ++dropped;
+      continue;
+    }
+    kept->InsertNextCell(size, renumbered.data());
+    outputData->CopyData(inputData, inputCellId, outputData->GetNumberOfTuples());
+  }
+}
+}
+
+vtkNPRModelReader::vtkNPRModelReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+vtkNPRModelReader::~vtkNPRModelReader()
+{
+  this->SetFileName(nullptr);
+}
+
+void vtkNPRModelReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "ErrorMessage: " << this->ErrorMessage << "\n";
+  os << indent << "NumberOfDroppedPoints: " << this->NumberOfDroppedPoints << "\n";
+  os << indent << "NumberOfDroppedCells: " << this->NumberOfDroppedCells << "\n";
+}
+
+const char* vtkNPRModelReader::GetSupportedExtensions()
+{
+  return ".stl .obj .ply .vtp .vtk .gltf .glb .off";
+}
+
+bool vtkNPRModelReader::IsSupportedFileName(const char* fileName)
+{
+  const std::string extension = LowerCaseExtension(fileName ? fileName : "");
+  const std::string supported = std::string(GetSupportedExtensions()) + " ";
+  return !extension.empty() && supported.find(extension + " ") != std::string::npos;
+}
+
+bool vtkNPRModelReader::Fail(const std::string& message)
+{
+  this->ErrorMessage = message;
+  vtkErrorMacro(<< message);
+  return false;
+}
+
+int vtkNPRModelReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  this->ErrorMessage.clear();
+  this->WarningMessage.clear();
+  this->NumberOfDroppedPoints = 0;
+  this->NumberOfDroppedCells = 0;
+  if (!this->Read(this->FileName ? this->FileName : "", output))
+  {
+    output->Initialize();
+    return 0;
+  }
+  return 1;
+}
+
+bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
+{
+  if (name.empty())
+  {
+    return this->Fail("no model file name given");
+  }
+  struct stat status;
+  if (stat(name.c_str(), &status) != 0)
+  {
+    return this->Fail(name + ": no such file");
+  }
+  if (S_ISDIR(status.st_mode))
+  {
+    return this->Fail(name + ": is a directory, not a model file");
+  }
+  if (!std::ifstream(name, std::ios::binary))
+  {
+    return this->Fail(name + ": cannot be read (permission denied?)");
+  }
+  if (status.st_size == 0)
+  {
+    return this->Fail(name + ": is empty (0 bytes)");
+  }
+  const std::string extension = LowerCaseExtension(name);
+  vtkSmartPointer<vtkAlgorithm> reader = MakeReader(extension, name);
+  if (!reader)
+  {
+    return this->Fail(name + ": unknown model format '" + extension + "' (supported: " +
+      GetSupportedExtensions() + ")");
+  }
+  const std::string structureError = extension == ".ply" ? vtkNPRModelFormatChecks::CheckPLY(name)
+    : extension == ".stl"                               ? vtkNPRModelFormatChecks::CheckSTL(name)
+                                                        : std::string();
+  if (!structureError.empty())
+  {
+    return this->Fail(name + ": " + structureError);
+  }
+
+  MessageCatcher messages(reader);
+  reader->Update();
+  vtkDataObject* data = reader->GetOutputDataObject(0);
+  if (!messages.Error.empty())
+  {
+    return this->Fail(name + ": malformed or unreadable " + extension.substr(1) + " file: " +
+      messages.Error);
+  }
+
+  // Every format ends as one polydata: composite (glTF) and non-polygonal (legacy) data too.
+  vtkSmartPointer<vtkPolyData> surface;
+  if (auto* polyData = vtkPolyData::SafeDownCast(data))
+  {
+    surface = polyData;
+  }
+  else if (vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkNew<vtkCompositeDataGeometryFilter> merge;
+    merge->SetInputData(data);
+    merge->Update();
+    surface = merge->GetOutput();
+  }
+  else if (auto* dataSet = vtkDataSet::SafeDownCast(data))
+  {
+    vtkNew<vtkDataSetSurfaceFilter> extract;
+    extract->SetInputData(dataSet);
+    extract->Update();
+    surface = extract->GetOutput();
+  }
+  if (!surface || surface->GetNumberOfCells() == 0 || surface->GetNumberOfPoints() == 0)
+  {
+    return this->Fail(name + ": contains no geometry (no points or no cells)");
+  }
+
+  // Drop points with NaN or infinite coordinates, and the cells that use them.
+  vtkPoints* points = surface->GetPoints();
+  const vtkIdType numberOfPoints = points->GetNumberOfPoints();
+  std::vector<vtkIdType> newPointIds(static_cast<size_t>(numberOfPoints), -1);
+  vtkIdType finitePoints = 0;
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
+    {
+      newPointIds[static_cast<size_t>(i)] = finitePoints++;
+    }
+  }
+  if (finitePoints == numberOfPoints)
+  {
+    output->ShallowCopy(surface);
+    return true;
+  }
+
+  vtkNew<vtkPoints> keptPoints;
+  keptPoints->SetDataType(points->GetDataType());
+  keptPoints->SetNumberOfPoints(finitePoints);
+  output->GetPointData()->CopyAllocate(surface->GetPointData(), finitePoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    const vtkIdType target = newPointIds[static_cast<size_t>(i)];
+    if (target >= 0)
+    {
+      keptPoints->SetPoint(target, points->GetPoint(i));
+      output->GetPointData()->CopyData(surface->GetPointData(), i, target);
+    }
+  }
+  output->SetPoints(keptPoints);
+  output->GetCellData()->CopyAllocate(surface->GetCellData(), surface->GetNumberOfCells());
+
+  // vtkPolyData numbers its cells vertices first, then lines, polygons, strips.
+  vtkIdType inputCellId = 0;
+  vtkNew<vtkCellArray> verts, lines, polys, strips;
+  CopyFiniteCells(surface->GetVerts(), newPointIds, inputCellId, surface->GetCellData(),
+    output->GetCellData(), verts, this->NumberOfDroppedCells);
+  CopyFiniteCells(surface->GetLines(), newPointIds, inputCellId, surface->GetCellData(),
+    output->GetCellData(), lines, this->NumberOfDroppedCells);
+  CopyFiniteCells(surface->GetPolys(), newPointIds, inputCellId, surface->GetCellData(),
+    output->GetCellData(), polys, this->NumberOfDroppedCells);
+  CopyFiniteCells(surface->GetStrips(), newPointIds, inputCellId, surface->GetCellData(),
+    output->GetCellData(), strips, this->NumberOfDroppedCells);
+  output->SetVerts(verts);
+  output->SetLines(lines);
+  output->SetPolys(polys);
+  output->SetStrips(strips);
+  this->NumberOfDroppedPoints = numberOfPoints - finitePoints;
+
+  if (output->GetNumberOfCells() == 0)
+  {
+    return this->Fail(name + ": no cell is left after dropping " +
+      std::to_string(this->NumberOfDroppedPoints) + " points with NaN/Inf coordinates");
+  }
+  this->WarningMessage = name + ": dropped " + std::to_string(this->NumberOfDroppedPoints) +
+    " points with NaN/Inf coordinates and the " + std::to_string(this->NumberOfDroppedCells) +
+    " cells that use them";
+  vtkWarningMacro(<< this->WarningMessage);
+  return true;
+}

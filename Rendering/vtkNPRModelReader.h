@@ -1,0 +1,88 @@
+/**
+ * @class   vtkNPRModelReader
+ * @brief   Reads a surface model of any format the product supports, strictly, into vtkPolyData.
+ *
+ * The format comes from the file name's extension (case does not matter): STL (.stl), Wavefront
+ * OBJ (.obj), PLY (.ply), VTK XML polydata (.vtp), legacy VTK (.vtk, any dataset: its surface is
+ * taken), glTF 2.0 (.gltf, .glb: all meshes merged) and Geomview OFF (.off, vtkNPROFFReader).
+ *
+ * A missing, unreadable or empty file, an unknown extension, a file the format's reader rejects
+ * and a file without any surface, line or vertex cell are errors: the output is empty,
+ * GetErrorMessage() holds one line naming the file and the problem, and ErrorEvent is invoked.
+ *
+ * Points with a NaN or infinite coordinate are removed with every cell that uses them, with a
+ * warning that counts them (GetNumberOfDroppedPoints(), GetNumberOfDroppedCells()); a file with
+ * no finite cell left is an error. Point and cell data follow their points and cells.
+ */
+#ifndef vtkNPRModelReader_h
+#define vtkNPRModelReader_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkRenderingNPRModule.h" // for export macro
+
+#include <string> // for std::string
+
+class VTKRENDERINGNPR_EXPORT vtkNPRModelReader : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkNPRModelReader* New();
+  vtkTypeMacro(vtkNPRModelReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The file to read.
+   */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  /**
+   * One line naming the file and what is wrong with it ("" after a successful read).
+   */
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+
+  /**
+   * The warning of the last read ("" when there was none), e.g. about dropped points.
+   */
+  const char* GetWarningMessage() const { return this->WarningMessage.c_str(); }
+
+  ///@{
+  /**
+   * What the last read removed because of NaN or infinite coordinates.
+   */
+  vtkGetMacro(NumberOfDroppedPoints, vtkIdType);
+  vtkGetMacro(NumberOfDroppedCells, vtkIdType);
+  ///@}
+
+  /**
+   * True when the file name ends with a supported extension.
+   */
+  static bool IsSupportedFileName(const char* fileName);
+
+  /**
+   * The supported extensions, for messages: ".stl .obj .ply .vtp .vtk .gltf .glb .off".
+   */
+  static const char* GetSupportedExtensions();
+
+protected:
+  vtkNPRModelReader();
+  ~vtkNPRModelReader() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  char* FileName = nullptr;
+  std::string ErrorMessage;
+  std::string WarningMessage;
+  vtkIdType NumberOfDroppedPoints = 0;
+  vtkIdType NumberOfDroppedCells = 0;
+
+private:
+  vtkNPRModelReader(const vtkNPRModelReader&) = delete;
+  void operator=(const vtkNPRModelReader&) = delete;
+
+  bool Read(const std::string& fileName, vtkPolyData* output);
+  bool Fail(const std::string& message);
+};
+
+#endif

@@ -1,0 +1,83 @@
+/**
+ * @class   vtkNPRRenderWindowFactory
+ * @brief   The one way programs and tests get a render window: EGL, OSMesa or X.
+ *
+ * CreateRenderWindow() returns a new render window of the requested backend, ready for
+ * off-screen rendering, or nullptr with a clear error (vtkErrorMacro) when that backend cannot
+ * render in this process. Backends:
+ *
+ * - "egl": vtkNPREGLRenderWindow, no X server needed. The default.
+ * - "osmesa": vtkNPROSMesaRenderWindow; the program must link the CMake target NPR::OSMesa.
+ *   In such a program OpenGL calls go to libOSMesa, so it is also the default there.
+ * - "x": VTK's own X window (vtkXOpenGLRenderWindow), off-screen; needs DISPLAY (e.g. Xvfb).
+ *
+ * With no backend named, the environment variable NPR_BACKEND (egl|osmesa|x) decides, then the
+ * defaults above. The headless windows create their context here, so a failure is reported
+ * before the first render rather than as a black image.
+ *
+ * @code
+ * vtkSmartPointer<vtkRenderWindow> window =
+ *   vtkSmartPointer<vtkRenderWindow>::Take(vtkNPRRenderWindowFactory::CreateRenderWindow());
+ * @endcode
+ */
+#ifndef vtkNPRRenderWindowFactory_h
+#define vtkNPRRenderWindowFactory_h
+
+#include "vtkObject.h"
+#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkWrappingHints.h"      // for VTK_NEWINSTANCE
+
+class vtkRenderWindow;
+
+class VTKRENDERINGNPR_EXPORT vtkNPRRenderWindowFactory : public vtkObject
+{
+public:
+  static vtkNPRRenderWindowFactory* New();
+  vtkTypeMacro(vtkNPRRenderWindowFactory, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * A new render window of the given backend ("egl", "osmesa", "x"; nullptr or "" for the
+   * default), multisampling off, or nullptr with an error when it cannot render here.
+   * The caller owns the returned reference.
+   */
+  VTK_NEWINSTANCE
+  static vtkRenderWindow* CreateRenderWindow(const char* backend = nullptr);
+
+  /**
+   * The backend CreateRenderWindow(nullptr) picks: NPR_BACKEND if set, else "osmesa" in a program
+   * linked with NPR::OSMesa, else "egl".
+   */
+  static const char* GetDefaultBackend();
+
+  /**
+   * True for "egl", "osmesa" and "x".
+   */
+  static bool IsKnownBackend(const char* backend);
+
+  /**
+   * The backends, separated by '|' ("egl|osmesa|x"), for messages.
+   */
+  static const char* GetKnownBackends() { return "egl|osmesa|x"; }
+
+  /**
+   * The name of the backend a window belongs to ("egl", "osmesa", "x"), or "unknown".
+   */
+  static const char* GetBackendName(vtkRenderWindow* window);
+
+  /**
+   * The GL_RENDERER string of a window's context, creating the context first if needed
+   * ("" when there is none).
+   */
+  static const char* GetGLRenderer(vtkRenderWindow* window);
+
+protected:
+  vtkNPRRenderWindowFactory() = default;
+  ~vtkNPRRenderWindowFactory() override = default;
+
+private:
+  vtkNPRRenderWindowFactory(const vtkNPRRenderWindowFactory&) = delete;
+  void operator=(const vtkNPRRenderWindowFactory&) = delete;
+};
+
+#endif
