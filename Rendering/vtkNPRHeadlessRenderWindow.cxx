@@ -46,10 +46,15 @@ bool vtkNPRHeadlessRenderWindow::InitializeContext()
     this->ContextFailed = true;
     return false;
   }
-  // GLEW (our OpenGLInitContext), then VTK's GL state; both need the context current.
+  // GLEW first: VTK's state set-up below calls OpenGL through it, and must not run without it.
+  this->OpenGLInitContext();
+  if (!this->ContextValid)
+  {
+    this->ContextFailed = true;
+    return false;
+  }
   this->Superclass::OpenGLInit();
-  this->ContextFailed = !this->ContextValid;
-  return this->ContextValid;
+  return true;
 }
 
 void vtkNPRHeadlessRenderWindow::MakeCurrent()

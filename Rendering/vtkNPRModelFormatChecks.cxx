@@ -1,6 +1,8 @@
 #include "vtkNPRModelFormatChecks.h"
 
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -200,9 +202,12 @@ std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
           bool ok = true;
           if (ascii)
           {
-            double value;
-            ok = static_cast<bool>(row >> value);
-            index = static_cast<long long>(value);
+            std::string token; // strtod, unlike operator>>, reads "nan" and "inf"
+            char* end = nullptr;
+            ok = static_cast<bool>(row >> token);
+            const double value = ok ? std::strtod(token.c_str(), &end) : 0.0;
+            ok = ok && end != token.c_str() && *end == '\0';
+            index = ok && std::isfinite(value) ? static_cast<long long>(value) : -1;
           }
           else if (property.Float)
           {

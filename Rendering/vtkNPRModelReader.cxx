@@ -262,6 +262,13 @@ bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
   MessageCatcher messages(reader);
   reader->Update();
   vtkDataObject* data = reader->GetOutputDataObject(0);
+  if (auto* off = vtkNPROFFReader::SafeDownCast(reader))
+  {
+    if (*off->GetErrorMessage())
+    {
+      return this->Fail(off->GetErrorMessage()); // already "file:line: what"
+    }
+  }
   if (!messages.Error.empty())
   {
     return this->Fail(name + ": malformed or unreadable " + extension.substr(1) + " file: " +

@@ -1,0 +1,129 @@
+"""npr-render's behaviour: camera files round-trip exactly, --frames prints its JSON line, NaN
+points give a warning, and every bad input gives one clear error line and a non-zero exit."""
+import argparse
+import json
+import os
+import subprocess
+import sys
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--npr-render", required=True)
+parser.add_argument("--npr-render-osmesa", required=True)
+parser.add_argument("--data", required=True)
+parser.add_argument("--out", required=True)
+args = parser.parse_args()
+os.makedirs(args.out, exist_ok=True)
+models = os.path.join(args.data, "Models")
+bunny = os.path.join(args.data, "bunny.ply")
+rotor = os.path.join(args.data, "rotor.ply")
+failures = []
+
+
+def run(*argv, program=None):
+    result = subprocess.run([program or args.npr_render, *argv], capture_output=True, text=True, timeout=300)
+    return result.returncode, result.stdout, result.stderr
+
+
+def check(condition, message):
+    print(("ok: " if condition else "FAILED: ") + message)
+    if not condition:
+        failures.append(message)
+
+
+def out(name):
+    return os.path.join(args.out, name)
+
+
+# Camera round trip: the camera written is the camera used; rendering with it reproduces the
+# image bit for bit, and the clipping range is taken as given.
+rc, _, err = run(rotor, "--azimuth", "40", "--elevation", "25", "--zoom", "1.3", "--size", "320x240",
+                 "-o", out("rt_a.png"), "--camera-out", out("cam.json"))
+check(rc == 0, "render with --camera-out (%s)" % err.strip())
+text = open(out("cam.json")).read()
+camera = json.loads(text)
+keys = ["position", "focal_point", "view_up", "view_angle", "parallel_projection", "parallel_scale",
+        "clipping_range", "size"]
+check(list(camera) == keys, "camera keys in the documented order: %s" % list(camera))
+check(text.startswith('{"position":[') and "\n" not in text.strip(), "camera file on one line, no spaces")
+check(camera["size"] == [320, 240], "camera size is the render size")
+check(abs(camera["view_angle"] - 30.0 / 1.3) < 1e-9 and camera["parallel_projection"] is False,
+      "perspective, view angle narrowed by --zoom: %s" % camera["view_angle"])
+rc, _, err = run(rotor, "--camera-in", out("cam.json"), "-o", out("rt_b.png"), "--camera-out", out("cam2.json"))
+check(rc == 0, "render with --camera-in (%s)" % err.strip())
+check(open(out("rt_a.png"), "rb").read() == open(out("rt_b.png"), "rb").read(),
+      "--camera-in reproduces the --camera-out render exactly")
+check(json.load(open(out("cam2.json"))) == camera, "the camera read is the camera written back")
+narrow = dict(camera, clipping_range=[camera["clipping_range"][0], camera["clipping_range"][0] * 1.0001])
+json.dump(narrow, open(out("cam_narrow.json"), "w"))
+rc, _, _ = run(rotor, "--camera-in", out("cam_narrow.json"), "-o", out("rt_c.png"), "--camera-out", out("cam3.json"))
+check(rc == 0 and json.load(open(out("cam3.json")))["clipping_range"] == narrow["clipping_range"],
+      "--camera-in keeps the given clipping range (not reset)")
+check(open(out("rt_c.png"), "rb").read() != open(out("rt_a.png"), "rb").read(),
+      "a near-zero depth range clips the model away")
+
+# --frames: one JSON line with the timing figures.
+rc, stdout, err = run(bunny, "--frames", "3", "--size", "200x150")
+lines = [line for line in stdout.splitlines() if line.strip()]
+check(rc == 0 and len(lines) == 1, "--frames prints one line (%s)" % err.strip())
+timing = json.loads(lines[0]) if lines else {}
+for key in ["median_ms", "min_ms", "max_ms", "triangles", "pixels", "renderer"]:
+    check(key in timing, "--frames reports %s" % key)
+check(timing.get("triangles") == 75408 and timing.get("pixels") == 30000 and timing.get("frames") == 3,
+      "--frames counts: %s" % timing)
+check(0 < timing.get("min_ms", 0) <= timing.get("median_ms", 0) <= timing.get("max_ms", 0),
+      "min <= median <= max")
+
+# OSMesa build of the same program renders the same scene.
+rc, stdout, err = run(rotor, "--size", "160x120", "--frames", "1", "-o", out("osmesa.png"),
+                      program=args.npr_render_osmesa)
+check(rc == 0 and json.loads(stdout)["backend"] == "osmesa", "npr-render-osmesa renders on OSMesa (%s)" % err.strip())
+
+# NaN coordinates: a warning, and the image is still made.
+rc, _, err = run(os.path.join(models, "cube_nan.ply"), "--size", "64x64", "-o", out("nan.png"))
+check(rc == 0 and "warning" in err and "NaN/Inf" in err and os.path.exists(out("nan.png")),
+      "NaN points are dropped with a warning (%s)" % err.strip())
+
+# Several models and formats in one scene.
+rc, _, err = run(os.path.join(models, "cube.glb"), os.path.join(models, "cube.off"), "--size", "64x64",
+                 "-o", out("two.png"))
+check(rc == 0, "two models in one scene (%s)" % err.strip())
+
+# Errors: one line on stderr that names the problem, non-zero exit, no crash.
+errors = [
+    ([os.path.join(models, "missing.ply"), "-o", out("x.png")], "no such file"),
+    ([os.path.join(models, "empty.stl"), "-o", out("x.png")], "is empty"),
+    ([os.path.join(models, "truncated.ply"), "-o", out("x.png")], "truncated"),
+    ([os.path.join(models, "bad_keyword.off"), "-o", out("x.png")], "is no OFF keyword"),
+    ([os.path.join(models, "bad.gltf"), "-o", out("x.png")], "malformed or unreadable gltf"),
+    ([os.path.join(models, "cube.xyz"), "-o", out("x.png")], "unknown model format"),
+    ([rotor, "--style", "watercolour", "-o", out("x.png")], "unknown style 'watercolour' (valid styles: shaded)"),
+    ([rotor, "--size", "100", "-o", out("x.png")], "--size expects WxH"),
+    ([rotor, "--size", "0x100", "-o", out("x.png")], "--size width expects an integer in 1..16384"),
+    ([rotor, "--zoom", "-2", "-o", out("x.png")], "--zoom expects a positive factor"),
+    ([rotor, "--azimuth", "north", "-o", out("x.png")], "--azimuth expects a number"),
+    ([rotor, "--background", "1,2,3", "-o", out("x.png")], "--background expects r,g,b"),
+    ([rotor, "--frames", "0"], "--frames expects an integer"),
+    ([rotor, "--backend", "vulkan", "-o", out("x.png")], "unknown backend 'vulkan'"),
+    ([rotor, "--backend", "osmesa", "-o", out("x.png")], "NPR::OSMesa"),
+    ([rotor, "--bogus", "-o", out("x.png")], "unknown option '--bogus'"),
+    ([rotor], "nothing to do"),
+    ([rotor, "-o"], "-o needs a value"),
+    (["-o", out("x.png")], "no model file given"),
+    ([rotor, "--camera-in", os.path.join(models, "missing.json"), "-o", out("x.png")], "cannot open the camera file"),
+    ([rotor, "--camera-in", os.path.join(models, "bad.gltf"), "-o", out("x.png")], "not valid JSON"),
+    ([rotor, "-o", os.path.join(args.out, "no", "such", "dir", "x.png")], "cannot write the PNG"),
+]
+along_view = [f - p for f, p in zip(camera["focal_point"], camera["position"])]
+json.dump(dict(camera, view_up=along_view), open(out("cam_bad_up.json"), "w"))
+errors.append(([rotor, "--camera-in", out("cam_bad_up.json"), "-o", out("x.png")], "view_up"))
+json.dump({k: v for k, v in camera.items() if k != "focal_point"}, open(out("cam_missing.json"), "w"))
+errors.append(([rotor, "--camera-in", out("cam_missing.json"), "-o", out("x.png")], 'missing "focal_point"'))
+for argv, expected in errors:
+    rc, stdout, err = run(*argv)
+    lines = err.strip().splitlines()
+    ok = rc not in (0,) and rc > 0 and len(lines) == 1 and lines[0].startswith("npr-render: error: ") \
+        and expected in lines[0]
+    check(ok, "%s -> rc %d, %r" % (" ".join(os.path.basename(a) for a in argv), rc, err.strip()))
+
+print("%d passed, %d failed" % (0 if failures else 1, len(failures)))
+sys.exit(1 if failures else 0)

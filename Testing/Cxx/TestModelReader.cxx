@@ -1,0 +1,162 @@
+// vtkNPRModelReader and vtkNPROFFReader: every supported format reads the unit cube; NaN/Inf
+// points are dropped with their cells; every malformed, empty, missing or unknown file is an
+// error naming the file and the problem, with an empty output and no crash.
+//
+// usage: TestModelReader MODEL_DIR SCRATCH_DIR
+#include "nprTesting.h"
+
+#include "vtkCellData.h"
+#include "vtkNPRModelReader.h"
+#include "vtkNPROFFReader.h"
+#include "vtkLogger.h"
+#include "vtkNew.h"
+#include "vtkOutputWindow.h"
+#include "vtkStringOutputWindow.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <fstream>
+#include <sys/stat.h>
+
+namespace
+{
+struct GoodCase
+{
+  const char* File;
+  vtkIdType Points;
+  vtkIdType Cells;
+};
+
+struct BadCase
+{
+  const char* File;
+  const char* Reason; // a part of the expected message
+};
+
+vtkSmartPointer<vtkNPRModelReader> Read(const std::string& path)
+{
+  auto reader = vtkSmartPointer<vtkNPRModelReader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  return reader;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  if (argc != 3)
+  {
+    std::cerr << "usage: TestModelReader MODEL_DIR SCRATCH_DIR\n";
+    return 2;
+  }
+  const std::string dir = argv[1];
+  vtkOutputWindow::GetInstance()->PromptUserOff();
+
+  const GoodCase good[] = { { "cube.stl", 36, 12 }, { "cube_binary.stl", 36, 12 },
+    { "cube.obj", 8, 6 }, { "cube.ply", 8, 6 }, { "cube_binary.ply", 8, 6 }, { "cube.vtp", 8, 6 },
+    { "cube.vtk", 8, 6 }, { "cube_hexahedron.vtk", 8, 6 }, { "cube.gltf", 8, 12 },
+    { "cube.glb", 8, 12 }, { "cube.off", 8, 6 }, { "cube_colors.off", 8, 6 },
+    { "CUBE_UPPER.OFF", 8, 6 } };
+  // An upper-case extension is the same format.
+  {
+    std::ifstream in(dir + "/cube.off");
+    std::ofstream out(std::string(argv[2]) + "/CUBE_UPPER.OFF");
+    out << in.rdbuf();
+  }
+  for (const GoodCase& c : good)
+  {
+    const std::string path =
+      (std::string(c.File) == "CUBE_UPPER.OFF" ? std::string(argv[2]) : dir) + "/" + c.File;
+    vtkSmartPointer<vtkNPRModelReader> reader = Read(path);
+    vtkPolyData* out = reader->GetOutput();
+    std::cout << c.File << ": " << out->GetNumberOfPoints() << " points, " << out->GetNumberOfCells()
+              << " cells " << reader->GetErrorMessage() << "\n";
+    NPR_CHECK(std::string(reader->GetErrorMessage()).empty(), c.File << ": " << reader->GetErrorMessage());
+    NPR_CHECK(out->GetNumberOfPoints() == c.Points, c.File << ": " << out->GetNumberOfPoints() << " points");
+    NPR_CHECK(out->GetNumberOfCells() == c.Cells, c.File << ": " << out->GetNumberOfCells() << " cells");
+    double bounds[6];
+    out->GetBounds(bounds);
+    NPR_CHECK(bounds[0] == 0 && bounds[1] == 1 && bounds[2] == 0 && bounds[3] == 1 &&
+        bounds[4] == 0 && bounds[5] == 1,
+      c.File << ": bounds are not the unit cube");
+  }
+
+  // Geomview colours: per-vertex RGBA scaled from 0..1 to bytes.
+  {
+    vtkNew<vtkNPROFFReader> off;
+    off->SetFileName((dir + "/cube_colors.off").c_str());
+    off->Update();
+    auto* colors = vtkUnsignedCharArray::SafeDownCast(off->GetOutput()->GetPointData()->GetScalars());
+    NPR_CHECK(colors && colors->GetNumberOfComponents() == 4, "COFF colours missing");
+    if (colors)
+    {
+      NPR_CHECK(colors->GetValue(4 * 1 + 0) == 255 && colors->GetValue(4 * 1 + 1) == 128 &&
+          colors->GetValue(4 * 1 + 2) == 64,
+        "COFF colour of vertex 1 is " << int(colors->GetValue(4)) << ","
+                                      << int(colors->GetValue(5)) << "," << int(colors->GetValue(6)));
+    }
+    NPR_CHECK(vtkNPROFFReader::CanReadFile((dir + "/cube.off").c_str()), "CanReadFile(cube.off)");
+    NPR_CHECK(!vtkNPROFFReader::CanReadFile((dir + "/cube.obj").c_str()), "CanReadFile(cube.obj)");
+  }
+
+  // NaN / Inf points: dropped with their cells, a warning, finite bounds.
+  for (const char* file : { "cube_nan.ply", "cube_nan.off" })
+  {
+    vtkSmartPointer<vtkNPRModelReader> reader = Read(dir + "/" + file);
+    vtkPolyData* out = reader->GetOutput();
+    NPR_CHECK(std::string(reader->GetErrorMessage()).empty(), file << ": " << reader->GetErrorMessage());
+    NPR_CHECK(reader->GetNumberOfDroppedPoints() == 1, file << ": dropped " << reader->GetNumberOfDroppedPoints());
+    NPR_CHECK(reader->GetNumberOfDroppedCells() == 1, file << ": dropped cells " << reader->GetNumberOfDroppedCells());
+    NPR_CHECK(out->GetNumberOfPoints() == 8 && out->GetNumberOfCells() == 6,
+      file << ": " << out->GetNumberOfPoints() << " points, " << out->GetNumberOfCells() << " cells");
+    NPR_CHECK(std::string(reader->GetWarningMessage()).find("NaN/Inf") != std::string::npos,
+      file << ": no warning");
+    double bounds[6];
+    out->GetBounds(bounds);
+    NPR_CHECK(std::isfinite(bounds[0] + bounds[1] + bounds[2] + bounds[3] + bounds[4] + bounds[5]),
+      file << ": bounds not finite");
+  }
+
+  mkdir((std::string(argv[2]) + "/a_directory.ply").c_str(), 0755);
+  const BadCase bad[] = { { "missing.stl", "no such file" },
+    { "../a_directory.ply", "is a directory" }, { "empty.stl", "is empty" },
+    { "garbage.stl", "malformed binary STL" }, { "truncated.ply", "truncated" },
+    { "bad_index.ply", "uses vertex 99" }, { "bad.vtp", "malformed or unreadable vtp" },
+    { "bad.gltf", "malformed or unreadable gltf" }, { "no_geometry.obj", "contains no geometry" },
+    { "cube.xyz", "unknown model format '.xyz'" }, { "all_nan.off", "no cell is left" },
+    { "bad_keyword.off", "bad_keyword.off:1: 'OFX' is no OFF keyword" },
+    { "bad_count.off", "bad_count.off:2: 'one' is not an integer" },
+    { "bad_index.off", "face index 7 is out of range" },
+    { "bad_number.off", "bad_number.off:4: 'zero' is not a number" },
+    { "short_face.off", "face line lists 2 indices of 3" },
+    { "truncated.off", "unexpected end of file: expected a face line" },
+    { "trailing.off", "unexpected content after the last face" },
+    { "binary.off", "binary OFF is not supported" },
+    { "four_d.off", "4D and n-dimensional" } };
+  // Errors are expected below: keep VTK's own report of them off the log.
+  vtkNew<vtkStringOutputWindow> quiet;
+  vtkOutputWindow::SetInstance(quiet);
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  for (const BadCase& c : bad)
+  {
+    const std::string path = std::string(c.File).compare(0, 3, "../") == 0
+      ? std::string(argv[2]) + "/" + (c.File + 3)
+      : dir + "/" + c.File;
+    vtkSmartPointer<vtkNPRModelReader> reader = Read(path);
+    const std::string message = reader->GetErrorMessage();
+    std::cout << c.File << ": " << message << "\n";
+    NPR_CHECK(message.find(c.Reason) != std::string::npos,
+      c.File << ": message '" << message << "' lacks '" << c.Reason << "'");
+    NPR_CHECK(message.find(path) != std::string::npos || message.find(c.File) != std::string::npos,
+      c.File << ": message does not name the file");
+    NPR_CHECK(message.find('\n') == std::string::npos, c.File << ": message is not one line");
+    NPR_CHECK(reader->GetOutput()->GetNumberOfCells() == 0, c.File << ": output not empty");
+  }
+  vtkOutputWindow::SetInstance(nullptr);
+
+  NPR_CHECK(vtkNPRModelReader::IsSupportedFileName("a/b.GLB"), "GLB not supported");
+  NPR_CHECK(!vtkNPRModelReader::IsSupportedFileName("a.b/c"), "'a.b/c' supported");
+  return nprTestResult();
+}

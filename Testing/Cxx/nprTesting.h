@@ -1,0 +1,87 @@
+// The vtkNPR test harness: headless windows, pixel statistics and baseline comparison.
+//
+// Baseline comparison (nprCompareWithBaseline, npr-image-compare):
+// - A pixel's difference is the largest channel difference (0..255) between it and the best
+//   match among the 3x3 neighbourhood of the same pixel in the other image, taken both ways, so
+//   that edges moved by one pixel (rasteriser differences between drivers) do not count.
+// - A pixel differs when that difference exceeds PixelThreshold (default 16).
+// - The comparison fails when the images' sizes differ or when more than MaxDifferingFraction of
+//   the pixels differ (default 0.002, i.e. 0.2 %).
+// On failure the rendered image and a diff image (differing pixels red on a dimmed copy) are
+// written to $NPR_TEST_OUTPUT_DIR (default: the current directory) and their paths printed.
+// With NPR_UPDATE_BASELINES=1 the rendered image replaces the baseline instead, and the
+// comparison passes: baselines change only on purpose (target `update-baselines`).
+#ifndef nprTesting_h
+#define nprTesting_h
+
+#include "vtkSmartPointer.h"
+
+#include <iostream>
+#include <string>
+
+class vtkImageData;
+class vtkRenderWindow;
+
+// Counts failed checks; a test returns nprTestResult().
+int& nprTestFailures();
+inline int nprTestResult()
+{
+  std::cout << (nprTestFailures() ? "FAILED" : "PASSED") << " (" << nprTestFailures()
+            << " failed checks)\n";
+  return nprTestFailures() ? 1 : 0;
+}
+#define NPR_CHECK(condition, message)                                                            \
+  do                                                                                             \
+  {                                                                                              \
+    if (!(condition))                                                                            \
+    {                                                                                            \
+      ++nprTestFailures();                                                                       \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #condition ": " << message  \
+                << "\n";                                                                         \
+    }                                                                                            \
+  } while (0)
+
+// A window from vtkNPRRenderWindowFactory (backend nullptr: the default), multisampling off.
+vtkSmartPointer<vtkRenderWindow> nprCreateTestWindow(int width, int height, const char* backend);
+
+// The window's colour buffer as RGB (3 x unsigned char, origin bottom left).
+vtkSmartPointer<vtkImageData> nprCaptureImage(vtkRenderWindow* window);
+
+struct nprPixelStatistics
+{
+  long long Pixels = 0;           // all pixels
+  long long ObjectPixels = 0;     // pixels farther than 30 (max channel) from the background
+  double MinObjectLuminance = 0;  // 0..255, over object pixels
+  double MaxObjectLuminance = 0;
+  double MeanObjectColor[3] = { 0, 0, 0 };
+  int Bounds[4] = { 0, 0, 0, 0 }; // xmin, xmax, ymin, ymax of the object pixels
+};
+nprPixelStatistics nprComputePixelStatistics(vtkImageData* image, const double background[3]);
+
+struct nprImageTolerance
+{
+  int PixelThreshold = 16;
+  double MaxDifferingFraction = 0.002;
+};
+
+struct nprImageDifference
+{
+  bool SizeMatches = false;
+  long long DifferingPixels = 0;
+  double DifferingFraction = 1.0;
+  int MaxDifference = 255;
+  vtkSmartPointer<vtkImageData> DiffImage;
+};
+nprImageDifference nprCompareImages(
+  vtkImageData* image, vtkImageData* baseline, const nprImageTolerance& tolerance);
+
+// Compares with Testing/Data/Baseline/<name>.png (see above). Returns true when it matches.
+bool nprCompareWithBaseline(vtkImageData* image, const std::string& name,
+  const nprImageTolerance& tolerance = nprImageTolerance());
+bool nprCompareWithBaselineFile(vtkImageData* image, const std::string& baselinePath,
+  const std::string& name, const nprImageTolerance& tolerance = nprImageTolerance());
+
+vtkSmartPointer<vtkImageData> nprReadPNG(const std::string& path);
+bool nprWritePNG(vtkImageData* image, const std::string& path);
+
+#endif

@@ -1,0 +1,65 @@
+"""The Python wrapping: vtknpr imports with only PYTHONPATH set, renders headless through the
+module's EGL window, reads a model, and reports unavailable backends as None."""
+import argparse
+import os
+import sys
+
+parser = argparse.ArgumentParser()
+parser.add_argument("data")
+parser.add_argument("--expect-prefix", help="vtknpr must come from this install prefix")
+args = parser.parse_args()
+
+import vtknpr  # noqa: E402  (first: it must pull in the VTK modules it needs by itself)
+from vtknpr import vtkNPRModelReader, vtkNPRRenderWindowFactory  # noqa: E402
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer  # noqa: E402
+from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter  # noqa: E402
+import vtkmodules.vtkRenderingOpenGL2  # noqa: E402,F401  (object factory overrides)
+
+if args.expect_prefix:
+    here = os.path.realpath(vtknpr.__file__)
+    assert here.startswith(os.path.realpath(args.expect_prefix)), here
+
+reader = vtkNPRModelReader()
+reader.SetFileName(os.path.join(args.data, "rotor.ply"))
+reader.Update()
+assert reader.GetErrorMessage() == "", reader.GetErrorMessage()
+assert reader.GetOutput().GetNumberOfCells() == 4800, reader.GetOutput().GetNumberOfCells()
+
+window = vtkNPRRenderWindowFactory.CreateRenderWindow("egl")
+assert window is not None, "no EGL window"
+assert window.GetClassName() == "vtkNPREGLRenderWindow", window.GetClassName()
+window.SetSize(160, 120)
+mapper = vtkPolyDataMapper()
+mapper.SetInputConnection(reader.GetOutputPort())
+actor = vtkActor()
+actor.SetMapper(mapper)
+actor.GetProperty().SetColor(0.9, 0.3, 0.1)
+renderer = vtkRenderer()
+renderer.SetBackground(0, 0, 0)
+renderer.AddActor(actor)
+window.AddRenderer(renderer)
+renderer.ResetCamera()
+window.Render()
+print("renderer:", vtkNPRRenderWindowFactory.GetGLRenderer(window))
+assert vtkNPRRenderWindowFactory.GetGLRenderer(window) != ""
+
+grab = vtkWindowToImageFilter()
+grab.SetInput(window)
+grab.ReadFrontBufferOff()
+grab.Update()
+image = grab.GetOutput()
+scalars = image.GetPointData().GetScalars()
+n = image.GetNumberOfPoints()
+lit = [scalars.GetTuple(i) for i in range(n)]
+object_pixels = [p for p in lit if max(p[:3]) > 20]
+print("object pixels: %d of %d" % (len(object_pixels), n))
+assert 0.05 * n < len(object_pixels) < 0.9 * n, len(object_pixels)
+assert all(p[0] >= p[2] for p in object_pixels), "the object is not orange-red"
+assert max(p[0] for p in object_pixels) - min(p[0] for p in object_pixels) > 60, "no shading"
+
+# Unavailable backends are None with a warning, never a crash.
+from vtkmodules.vtkCommonCore import vtkObject  # noqa: E402
+vtkObject.GlobalWarningDisplayOff()
+assert vtkNPRRenderWindowFactory.CreateRenderWindow("osmesa") is None
+assert vtkNPRRenderWindowFactory.CreateRenderWindow("nonsense") is None
+print("1 passed, 0 failed")
