@@ -91,50 +91,45 @@ private:
   vtkNew<vtkCallbackCommand> Callback;
 };
 
+template <typename ReaderType>
+vtkSmartPointer<ReaderType> NewReader(const std::string& name)
+{
+  auto reader = vtkSmartPointer<ReaderType>::New();
+  reader->SetFileName(name.c_str());
+  return reader;
+}
+
 vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& extension, const std::string& name)
 {
   if (extension == ".stl")
   {
-    auto reader = vtkSmartPointer<vtkSTLReader>::New();
-    reader->SetFileName(name.c_str());
+    auto reader = NewReader<vtkSTLReader>(name);
     reader->MergingOff(); // keep the file's vertices as they are
     return reader;
   }
   if (extension == ".obj")
   {
-    auto reader = vtkSmartPointer<vtkOBJReader>::New();
-    reader->SetFileName(name.c_str());
-    return reader;
+    return NewReader<vtkOBJReader>(name);
   }
   if (extension == ".ply")
   {
-    auto reader = vtkSmartPointer<vtkPLYReader>::New();
-    reader->SetFileName(name.c_str());
-    return reader;
+    return NewReader<vtkPLYReader>(name);
   }
   if (extension == ".vtp")
   {
-    auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    reader->SetFileName(name.c_str());
-    return reader;
+    return NewReader<vtkXMLPolyDataReader>(name);
   }
   if (extension == ".vtk")
   {
-    auto reader = vtkSmartPointer<vtkDataSetReader>::New();
-    reader->SetFileName(name.c_str());
-    return reader;
+    return NewReader<vtkDataSetReader>(name);
   }
   if (extension == ".gltf" || extension == ".glb")
   {
-    auto reader = vtkSmartPointer<vtkGLTFReader>::New();
-    reader->SetFileName(name.c_str());
-    return reader;
+    return NewReader<vtkGLTFReader>(name);
   }
   if (extension == ".off")
   {
-    auto reader = vtkSmartPointer<vtkNPROFFReader>::New();
-    reader->SetFileName(name.c_str());
-    return reader;
+    return NewReader<vtkNPROFFReader>(name);
   }
   return nullptr;
 }

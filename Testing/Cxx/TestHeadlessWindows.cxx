@@ -109,6 +109,24 @@ void CheckContext(vtkRenderWindow* window, const char* backend)
   const std::string renderer = vtkNPRRenderWindowFactory::GetGLRenderer(window);
   std::cout << backend << " renderer: " << renderer << "\n";
   NPR_CHECK(!renderer.empty(), "empty GL_RENDERER");
+  if (auto* egl = vtkNPREGLRenderWindow::SafeDownCast(window))
+  {
+    const std::string device = egl->GetDeviceDescription();
+    std::cout << "EGL device: " << device << (egl->GetUsesHardwareDevice() ? " (hardware)" : "")
+              << "\n";
+    NPR_CHECK(!device.empty(), "no EGL device description");
+    const char* software = std::getenv("NPR_EGL_SOFTWARE");
+    if (software && std::string(software) == "1")
+    {
+      NPR_CHECK(!egl->GetUsesHardwareDevice() &&
+          (device.find("software") != std::string::npos ||
+            device.find("surfaceless") != std::string::npos),
+        "NPR_EGL_SOFTWARE=1 but the device is " << device);
+      NPR_CHECK(renderer.find("llvmpipe") != std::string::npos ||
+          renderer.find("softpipe") != std::string::npos,
+        "NPR_EGL_SOFTWARE=1 but the renderer is " << renderer);
+    }
+  }
 }
 
 void TestRender(const char* backend)
