@@ -6,6 +6,8 @@
 #include "vtkRenderWindow.h"
 #include "vtkSmartPointer.h"
 
+#include <X11/Xlib.h>
+
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -65,6 +67,15 @@ vtkRenderWindow* vtkNPRRenderWindowFactory::CreateRenderWindow(const char* backe
                                 "use NPR_BACKEND=egl)");
       return nullptr;
     }
+    // VTK's X window aborts the process when the display cannot be opened: try it first.
+    Display* connection = XOpenDisplay(display);
+    if (!connection)
+    {
+      vtkGenericWarningMacro(<< "no x render window: cannot open the X display '" << display
+                             << "'");
+      return nullptr;
+    }
+    XCloseDisplay(connection);
     window = vtkSmartPointer<vtkRenderWindow>::New(); // VTK's own X window
     window->SetOffScreenRendering(1);
   }

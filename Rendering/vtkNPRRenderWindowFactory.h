@@ -3,13 +3,14 @@
  * @brief   The one way programs and tests get a render window: EGL, OSMesa or X.
  *
  * CreateRenderWindow() returns a new render window of the requested backend, ready for
- * off-screen rendering, or nullptr with a clear error (vtkErrorMacro) when that backend cannot
- * render in this process. Backends:
+ * off-screen rendering, or nullptr and a warning that says why (vtkGenericWarningMacro) when that
+ * backend cannot render in this process. Backends:
  *
  * - "egl": vtkNPREGLRenderWindow, no X server needed. The default.
  * - "osmesa": vtkNPROSMesaRenderWindow; the program must link the CMake target NPR::OSMesa.
  *   In such a program OpenGL calls go to libOSMesa, so it is also the default there.
- * - "x": VTK's own X window (vtkXOpenGLRenderWindow), off-screen; needs DISPLAY (e.g. Xvfb).
+ * - "x": VTK's own X window (vtkXOpenGLRenderWindow), off-screen; needs an X display that opens
+ *   (DISPLAY, e.g. under Xvfb).
  *
  * With no backend named, the environment variable NPR_BACKEND (egl|osmesa|x) decides, then the
  * defaults above. The headless windows create their context here, so a failure is reported

@@ -20,7 +20,7 @@ build_dir=${NPR_BUILD_DIR:-$source_dir/build}
 # VTK 9.1 with its Python bindings, EGL with Mesa's software renderer, OSMesa, the toolchain, and
 # Xvfb for the tests of VTK's own X window.
 packages=(libvtk9-dev python3-vtk9 libegl-dev libegl-mesa0 libgl1-mesa-dri libopengl-dev
-  libosmesa6-dev libglm-dev cmake ninja-build g++ xvfb xauth)
+  libosmesa6-dev cmake ninja-build g++ xvfb xauth)
 missing=()
 for package in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then

@@ -12,7 +12,9 @@
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
 #include "vtkPNGWriter.h"
+#include "vtkCellData.h"
 #include "vtkPointData.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
@@ -95,6 +97,7 @@ struct Options
   double Azimuth = 0.0;
   double Elevation = 0.0;
   double Zoom = 1.0;
+  bool CameraMoved = false; // --azimuth, --elevation or --zoom given
   double Background[3] = { 1.0, 1.0, 1.0 };
   std::string CameraIn;
   std::string CameraOut;
@@ -120,7 +123,8 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
   --camera-in FILE         use this camera (JSON; its clipping range as given)
   --camera-out FILE        write the camera used (JSON)
   --frames N               time N frames after a warm-up; print one JSON line
-  --backend NAME           egl, osmesa or x (default: NPR_BACKEND, else egl)
+  --backend NAME           egl, osmesa or x (default: NPR_BACKEND, else egl;
+                           osmesa in npr-render-osmesa)
   -h, --help               this text
 )";
 }
@@ -227,14 +231,17 @@ Options ParseOptions(int argc, char* argv[])
     else if (arg == "--azimuth")
     {
       options.Azimuth = ParseNumber(arg, value());
+      options.CameraMoved = true;
     }
     else if (arg == "--elevation")
     {
       options.Elevation = ParseNumber(arg, value());
+      options.CameraMoved = true;
     }
     else if (arg == "--zoom")
     {
       options.Zoom = ParseNumber(arg, value());
+      options.CameraMoved = true;
       if (options.Zoom <= 0.0)
       {
         throw UsageError("--zoom expects a positive factor");
@@ -277,6 +284,11 @@ Options ParseOptions(int argc, char* argv[])
   if (options.Models.empty())
   {
     throw UsageError("no model file given (see --help)");
+  }
+  if (!options.CameraIn.empty() && options.CameraMoved)
+  {
+    throw UsageError("--azimuth, --elevation and --zoom move the reset camera; they cannot be "
+                     "combined with --camera-in");
   }
   if (options.Output.empty() && options.Frames == 0 && options.CameraOut.empty())
   {
@@ -351,7 +363,14 @@ int Run(const Options& options, nprQuietOutputWindow* messages)
       normals->Update();
       mapper->SetInputData(normals->GetOutput());
     }
-    mapper->ScalarVisibilityOff();
+    // Colours stored in the file (PLY, OFF, VTK) are shown as they are; other arrays are not.
+    vtkDataArray* colors = model->GetPointData()->GetScalars()
+      ? model->GetPointData()->GetScalars()
+      : model->GetCellData()->GetScalars();
+    const bool fileColors = vtkUnsignedCharArray::SafeDownCast(colors) &&
+      (colors->GetNumberOfComponents() == 3 || colors->GetNumberOfComponents() == 4);
+    mapper->SetScalarVisibility(fileColors);
+    mapper->SetColorModeToDirectScalars();
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);
     const double* color = Palette[i % (sizeof(Palette) / sizeof(Palette[0]))];
@@ -416,10 +435,11 @@ int Run(const Options& options, nprQuietOutputWindow* messages)
     std::sort(sorted.begin(), sorted.end());
     const size_t n = sorted.size();
     const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    auto milliseconds = [](double value) { return nprFormatNumber(std::round(value * 1e3) / 1e3); };
     std::cout << "{\"style\":" << JsonString(options.Style) << ",\"frames\":" << n
-              << ",\"median_ms\":" << nprFormatNumber(median)
-              << ",\"min_ms\":" << nprFormatNumber(sorted.front())
-              << ",\"max_ms\":" << nprFormatNumber(sorted.back()) << ",\"triangles\":" << triangles
+              << ",\"median_ms\":" << milliseconds(median)
+              << ",\"min_ms\":" << milliseconds(sorted.front())
+              << ",\"max_ms\":" << milliseconds(sorted.back()) << ",\"triangles\":" << triangles
               << ",\"pixels\":" << static_cast<long long>(width) * height
               << ",\"width\":" << width << ",\"height\":" << height
               << ",\"backend\":" << JsonString(vtkNPRRenderWindowFactory::GetBackendName(window))

@@ -133,7 +133,7 @@ nprCameraState nprReadCameraFile(const std::string& fileName)
   text << stream.rdbuf();
   Json::Value root;
   Json::CharReaderBuilder builder;
-  builder["rejectDupKeys"] = true;
+  Json::CharReaderBuilder::strictMode(&builder.settings_); // no comments, no trailing commas
   std::string errors;
   const std::string content = text.str();
   std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
