@@ -10,9 +10,42 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <string>
 
 vtkStandardNewMacro(vtkNPRRenderWindowFactory);
+
+namespace
+{
+// Opens a connection to the X display and keeps it for the life of the process: an X server such
+// as Xvfb resets when its last client disconnects, and a window opened during that reset fails.
+bool OpenXDisplay(const std::string& name)
+{
+  struct Connections
+  {
+    std::map<std::string, Display*> Open;
+    ~Connections()
+    {
+      for (auto& connection : this->Open)
+      {
+        XCloseDisplay(connection.second);
+      }
+    }
+  };
+  static Connections connections;
+  auto found = connections.Open.find(name);
+  if (found != connections.Open.end())
+  {
+    return true;
+  }
+  Display* connection = XOpenDisplay(name.c_str());
+  if (connection)
+  {
+    connections.Open[name] = connection;
+  }
+  return connection != nullptr;
+}
+}
 
 void vtkNPRRenderWindowFactory::PrintSelf(ostream& os, vtkIndent indent)
 {
@@ -68,14 +101,12 @@ vtkRenderWindow* vtkNPRRenderWindowFactory::CreateRenderWindow(const char* backe
       return nullptr;
     }
     // VTK's X window aborts the process when the display cannot be opened: try it first.
-    Display* connection = XOpenDisplay(display);
-    if (!connection)
+    if (!OpenXDisplay(display))
     {
       vtkGenericWarningMacro(<< "no x render window: cannot open the X display '" << display
                              << "'");
       return nullptr;
     }
-    XCloseDisplay(connection);
     window = vtkSmartPointer<vtkRenderWindow>::New(); // VTK's own X window
     window->SetOffScreenRendering(1);
   }
