@@ -382,24 +382,15 @@ int Run(const Options& options, nprQuietOutputWindow* messages)
 
   int width = options.Width, height = options.Height;
   vtkCamera* camera = renderer->GetActiveCamera();
+  nprCameraState given;
   if (!options.CameraIn.empty())
   {
-    const nprCameraState state = nprReadCameraFile(options.CameraIn);
-    state.ApplyTo(camera);
-    if (!options.SizeGiven && state.Size[0] > 0)
+    given = nprReadCameraFile(options.CameraIn); // before the window: a bad file fails fast
+    if (!options.SizeGiven && given.Size[0] > 0)
     {
-      width = state.Size[0];
-      height = state.Size[1];
+      width = given.Size[0];
+      height = given.Size[1];
     }
-  }
-  else
-  {
-    renderer->ResetCamera();
-    camera->Azimuth(options.Azimuth);
-    camera->Elevation(options.Elevation);
-    camera->OrthogonalizeViewUp();
-    camera->Zoom(options.Zoom);
-    renderer->ResetCameraClippingRange();
   }
 
   vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
@@ -410,9 +401,18 @@ int Run(const Options& options, nprQuietOutputWindow* messages)
   }
   window->SetSize(width, height);
   window->AddRenderer(renderer);
-  if (options.CameraIn.empty())
+  if (!options.CameraIn.empty())
   {
-    // Aspect ratio is known now; the reset above used it only for the bounds.
+    given.ApplyTo(camera); // clipping range as given
+  }
+  else
+  {
+    // After the window exists: the reset fits the scene to its aspect ratio.
+    renderer->ResetCamera();
+    camera->Azimuth(options.Azimuth);
+    camera->Elevation(options.Elevation);
+    camera->OrthogonalizeViewUp();
+    camera->Zoom(options.Zoom);
     renderer->ResetCameraClippingRange();
   }
   window->Render();
