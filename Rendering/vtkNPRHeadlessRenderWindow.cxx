@@ -83,6 +83,7 @@ void vtkNPRHeadlessRenderWindow::Render()
     }
     return;
   }
+  // VTK 9.1's generic window saves the GL state before it makes its context current.
   this->MakeContextCurrent();
   this->Superclass::Render();
 }

@@ -52,11 +52,6 @@ vtkSmartPointer<vtkImageData> nprCaptureImage(vtkRenderWindow* window)
 
 namespace
 {
-int Components(vtkImageData* image)
-{
-  return image->GetNumberOfScalarComponents();
-}
-
 const unsigned char* Pixel(vtkImageData* image, int x, int y)
 {
   return static_cast<const unsigned char*>(image->GetScalarPointer(x, y, 0));
@@ -161,7 +156,8 @@ nprImageDifference nprCompareImages(
   image->GetDimensions(a);
   baseline->GetDimensions(b);
   result.SizeMatches =
-    a[0] == b[0] && a[1] == b[1] && Components(image) >= 3 && Components(baseline) >= 3;
+    a[0] == b[0] && a[1] == b[1] && image->GetNumberOfScalarComponents() >= 3 &&
+    baseline->GetNumberOfScalarComponents() >= 3;
   if (!result.SizeMatches)
   {
     return result;
