@@ -7,7 +7,12 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkLogger.h"
+#include "vtkImageData.h"
+#include "vtkImageExtractComponents.h"
+#include "vtkNPREdgePass.h"
+#include "vtkNPRGBufferPass.h"
 #include "vtkNPRModelReader.h"
+#include "vtkNPRPass.h"
 #include "vtkNPRRenderWindowFactory.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -38,7 +43,7 @@
 
 namespace
 {
-const char* const Styles[] = { "shaded" };
+const char* const Styles[] = { "shaded", "edges" };
 
 struct UsageError : std::runtime_error
 {
@@ -103,6 +108,20 @@ struct Options
   std::string CameraOut;
   int Frames = 0;
   std::string Backend;
+
+  // --style edges
+  bool Silhouettes = true;
+  bool Creases = true;
+  bool Contours = true;
+  double SilhouetteThreshold = 0.005;
+  double CreaseAngle = 30.0;
+  int ContourSide = vtkNPREdgePass::INSIDE;
+  double LineWidth = 1.5;
+  double SilhouetteColor[3] = { 0.0, 0.0, 0.0 };
+  double CreaseColor[3] = { 0.0, 0.0, 0.0 };
+  double ContourColor[3] = { 0.0, 0.0, 0.0 };
+  bool AntiAliasing = true;
+  std::string EdgeMask;
 };
 
 void PrintHelp()
@@ -115,7 +134,9 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
 
   -o, --output FILE        PNG to write
   --size WxH               image size in pixels (default 1024x768)
-  --style NAME             shaded (default)
+  --style NAME             shaded (default) or edges
+  --backend NAME           egl, osmesa or x (default: NPR_BACKEND, else egl;
+                           osmesa in npr-render-osmesa)
   --azimuth DEG            rotate the camera about the view up after the reset
   --elevation DEG          rotate the camera up or down after the reset
   --zoom FACTOR            zoom (> 1 closer) after the reset
@@ -123,9 +144,20 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
   --camera-in FILE         use this camera (JSON; its clipping range as given)
   --camera-out FILE        write the camera used (JSON)
   --frames N               time N frames after a warm-up; print one JSON line
-  --backend NAME           egl, osmesa or x (default: NPR_BACKEND, else egl;
-                           osmesa in npr-render-osmesa)
   -h, --help               this text
+
+Lines (--style edges):
+  --lines LIST             line types drawn, comma separated: silhouettes, creases,
+                           contours, or none (default silhouettes,creases,contours)
+  --silhouette-threshold X relative depth step that makes a silhouette (default 0.005)
+  --crease-angle DEG       normal angle that makes a crease, 1..179 (default 30)
+  --contour-side SIDE      inside, outside or both (default inside)
+  --line-width PX          line width in pixels, 0.5..16 (default 1.5)
+  --line-color COLOR       colour of every line type (default black)
+  --silhouette-color COLOR, --crease-color COLOR, --contour-color COLOR
+  --no-antialias           lines without anti-aliasing
+  --edge-mask FILE         also write the line coverage alone: white on black, 8-bit
+                           grey PNG of the render's size
 )";
 }
 
@@ -136,6 +168,17 @@ double ParseNumber(const std::string& flag, const std::string& text)
   if (text.empty() || *end || !std::isfinite(value))
   {
     throw UsageError(flag + " expects a number, got '" + text + "'");
+  }
+  return value;
+}
+
+double ParseRange(const std::string& flag, const std::string& text, double low, double high)
+{
+  const double value = ParseNumber(flag, text);
+  if (value < low || value > high)
+  {
+    throw UsageError(flag + " expects a number in " + nprFormatNumber(low) + ".." +
+      nprFormatNumber(high) + ", got '" + text + "'");
   }
   return value;
 }
@@ -272,6 +315,82 @@ Options ParseOptions(int argc, char* argv[])
           vtkNPRRenderWindowFactory::GetKnownBackends() + ")");
       }
     }
+    else if (arg == "--lines")
+    {
+      const std::string text = value();
+      options.Silhouettes = options.Creases = options.Contours = false;
+      std::stringstream parts(text);
+      std::string part;
+      while (std::getline(parts, part, ','))
+      {
+        if (part == "silhouettes" || part == "silhouette")
+        {
+          options.Silhouettes = true;
+        }
+        else if (part == "creases" || part == "crease")
+        {
+          options.Creases = true;
+        }
+        else if (part == "contours" || part == "contour")
+        {
+          options.Contours = true;
+        }
+        else if (part != "none")
+        {
+          throw UsageError("--lines expects silhouettes, creases, contours or none, got '" +
+            part + "'");
+        }
+      }
+    }
+    else if (arg == "--silhouette-threshold")
+    {
+      options.SilhouetteThreshold = ParseRange(arg, value(), 1e-5, 1.0);
+    }
+    else if (arg == "--crease-angle")
+    {
+      options.CreaseAngle = ParseRange(arg, value(), 1.0, 179.0);
+    }
+    else if (arg == "--contour-side")
+    {
+      const std::string side = value();
+      const char* const sides[] = { "inside", "outside", "both" };
+      const auto found = std::find(std::begin(sides), std::end(sides), side);
+      if (found == std::end(sides))
+      {
+        throw UsageError("--contour-side expects inside, outside or both, got '" + side + "'");
+      }
+      options.ContourSide = static_cast<int>(found - std::begin(sides));
+    }
+    else if (arg == "--line-width")
+    {
+      options.LineWidth = ParseRange(arg, value(), 0.5, 16.0);
+    }
+    else if (arg == "--line-color")
+    {
+      ParseColor(arg, value(), options.SilhouetteColor);
+      std::copy_n(options.SilhouetteColor, 3, options.CreaseColor);
+      std::copy_n(options.SilhouetteColor, 3, options.ContourColor);
+    }
+    else if (arg == "--silhouette-color")
+    {
+      ParseColor(arg, value(), options.SilhouetteColor);
+    }
+    else if (arg == "--crease-color")
+    {
+      ParseColor(arg, value(), options.CreaseColor);
+    }
+    else if (arg == "--contour-color")
+    {
+      ParseColor(arg, value(), options.ContourColor);
+    }
+    else if (arg == "--no-antialias")
+    {
+      options.AntiAliasing = false;
+    }
+    else if (arg == "--edge-mask")
+    {
+      options.EdgeMask = value();
+    }
     else if (arg.size() > 1 && arg[0] == '-')
     {
       throw UsageError("unknown option '" + arg + "' (see --help)");
@@ -290,9 +409,14 @@ Options ParseOptions(int argc, char* argv[])
     throw UsageError("--azimuth, --elevation and --zoom move the reset camera; they cannot be "
                      "combined with --camera-in");
   }
-  if (options.Output.empty() && options.Frames == 0 && options.CameraOut.empty())
+  if (options.Output.empty() && options.Frames == 0 && options.CameraOut.empty() &&
+    options.EdgeMask.empty())
   {
-    throw UsageError("nothing to do: give -o FILE, --frames N or --camera-out FILE");
+    throw UsageError("nothing to do: give -o FILE, --frames N, --edge-mask FILE or --camera-out FILE");
+  }
+  if (!options.EdgeMask.empty() && options.Style != "edges")
+  {
+    throw UsageError("--edge-mask needs --style edges");
   }
   return options;
 }
@@ -326,10 +450,56 @@ std::string JsonString(const std::string& text)
   return quoted + "\"";
 }
 
+// Writes the window's colour buffer as a PNG: RGB, or its first channel as 8-bit grey.
+void WriteWindowPNG(vtkRenderWindow* window, const std::string& path, bool grey)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkNew<vtkImageExtractComponents> first;
+  first->SetInputConnection(grab->GetOutputPort());
+  first->SetComponents(0);
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputConnection(grey ? first->GetOutputPort() : grab->GetOutputPort());
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    throw std::runtime_error(path + ": cannot write the PNG");
+  }
+}
+
+vtkSmartPointer<vtkNPRPass> MakePass(const Options& options)
+{
+  auto pass = vtkSmartPointer<vtkNPRPass>::New();
+  pass->SetStyle(options.Style == "edges" ? vtkNPRPass::EDGES : vtkNPRPass::SHADED);
+  vtkNPREdgePass* edges = pass->GetEdgePass();
+  edges->SetSilhouettes(options.Silhouettes);
+  edges->SetCreases(options.Creases);
+  edges->SetContours(options.Contours);
+  edges->SetSilhouetteThreshold(options.SilhouetteThreshold);
+  edges->SetCreaseAngle(options.CreaseAngle);
+  edges->SetContourSide(options.ContourSide);
+  edges->SetLineWidth(options.LineWidth);
+  edges->SetSilhouetteColor(options.SilhouetteColor);
+  edges->SetCreaseColor(options.CreaseColor);
+  edges->SetContourColor(options.ContourColor);
+  edges->SetAntiAliasing(options.AntiAliasing);
+  return pass;
+}
+
 int Run(const Options& options, nprQuietOutputWindow* messages)
 {
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(options.Background[0], options.Background[1], options.Background[2]);
+  // "shaded" is VTK's own chain, untouched: the baseline every style is measured against.
+  vtkSmartPointer<vtkNPRPass> pass;
+  if (options.Style != "shaded")
+  {
+    pass = MakePass(options);
+    renderer->SetPass(pass);
+  }
   vtkIdType triangles = 0;
   for (size_t i = 0; i < options.Models.size(); ++i)
   {
@@ -449,18 +619,14 @@ int Run(const Options& options, nprQuietOutputWindow* messages)
 
   if (!options.Output.empty())
   {
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
-    grab->ReadFrontBufferOff();
-    grab->Update();
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(options.Output.c_str());
-    writer->SetInputConnection(grab->GetOutputPort());
-    writer->Write();
-    if (writer->GetErrorCode() != 0)
-    {
-      throw std::runtime_error(options.Output + ": cannot write the PNG");
-    }
+    WriteWindowPNG(window, options.Output, false);
+  }
+  if (!options.EdgeMask.empty())
+  {
+    pass->GetEdgePass()->CoverageOnlyOn();
+    window->Render(); // the G-buffer and line image are reused: only the composite runs
+    WriteWindowPNG(window, options.EdgeMask, true);
+    pass->GetEdgePass()->CoverageOnlyOff();
   }
   if (!options.CameraOut.empty())
   {

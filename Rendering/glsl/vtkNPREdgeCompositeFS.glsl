@@ -1,0 +1,80 @@
+//VTK::System::Dec
+// vtkNPREdgePass, step 2: widens and anti-aliases the line image, composites it over the shaded
+// G-buffer colour and writes the depth sprite (gl_FragDepth).
+//
+// The line image is filtered with a separable Gaussian (NPR_TAPS bilinear taps). Across a straight
+// one-pixel line the filtered value falls off as P(d) = g(d); the pixel's coverage of a line of
+// width w is then 0.5 + (P - P(w/2)) / |P'(w/2)|, which is clamp(w/2 + 0.5 - d, 0, 1) near the
+// line's border: a line of the requested width with one pixel of anti-aliasing, and no staircase
+// since the filter averages the staircase of the one-pixel line.
+//NPR::Defines
+in vec2 texCoord;
+uniform sampler2D lineTexture;  // linear filtering
+uniform sampler2D colorTexture;
+uniform sampler2D depthTexture;
+uniform vec3 taps[NPR_TAPS];    // offset in texels (x, y), weight
+uniform vec2 texelSize;
+uniform ivec2 viewportOrigin; // of the renderer in the window
+uniform float coverageLevel;    // P(w/2)
+uniform float coverageSlope;    // |P'(w/2)|
+uniform vec3 silhouetteColor;
+uniform vec3 creaseColor;
+uniform vec3 contourColor;
+//VTK::Output::Dec
+
+void main()
+{
+  vec3 coverage = vec3(0.0);
+#if NPR_LINES
+  vec3 lines = vec3(0.0);
+  for (int i = 0; i < NPR_TAPS; ++i)
+  {
+    lines += taps[i].z * texture(lineTexture, texCoord + taps[i].xy * texelSize).rgb;
+  }
+#if NPR_ANTIALIAS
+  coverage = clamp(0.5 + (lines - coverageLevel) / coverageSlope, 0.0, 1.0);
+#else
+  coverage = step(vec3(coverageLevel), lines);
+#endif
+#endif
+  ivec2 p = ivec2(gl_FragCoord.xy) - viewportOrigin;
+  float depth = texelFetch(depthTexture, p, 0).r;
+#if NPR_COVERAGE_ONLY
+  gl_FragData[0] = vec4(vec3(max(coverage.r, max(coverage.g, coverage.b))), 1.0);
+  gl_FragDepth = depth;
+  return;
+#endif
+  if (depth < 1.0)
+  {
+    // On a surface: creases, then contours, then silhouettes on top.
+    vec3 color = texelFetch(colorTexture, p, 0).rgb;
+    color = mix(color, creaseColor, coverage.g);
+    color = mix(color, contourColor, coverage.b);
+    color = mix(color, silhouetteColor, coverage.r);
+    gl_FragData[0] = vec4(color, 1.0);
+    gl_FragDepth = depth;
+  }
+  else
+  {
+    // Background: only the parts of wide or anti-aliased lines that reach past a surface, blended
+    // over the window's background at the depth of the nearest surface they belong to.
+    if (max(coverage.r, max(coverage.g, coverage.b)) <= 0.0)
+    {
+      discard;
+    }
+    vec4 color = vec4(creaseColor, 1.0) * coverage.g;
+    color = mix(color, vec4(contourColor, 1.0), coverage.b);
+    color = mix(color, vec4(silhouetteColor, 1.0), coverage.r);
+    ivec2 size = textureSize(depthTexture, 0);
+    float nearest = 1.0;
+    for (int r = 1; r <= NPR_RADIUS; ++r)
+    {
+      nearest = min(nearest, texelFetch(depthTexture, clamp(p + ivec2(r, 0), ivec2(0), size - 1), 0).r);
+      nearest = min(nearest, texelFetch(depthTexture, clamp(p - ivec2(r, 0), ivec2(0), size - 1), 0).r);
+      nearest = min(nearest, texelFetch(depthTexture, clamp(p + ivec2(0, r), ivec2(0), size - 1), 0).r);
+      nearest = min(nearest, texelFetch(depthTexture, clamp(p - ivec2(0, r), ivec2(0), size - 1), 0).r);
+    }
+    gl_FragData[0] = vec4(color.rgb / max(color.a, 1e-6), color.a);
+    gl_FragDepth = nearest;
+  }
+}

@@ -1,0 +1,374 @@
+#include "vtkNPREdgePass.h"
+
+#include "vtkMath.h"
+#include "vtkNPRGBufferPass.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include "vtkNPREdgeCompositeFS.h"
+#include "vtkNPREdgeDetectFS.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+// A full-screen quad program built from one of the pass's fragment shaders and a set of
+// compile-time defines (llvmpipe runs both sides of uniform branches, so variants are compiled).
+struct QuadProgram
+{
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  std::string Defines;
+
+  vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window, const char* source, const std::string& defines)
+  {
+    if (this->Quad && defines != this->Defines)
+    {
+      this->Quad.reset();
+    }
+    if (!this->Quad)
+    {
+      std::string fragment = source;
+      vtkShaderProgram::Substitute(fragment, "//NPR::Defines", defines);
+      this->Quad.reset(new vtkOpenGLQuadHelper(window,
+        vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fragment.c_str(), ""));
+      this->Defines = defines;
+    }
+    else
+    {
+      window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+    }
+    vtkShaderProgram* program = this->Quad->Program;
+    return program && program->GetCompiled() ? program : nullptr;
+  }
+
+  void Release(vtkWindow* window)
+  {
+    if (this->Quad)
+    {
+      this->Quad->ReleaseGraphicsResources(window);
+      this->Quad.reset();
+    }
+  }
+};
+
+// Gaussian filter of the line image as bilinear taps, and the coverage mapping of its result.
+struct LineFilter
+{
+  std::vector<float> Taps; // x, y, weight
+  int Radius = 1;          // texels
+  float CoverageLevel = 0.5f;
+  float CoverageSlope = 1.0f;
+
+  void Compute(double width)
+  {
+    const double sigma = std::max(0.6, 0.3 * width);
+    this->Radius = std::max(1, static_cast<int>(std::floor(0.5 * width + 0.5)));
+    std::vector<double> g(this->Radius + 2, 0.0);
+    double sum = 0.0;
+    for (int j = 0; j <= this->Radius; ++j)
+    {
+      g[j] = std::exp(-j * j / (2.0 * sigma * sigma));
+      sum += j == 0 ? g[j] : 2.0 * g[j];
+    }
+    for (double& value : g)
+    {
+      value /= sum;
+    }
+    // One dimension: offsets and weights of bilinear taps reproducing the discrete kernel.
+    std::vector<std::pair<double, double>> taps1D;
+    if (this->Radius == 1)
+    {
+      // [a b a] = two taps at +-2a of weight 1/2.
+      taps1D = { { -2.0 * g[1], 0.5 }, { 2.0 * g[1], 0.5 } };
+    }
+    else
+    {
+      taps1D.push_back({ 0.0, g[0] });
+      for (int i = 1; i <= this->Radius; i += 2)
+      {
+        const double weight = g[i] + g[i + 1];
+        const double offset = i + g[i + 1] / weight;
+        taps1D.push_back({ offset, weight });
+        taps1D.push_back({ -offset, weight });
+      }
+    }
+    this->Taps.clear();
+    for (const auto& y : taps1D)
+    {
+      for (const auto& x : taps1D)
+      {
+        this->Taps.insert(this->Taps.end(), { static_cast<float>(x.first),
+                                              static_cast<float>(y.first),
+                                              static_cast<float>(x.second * y.second) });
+      }
+    }
+    // Across a one-pixel line the filtered value is P(d) = g(d): coverage is P's level set at d =
+    // width / 2, with the slope there giving one pixel of anti-aliasing.
+    const double half = 0.5 * width;
+    const double level = std::exp(-half * half / (2.0 * sigma * sigma)) / sum;
+    this->CoverageLevel = static_cast<float>(level);
+    // No coverage where there is no line at all: 0.5 - level / slope < 0.
+    this->CoverageSlope = static_cast<float>(std::min(half / (sigma * sigma), 1.95) * level);
+  }
+};
+}
+
+struct vtkNPREdgePass::Internals
+{
+  QuadProgram Detect;
+  QuadProgram Composite;
+  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
+  vtkTextureObject* LineTexture = nullptr;
+  unsigned long LineImageVersion = 0;
+  vtkMTimeType LineImageTime = 0;
+  bool LineImageValid = false;
+  LineFilter Filter;
+};
+
+vtkStandardNewMacro(vtkNPREdgePass);
+vtkCxxSetObjectMacro(vtkNPREdgePass, GBufferPass, vtkNPRGBufferPass);
+
+vtkNPREdgePass::vtkNPREdgePass()
+  : Internal(new Internals)
+{
+}
+
+vtkNPREdgePass::~vtkNPREdgePass()
+{
+  this->SetGBufferPass(nullptr);
+  if (this->Internal->LineTexture)
+  {
+    this->Internal->LineTexture->Delete();
+  }
+  if (this->Internal->Framebuffer)
+  {
+    this->Internal->Framebuffer->Delete();
+  }
+}
+
+double vtkNPREdgePass::GetEffectiveLineWidth(vtkRenderer* renderer) const
+{
+  double scale = 1.0;
+  if (renderer && renderer->GetRenderWindow())
+  {
+    vtkWindow* window = renderer->GetRenderWindow();
+    scale = std::max(1, window->GetDPI()) / 72.0 *
+      std::max(1, std::max(window->GetTileScale()[0], window->GetTileScale()[1]));
+  }
+  return std::min(std::max(this->LineWidth * scale, 0.5), 32.0);
+}
+
+void vtkNPREdgePass::Render(const vtkRenderState* state)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  vtkNPRGBufferPass* gbuffer = this->GBufferPass;
+  if (!gbuffer || gbuffer->GetLastRenderWasSelection() || !gbuffer->GetHasContent())
+  {
+    return; // a picking render, or nothing was drawn
+  }
+  vtkRenderer* renderer = state->GetRenderer();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  vtkOpenGLState* glState = window->GetState();
+  Internals& internal = *this->Internal;
+  vtkTextureObject* geometry = gbuffer->GetGeometryTexture();
+  const int width = geometry->GetWidth();
+  const int height = geometry->GetHeight();
+  const bool lines = this->GetDrawsLines();
+
+  // ---- Step 1: the one-pixel line image, recomputed only when its inputs changed ----
+  if (lines &&
+    (!internal.LineImageValid || internal.LineImageVersion != gbuffer->GetContentVersion() ||
+      internal.LineImageTime < this->GetMTime()))
+  {
+    if (!internal.LineTexture)
+    {
+      internal.LineTexture = vtkTextureObject::New();
+      internal.LineTexture->SetContext(window);
+      internal.LineTexture->SetMinificationFilter(vtkTextureObject::Linear);
+      internal.LineTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+      internal.LineTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+      internal.LineTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+      internal.LineTexture->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+      internal.Framebuffer = vtkOpenGLFramebufferObject::New();
+      internal.Framebuffer->SetContext(window);
+    }
+    internal.LineTexture->Resize(width, height);
+
+    std::ostringstream defines;
+    defines << "#define NPR_PERSPECTIVE " << (gbuffer->GetPerspective() ? 1 : 0)
+            << "\n#define NPR_SILHOUETTES " << (this->Silhouettes ? 1 : 0)
+            << "\n#define NPR_CREASES " << (this->Creases && gbuffer->GetWritesNormals() ? 1 : 0)
+            << "\n#define NPR_CONTOURS " << (this->Contours ? 1 : 0)
+            << "\n#define NPR_HAVE_OBJECT_IDS " << (gbuffer->GetWritesObjectIds() ? 1 : 0)
+            << "\n#define NPR_CONTOUR_SIDE " << this->ContourSide << "\n";
+    vtkShaderProgram* program = internal.Detect.Ready(window, vtkNPREdgeDetectFS, defines.str());
+    if (!program)
+    {
+      vtkErrorMacro("the line detection shader did not compile");
+      return;
+    }
+    geometry->Activate();
+    program->SetUniformi("geometryTexture", geometry->GetTextureUnit());
+    program->SetUniformf("silhouetteThreshold", static_cast<float>(this->SilhouetteThreshold));
+    const double radians = vtkMath::RadiansFromDegrees(this->CreaseAngle);
+    program->SetUniformf("creaseAngle", static_cast<float>(radians));
+    program->SetUniformf("creaseRamp", static_cast<float>(std::min(0.0175, 0.25 * radians)));
+
+    vtkOpenGLState::ScopedglViewport viewportSaver(glState);
+    vtkOpenGLState::ScopedglEnableDisable depthTestSaver(glState, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(glState, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
+    glState->PushFramebufferBindings();
+    internal.Framebuffer->Bind();
+    internal.Framebuffer->AddColorAttachment(0, internal.LineTexture);
+    internal.Framebuffer->ActivateDrawBuffers(1);
+    internal.Framebuffer->StartNonOrtho(width, height);
+    glState->vtkglViewport(0, 0, width, height);
+    glState->vtkglDisable(GL_DEPTH_TEST);
+    glState->vtkglDisable(GL_BLEND);
+    // Only where the props can be: the rest of the line image stays clear.
+    const int* rect = gbuffer->GetContentRectangle();
+    vtkOpenGLState::ScopedglClearColor clearColorSaver(glState);
+    vtkOpenGLState::ScopedglScissor scissorSaver(glState);
+    glState->vtkglDisable(GL_SCISSOR_TEST);
+    glState->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    glState->vtkglClear(GL_COLOR_BUFFER_BIT);
+    glState->vtkglEnable(GL_SCISSOR_TEST);
+    glState->vtkglScissor(rect[0], rect[1], rect[2] - rect[0] + 1, rect[3] - rect[1] + 1);
+    internal.Detect.Quad->Render();
+    internal.Framebuffer->RemoveColorAttachments(1);
+    glState->PopFramebufferBindings();
+    geometry->Deactivate();
+
+    internal.LineImageValid = true;
+    internal.LineImageVersion = gbuffer->GetContentVersion();
+    internal.LineImageTime = this->GetMTime();
+    ++this->NumberOfLineImageUpdates;
+  }
+
+  // ---- Step 2: composite colour, lines and depth into the current framebuffer ----
+  const double lineWidth = this->GetEffectiveLineWidth(renderer);
+  internal.Filter.Compute(lineWidth);
+  const int taps = static_cast<int>(internal.Filter.Taps.size() / 3);
+  std::ostringstream defines;
+  defines << "#define NPR_LINES " << (lines ? 1 : 0) << "\n#define NPR_TAPS " << taps
+          << "\n#define NPR_RADIUS " << internal.Filter.Radius + 1 << "\n#define NPR_ANTIALIAS "
+          << (this->AntiAliasing ? 1 : 0) << "\n#define NPR_COVERAGE_ONLY " << (this->CoverageOnly ? 1 : 0)
+          << "\n";
+  vtkShaderProgram* program =
+    internal.Composite.Ready(window, vtkNPREdgeCompositeFS, defines.str());
+  if (!program)
+  {
+    vtkErrorMacro("the line composite shader did not compile");
+    return;
+  }
+  vtkTextureObject* color = gbuffer->GetColorTexture();
+  vtkTextureObject* depth = gbuffer->GetDepthTexture();
+  color->Activate();
+  depth->Activate();
+  program->SetUniformi("colorTexture", color->GetTextureUnit());
+  program->SetUniformi("depthTexture", depth->GetTextureUnit());
+  if (lines)
+  {
+    internal.LineTexture->Activate();
+    program->SetUniformi("lineTexture", internal.LineTexture->GetTextureUnit());
+    program->SetUniform3fv("taps", taps, reinterpret_cast<const float(*)[3]>(internal.Filter.Taps.data()));
+    const float texelSize[2] = { 1.0f / width, 1.0f / height };
+    program->SetUniform2f("texelSize", texelSize);
+    program->SetUniformf("coverageLevel", internal.Filter.CoverageLevel);
+    program->SetUniformf("coverageSlope", internal.Filter.CoverageSlope);
+    program->SetUniform3f("silhouetteColor", this->SilhouetteColor);
+    program->SetUniform3f("creaseColor", this->CreaseColor);
+    program->SetUniform3f("contourColor", this->ContourColor);
+  }
+  int viewportWidth, viewportHeight, origin[2];
+  renderer->GetTiledSizeAndOrigin(&viewportWidth, &viewportHeight, origin, origin + 1);
+  if (state->GetFrameBuffer())
+  {
+    origin[0] = origin[1] = 0;
+  }
+  program->SetUniform2i("viewportOrigin", origin);
+
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(glState, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(glState, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglScissor scissorSaver(glState);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(glState);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(glState);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(glState);
+  // Outside the props' projected bounds there is only background: nothing to write there.
+  const int* rect = gbuffer->GetContentRectangle();
+  glState->vtkglEnable(GL_SCISSOR_TEST);
+  glState->vtkglScissor(origin[0] + rect[0], origin[1] + rect[1], rect[2] - rect[0] + 1,
+    rect[3] - rect[1] + 1);
+  glState->vtkglEnable(GL_DEPTH_TEST);
+  glState->vtkglDepthFunc(GL_LEQUAL);
+  glState->vtkglDepthMask(GL_TRUE);
+  glState->vtkglEnable(GL_BLEND);
+  glState->vtkglBlendFuncSeparate(
+    GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  internal.Composite.Quad->Render();
+
+  color->Deactivate();
+  depth->Deactivate();
+  if (lines)
+  {
+    internal.LineTexture->Deactivate();
+  }
+  this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+  vtkOpenGLCheckErrorMacro("failed after vtkNPREdgePass::Render");
+}
+
+void vtkNPREdgePass::ReleaseGraphicsResources(vtkWindow* window)
+{
+  Internals& internal = *this->Internal;
+  internal.Detect.Release(window);
+  internal.Composite.Release(window);
+  if (internal.LineTexture)
+  {
+    internal.LineTexture->ReleaseGraphicsResources(window);
+    internal.LineTexture->Delete();
+    internal.LineTexture = nullptr;
+  }
+  if (internal.Framebuffer)
+  {
+    internal.Framebuffer->ReleaseGraphicsResources(window);
+    internal.Framebuffer->Delete();
+    internal.Framebuffer = nullptr;
+  }
+  internal.LineImageValid = false;
+}
+
+void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "GBufferPass: " << this->GBufferPass << "\n";
+  os << indent << "Silhouettes: " << this->Silhouettes << " threshold " << this->SilhouetteThreshold
+     << " color " << this->SilhouetteColor[0] << " " << this->SilhouetteColor[1] << " "
+     << this->SilhouetteColor[2] << "\n";
+  os << indent << "Creases: " << this->Creases << " angle " << this->CreaseAngle << " color "
+     << this->CreaseColor[0] << " " << this->CreaseColor[1] << " " << this->CreaseColor[2] << "\n";
+  os << indent << "Contours: " << this->Contours << " side " << this->ContourSide << " color "
+     << this->ContourColor[0] << " " << this->ContourColor[1] << " " << this->ContourColor[2]
+     << "\n";
+  os << indent << "LineWidth: " << this->LineWidth << "\n";
+  os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";
+  os << indent << "CoverageOnly: " << this->CoverageOnly << "\n";
+  os << indent << "NumberOfLineImageUpdates: " << this->NumberOfLineImageUpdates << "\n";
+}

@@ -1,0 +1,473 @@
+#include "vtkNPRGBufferPass.h"
+
+#include "vtkCamera.h"
+#include "vtkHardwareSelector.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkProp.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include "vtkNPRGBufferDecl.h"
+#include "vtkNPRGBufferImpl.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+// What the last G-buffer was drawn from: a frame with the same signature draws the same image.
+struct vtkNPRGBufferPass::Internals
+{
+  struct PropStamp
+  {
+    vtkProp* Prop;
+    vtkMTimeType Time;
+    bool operator==(const PropStamp& other) const
+    {
+      return this->Prop == other.Prop && this->Time == other.Time;
+    }
+  };
+  std::vector<PropStamp> Props;
+  std::vector<vtkMTimeType> Lights;
+  vtkCamera* Camera = nullptr;
+  vtkMTimeType CameraTime = 0;
+  vtkMTimeType RendererTime = 0;
+  vtkMTimeType PassTime = 0;
+  int Size[2] = { 0, 0 };
+  bool Normals = false;
+  bool Ids = false;
+  bool Valid = false;
+
+  // Ids of the props in this frame (1-based), looked up by SetShaderParameters.
+  std::vector<vtkProp*> FrameProps;
+};
+
+vtkStandardNewMacro(vtkNPRGBufferPass);
+vtkCxxSetObjectMacro(vtkNPRGBufferPass, DelegatePass, vtkRenderPass);
+
+vtkNPRGBufferPass::vtkNPRGBufferPass()
+  : Internal(new Internals)
+{
+  this->InverseProjection = vtkMatrix4x4::New();
+  this->ShaderStageTime.Modified();
+}
+
+vtkNPRGBufferPass::~vtkNPRGBufferPass()
+{
+  this->SetDelegatePass(nullptr);
+  this->InverseProjection->Delete();
+  // Texture and framebuffer objects free their OpenGL names through the window's resource
+  // callbacks when their context is still alive.
+  for (vtkObject* object : { static_cast<vtkObject*>(this->ColorTexture),
+         static_cast<vtkObject*>(this->GeometryTexture),
+         static_cast<vtkObject*>(this->DepthTexture), static_cast<vtkObject*>(this->Framebuffer) })
+  {
+    if (object)
+    {
+      object->Delete();
+    }
+  }
+}
+
+namespace
+{
+vtkTextureObject* NewNearestTexture(vtkOpenGLRenderWindow* window)
+{
+  vtkTextureObject* texture = vtkTextureObject::New();
+  texture->SetContext(window);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  return texture;
+}
+
+const unsigned int GeometryFormats[5][2] = { { 0, 0 }, { GL_R32F, GL_RED }, { GL_RG32F, GL_RG },
+  { 0, 0 }, { GL_RGBA32F, GL_RGBA } };
+}
+
+void vtkNPRGBufferPass::AllocateBuffers(
+  vtkOpenGLRenderWindow* window, int width, int height, int components)
+{
+  if (!this->Framebuffer)
+  {
+    this->Framebuffer = vtkOpenGLFramebufferObject::New();
+    this->Framebuffer->SetContext(window);
+  }
+  if (!this->ColorTexture)
+  {
+    this->ColorTexture = NewNearestTexture(window);
+    this->ColorTexture->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+  }
+  if (!this->DepthTexture)
+  {
+    this->DepthTexture = NewNearestTexture(window);
+    this->DepthTexture->AllocateDepth(width, height, vtkTextureObject::Float32);
+  }
+  if (this->GeometryTexture && this->GeometryTexture->GetComponents() != components)
+  {
+    this->GeometryTexture->ReleaseGraphicsResources(window);
+    this->GeometryTexture->Delete();
+    this->GeometryTexture = nullptr;
+  }
+  if (!this->GeometryTexture)
+  {
+    this->GeometryTexture = NewNearestTexture(window);
+    this->GeometryTexture->SetInternalFormat(GeometryFormats[components][0]);
+    this->GeometryTexture->SetFormat(GeometryFormats[components][1]);
+    this->GeometryTexture->SetDataType(GL_FLOAT);
+    this->GeometryTexture->Allocate2D(width, height, components, VTK_FLOAT);
+  }
+  // Resize() does nothing when the size is unchanged.
+  this->ColorTexture->Resize(width, height);
+  this->DepthTexture->Resize(width, height);
+  this->GeometryTexture->Resize(width, height);
+}
+
+bool vtkNPRGBufferPass::SceneUnchanged(const vtkRenderState* state, int width, int height)
+{
+  Internals& last = *this->Internal;
+  Internals now;
+  vtkRenderer* renderer = state->GetRenderer();
+  for (int i = 0; i < state->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = state->GetPropArray()[i];
+    // The redraw time includes the mapper and its input, brought up to date.
+    now.Props.push_back({ prop, std::max(prop->GetMTime(), prop->GetRedrawMTime()) });
+  }
+  vtkLightCollection* lights = renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    now.Lights.push_back(light->GetMTime());
+  }
+  now.Camera = renderer->GetActiveCamera();
+  now.CameraTime = now.Camera->GetMTime();
+  now.RendererTime = renderer->GetMTime();
+  now.PassTime = this->GetMTime();
+  now.Size[0] = width;
+  now.Size[1] = height;
+  now.Normals = this->WritesNormals;
+  now.Ids = this->WritesObjectIds;
+
+  const bool unchanged = last.Valid && this->ReuseUnchangedFrames && this->HasContent &&
+    now.Props == last.Props && now.Lights == last.Lights && now.Camera == last.Camera &&
+    now.CameraTime == last.CameraTime && now.RendererTime == last.RendererTime &&
+    now.PassTime == last.PassTime && now.Size[0] == last.Size[0] && now.Size[1] == last.Size[1] &&
+    now.Normals == last.Normals && now.Ids == last.Ids;
+  now.Valid = true;
+  now.FrameProps.swap(last.FrameProps);
+  last = std::move(now);
+  return unchanged;
+}
+
+void vtkNPRGBufferPass::ComputeContentRectangle(const vtkRenderState* state, int width, int height)
+{
+  int* rect = this->ContentRectangle;
+  rect[0] = rect[1] = 0;
+  rect[2] = width - 1;
+  rect[3] = height - 1;
+  double bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (int i = 0; i < state->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = state->GetPropArray()[i];
+    if (!prop->HasOpaqueGeometry())
+    {
+      continue;
+    }
+    const double* propBounds = prop->GetBounds();
+    if (!propBounds)
+    {
+      return; // unknown extent: the whole buffer
+    }
+    if (!vtkMath::AreBoundsInitialized(propBounds))
+    {
+      continue;
+    }
+    for (int j = 0; j < 3; ++j)
+    {
+      bounds[2 * j] = std::min(bounds[2 * j], propBounds[2 * j]);
+      bounds[2 * j + 1] = std::max(bounds[2 * j + 1], propBounds[2 * j + 1]);
+    }
+  }
+  if (!vtkMath::AreBoundsInitialized(bounds))
+  {
+    return;
+  }
+  vtkCamera* camera = state->GetRenderer()->GetActiveCamera();
+  vtkMatrix4x4* toClip = camera->GetCompositeProjectionTransformMatrix(
+    static_cast<double>(width) / height, -1.0, 1.0);
+  double box[4] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    double point[4] = { bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)],
+      bounds[4 + ((corner >> 2) & 1)], 1.0 };
+    toClip->MultiplyPoint(point, point);
+    if (!(point[3] > 1e-9) || !std::isfinite(point[0]) || !std::isfinite(point[1]))
+    {
+      return; // a corner behind the eye: the projection of the box is unbounded
+    }
+    const double x = (point[0] / point[3] * 0.5 + 0.5) * width;
+    const double y = (point[1] / point[3] * 0.5 + 0.5) * height;
+    box[0] = std::min(box[0], x);
+    box[1] = std::min(box[1], y);
+    box[2] = std::max(box[2], x);
+    box[3] = std::max(box[3], y);
+  }
+  // A margin for rasterisation and for lines wider than the props (up to 32 pixels).
+  const double margin = 40.0;
+  rect[0] = static_cast<int>(std::max(0.0, std::floor(box[0] - margin)));
+  rect[1] = static_cast<int>(std::max(0.0, std::floor(box[1] - margin)));
+  rect[2] = static_cast<int>(std::min(width - 1.0, std::ceil(box[2] + margin)));
+  rect[3] = static_cast<int>(std::min(height - 1.0, std::ceil(box[3] + margin)));
+  if (rect[2] < rect[0] || rect[3] < rect[1])
+  {
+    rect[0] = rect[1] = 0;
+    rect[2] = rect[3] = -1; // off screen: nothing to do
+  }
+}
+
+void vtkNPRGBufferPass::Render(const vtkRenderState* state)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro("no delegate pass: nothing drawn");
+    return;
+  }
+  vtkRenderer* renderer = state->GetRenderer();
+
+  // Picking renders through the pass chain too; run the selector as vtkOpenGLRenderer would.
+  vtkHardwareSelector* selector = renderer->GetSelector();
+  this->LastRenderWasSelection = selector != nullptr;
+  if (selector)
+  {
+    this->NumberOfRenderedProps =
+      selector->Render(renderer, state->GetPropArray(), state->GetPropArrayCount());
+    return;
+  }
+
+  int opaqueProps = 0;
+  for (int i = 0; i < state->GetPropArrayCount(); ++i)
+  {
+    opaqueProps += state->GetPropArray()[i]->HasOpaqueGeometry() ? 1 : 0;
+  }
+  if (opaqueProps == 0)
+  {
+    // Nothing to draw: no buffers, no effects.
+    this->HasContent = false;
+    this->Internal->Valid = false;
+    return;
+  }
+
+  const bool normals = this->NormalsRequested;
+  const bool ids = this->ObjectIdsRequested && opaqueProps > 1;
+  if (normals != this->WritesNormals || ids != this->WritesObjectIds)
+  {
+    this->WritesNormals = normals;
+    this->WritesObjectIds = ids;
+    this->ShaderStageTime.Modified(); // the mappers rebuild their shaders with the new outputs
+  }
+
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  int width = 0, height = 0;
+  if (state->GetFrameBuffer())
+  {
+    state->GetFrameBuffer()->GetLastSize(width, height);
+  }
+  else
+  {
+    int x, y;
+    renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  }
+  if (width < 1 || height < 1)
+  {
+    this->HasContent = false;
+    return;
+  }
+
+  if (this->SceneUnchanged(state, width, height))
+  {
+    this->NumberOfRenderedProps = opaqueProps;
+    return;
+  }
+
+  const int components = ids ? 4 : (normals ? 2 : 1);
+  this->AllocateBuffers(window, width, height, components);
+  this->Viewport[0] = 0.0f;
+  this->Viewport[1] = 0.0f;
+  this->Viewport[2] = 1.0f / width;
+  this->Viewport[3] = 1.0f / height;
+
+  vtkMatrix4x4 *worldToView, *viewToDevice, *worldToDevice;
+  vtkMatrix3x3* normalMatrix;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  static_cast<vtkOpenGLCamera*>(camera)->GetKeyMatrices(
+    renderer, worldToView, normalMatrix, viewToDevice, worldToDevice);
+  vtkMatrix4x4::Invert(viewToDevice, this->InverseProjection); // stays in GLSL's layout
+  this->Perspective = !camera->GetParallelProjection();
+
+  this->ComputeContentRectangle(state, width, height);
+  this->Internal->FrameProps.assign(
+    state->GetPropArray(), state->GetPropArray() + state->GetPropArrayCount());
+
+  vtkOpenGLState* glState = window->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(glState);
+  vtkOpenGLState::ScopedglScissor scissorSaver(glState);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(glState);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(glState);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(glState, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(glState, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
+
+  this->PreRender(state); // the mappers now call this pass's shader hooks
+  glState->PushFramebufferBindings();
+  this->Framebuffer->Bind();
+  this->Framebuffer->AddColorAttachment(0, this->ColorTexture);
+  this->Framebuffer->AddColorAttachment(1, this->GeometryTexture);
+  this->Framebuffer->AddDepthAttachment(this->DepthTexture);
+  this->Framebuffer->ActivateDrawBuffers(2);
+  this->Framebuffer->StartNonOrtho(width, height); // checks completeness; sets no viewport
+  glState->vtkglViewport(0, 0, width, height);
+  glState->vtkglScissor(0, 0, width, height);
+  // VTK leaves blending on in the opaque step; it would blend every attachment.
+  glState->vtkglDisable(GL_BLEND);
+  glState->vtkglEnable(GL_DEPTH_TEST);
+  glState->vtkglDepthMask(GL_TRUE);
+  glState->vtkglClearColor(0.0, 0.0, 0.0, 0.0); // geometry depth 0 = background
+  glState->vtkglClearDepth(1.0);
+  glState->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+  this->DelegatePass->Render(state);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+
+  this->Framebuffer->RemoveColorAttachments(2);
+  this->Framebuffer->RemoveDepthAttachment();
+  glState->PopFramebufferBindings();
+  this->PostRender(state);
+
+  this->HasContent = true;
+  ++this->NumberOfGeometryDraws;
+  ++this->ContentVersion;
+  vtkOpenGLCheckErrorMacro("failed after vtkNPRGBufferPass::Render");
+}
+
+bool vtkNPRGBufferPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    // A tag of our own right after lighting, where the normal and position are in scope; filled
+    // in after VTK's own replacements (PostReplaceShaderValues) when we know what the shader has.
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
+      "//VTK::Light::Impl\n  //NPR::GBuffer::Impl\n", false);
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
+      "//VTK::Output::Dec\n//NPR::GBuffer::Dec\n", false);
+  }
+  return true;
+}
+
+bool vtkNPRGBufferPass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) ||
+    fragmentShader.find("//NPR::GBuffer::Impl") == std::string::npos)
+  {
+    return true;
+  }
+  const bool mapperNormal = fragmentShader.find("normalVCVSOutput") != std::string::npos;
+  const bool vertexVC = fragmentShader.find("in vec4 vertexVCVSOutput;") != std::string::npos;
+  std::string defines = std::string("#define NPR_WRITE_NORMALS ") +
+    (this->WritesNormals ? "1" : "0") + "\n#define NPR_WRITE_OBJECT_IDS " +
+    (this->WritesObjectIds ? "1" : "0") + "\n#define NPR_HAVE_MAPPER_NORMAL " +
+    (mapperNormal ? "1" : "0") + "\n#define NPR_HAVE_VERTEX_VC " + (vertexVC ? "1" : "0") + "\n";
+  vtkShaderProgram::Substitute(
+    fragmentShader, "//NPR::GBuffer::Dec", defines + vtkNPRGBufferDecl, false);
+  vtkShaderProgram::Substitute(fragmentShader, "//NPR::GBuffer::Impl", vtkNPRGBufferImpl, false);
+  return true;
+}
+
+bool vtkNPRGBufferPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject*)
+{
+  if (!this->Framebuffer)
+  {
+    return true;
+  }
+  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && program->IsUniformUsed("nprViewport"))
+  {
+    this->Framebuffer->ActivateDrawBuffers(2);
+    const std::vector<vtkProp*>& props = this->Internal->FrameProps;
+    const auto found = std::find(props.begin(), props.end(), prop);
+    program->SetUniformf("nprObjectId",
+      found == props.end() ? static_cast<float>(props.size() + 1)
+                           : static_cast<float>(found - props.begin() + 1));
+    program->SetUniformMatrix("nprInverseProjection", this->InverseProjection);
+    program->SetUniform4f("nprViewport", this->Viewport);
+  }
+  else
+  {
+    // Mappers without the G-buffer outputs write colour and depth only.
+    this->Framebuffer->ActivateDrawBuffers(1);
+  }
+  return true;
+}
+
+vtkMTimeType vtkNPRGBufferPass::GetShaderStageMTime()
+{
+  return this->ShaderStageTime.GetMTime();
+}
+
+void vtkNPRGBufferPass::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(window);
+  }
+  for (vtkTextureObject** texture :
+    { &this->ColorTexture, &this->GeometryTexture, &this->DepthTexture })
+  {
+    if (*texture)
+    {
+      (*texture)->ReleaseGraphicsResources(window);
+      (*texture)->Delete();
+      *texture = nullptr;
+    }
+  }
+  if (this->Framebuffer)
+  {
+    this->Framebuffer->ReleaseGraphicsResources(window);
+    this->Framebuffer->Delete();
+    this->Framebuffer = nullptr;
+  }
+  this->HasContent = false;
+  this->Internal->Valid = false;
+}
+
+void vtkNPRGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+  os << indent << "NormalsRequested: " << this->NormalsRequested << "\n";
+  os << indent << "ObjectIdsRequested: " << this->ObjectIdsRequested << "\n";
+  os << indent << "ReuseUnchangedFrames: " << this->ReuseUnchangedFrames << "\n";
+  os << indent << "WritesNormals: " << this->WritesNormals << "\n";
+  os << indent << "WritesObjectIds: " << this->WritesObjectIds << "\n";
+  os << indent << "NumberOfGeometryDraws: " << this->NumberOfGeometryDraws << "\n";
+}

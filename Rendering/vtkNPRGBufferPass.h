@@ -1,0 +1,175 @@
+/**
+ * @class   vtkNPRGBufferPass
+ * @brief   Draws the opaque geometry once into a G-buffer that image-space effects read.
+ *
+ * The delegate (normally a vtkOpaquePass) draws into a framebuffer of the renderer's size with:
+ *
+ * - colour (RGBA8): the shaded image as VTK would draw it;
+ * - depth (32-bit float depth texture);
+ * - geometry (32-bit float): r = view-space depth (distance along the view direction, 0 on the
+ *   background), g = the view-space normal (octahedral, 12 bits per coordinate, packed in one
+ *   float), b = the object id (1-based index of the prop in the frame).
+ *
+ * Only what the effects need is allocated and written: the geometry attachment is R32F when
+ * neither normals nor ids are wanted, RG32F with normals, RGBA32F with ids. Ids are written only
+ * when asked for and more than one prop with opaque geometry is visible (with one, coverage says
+ * the same). With no prop to draw, nothing is allocated or drawn.
+ *
+ * The extra outputs are written by every vtkOpenGLPolyDataMapper (and its subclasses: composite,
+ * glyph, point-Gaussian helpers) through the vtkOpenGLRenderPass shader hooks, as vtkSSAOPass does.
+ * Lit actors give their shading normal; unlit actors, lines and points, and zero-length or NaN
+ * normals give the face normal from the derivatives of the view-space position. Other mappers
+ * draw colour and depth only; they appear as background to the effects.
+ *
+ * Reuse: when neither the props (their MTime and redraw MTime, which includes their mapper and
+ * its input), the camera, the lights, the renderer, the size nor this pass changed since the last
+ * frame, the geometry is not drawn again and the last G-buffer is kept (ReuseUnchangedFrames,
+ * on by default). GetNumberOfGeometryDraws() counts the draws.
+ *
+ * Picking: VTK 9.1 does not call the hardware selector once a renderer has a pass, so during a
+ * selection render this pass runs the selector itself (vtkPropPicker, vtkHardwareSelector) and
+ * makes no G-buffer.
+ *
+ * @sa vtkNPREdgePass vtkNPRPass
+ */
+#ifndef vtkNPRGBufferPass_h
+#define vtkNPRGBufferPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkTimeStamp.h"           // for vtkTimeStamp
+
+#include <memory> // for std::unique_ptr
+
+class vtkMatrix4x4;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+
+class VTKRENDERINGNPR_EXPORT vtkNPRGBufferPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkNPRGBufferPass* New();
+  vtkTypeMacro(vtkNPRGBufferPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  void Render(const vtkRenderState* state) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+  ///@{
+  /**
+   * The pass that draws the geometry (normally a vtkOpaquePass).
+   */
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  virtual void SetDelegatePass(vtkRenderPass* pass);
+  ///@}
+
+  ///@{
+  /**
+   * Whether the effects need normals and object ids. Off by default: colour and depth only.
+   */
+  vtkSetMacro(NormalsRequested, bool);
+  vtkGetMacro(NormalsRequested, bool);
+  vtkBooleanMacro(NormalsRequested, bool);
+  vtkSetMacro(ObjectIdsRequested, bool);
+  vtkGetMacro(ObjectIdsRequested, bool);
+  vtkBooleanMacro(ObjectIdsRequested, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Keep the last G-buffer when nothing that affects it changed (on by default).
+   */
+  vtkSetMacro(ReuseUnchangedFrames, bool);
+  vtkGetMacro(ReuseUnchangedFrames, bool);
+  vtkBooleanMacro(ReuseUnchangedFrames, bool);
+  ///@}
+
+  ///@{
+  /**
+   * What the last frame's G-buffer holds. Valid after Render() until ReleaseGraphicsResources().
+   * The textures are null when nothing was drawn (no props) or the channel was not written.
+   */
+  bool GetHasContent() const { return this->HasContent; }
+  bool GetWritesNormals() const { return this->WritesNormals; }
+  bool GetWritesObjectIds() const { return this->WritesObjectIds; }
+  vtkTextureObject* GetColorTexture() const { return this->HasContent ? this->ColorTexture : nullptr; }
+  vtkTextureObject* GetGeometryTexture() const { return this->HasContent ? this->GeometryTexture : nullptr; }
+  vtkTextureObject* GetDepthTexture() const { return this->HasContent ? this->DepthTexture : nullptr; }
+  ///@}
+
+  /**
+   * The part of the G-buffer the opaque props can cover (their projected bounding boxes), as
+   * x0, y0, x1, y1 in pixels, inclusive; effects skip the rest, which is background.
+   */
+  const int* GetContentRectangle() const { return this->ContentRectangle; }
+
+  /**
+   * The camera's projection was perspective in the last frame.
+   */
+  bool GetPerspective() const { return this->Perspective; }
+
+  /**
+   * The last Render() was a hardware-selection (picking) render: no G-buffer was made.
+   */
+  bool GetLastRenderWasSelection() const { return this->LastRenderWasSelection; }
+
+  /**
+   * Number of times the geometry was drawn into the G-buffer (not counting reused frames).
+   */
+  vtkGetMacro(NumberOfGeometryDraws, int);
+
+  /**
+   * Changes whenever the G-buffer's content changes: effects that derive images from it (the
+   * line image of vtkNPREdgePass) recompute them only then.
+   */
+  unsigned long GetContentVersion() const { return this->ContentVersion; }
+
+  // vtkOpenGLRenderPass hooks: add the G-buffer outputs to the mappers' fragment shaders.
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* vao = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override;
+
+protected:
+  vtkNPRGBufferPass();
+  ~vtkNPRGBufferPass() override;
+
+  void AllocateBuffers(vtkOpenGLRenderWindow* window, int width, int height, int components);
+  bool SceneUnchanged(const vtkRenderState* state, int width, int height);
+  void ComputeContentRectangle(const vtkRenderState* state, int width, int height);
+
+  vtkRenderPass* DelegatePass = nullptr;
+  bool NormalsRequested = false;
+  bool ObjectIdsRequested = false;
+  bool ReuseUnchangedFrames = true;
+
+  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
+  vtkTextureObject* ColorTexture = nullptr;
+  vtkTextureObject* GeometryTexture = nullptr;
+  vtkTextureObject* DepthTexture = nullptr;
+  vtkMatrix4x4* InverseProjection = nullptr;
+
+  bool HasContent = false;
+  bool WritesNormals = false;
+  bool WritesObjectIds = false;
+  bool Perspective = true;
+  bool LastRenderWasSelection = false;
+  int NumberOfGeometryDraws = 0;
+  unsigned long ContentVersion = 0;
+  vtkTimeStamp ShaderStageTime; // the injected shader code changed
+  float Viewport[4] = { 0, 0, 1, 1 };
+  int ContentRectangle[4] = { 0, 0, 0, 0 };
+
+private:
+  vtkNPRGBufferPass(const vtkNPRGBufferPass&) = delete;
+  void operator=(const vtkNPRGBufferPass&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif
