@@ -314,9 +314,16 @@ void vtkNPREdgePass::Render(const vtkRenderState* state)
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(glState);
   // Outside the props' projected bounds there is only background: nothing to write there.
   const int* rect = gbuffer->GetContentRectangle();
-  glState->vtkglEnable(GL_SCISSOR_TEST);
-  glState->vtkglScissor(origin[0] + rect[0], origin[1] + rect[1], rect[2] - rect[0] + 1,
-    rect[3] - rect[1] + 1);
+  if (this->CoverageOnly)
+  {
+    glState->vtkglDisable(GL_SCISSOR_TEST); // a mask is black everywhere else
+  }
+  else
+  {
+    glState->vtkglEnable(GL_SCISSOR_TEST);
+    glState->vtkglScissor(origin[0] + rect[0], origin[1] + rect[1], rect[2] - rect[0] + 1,
+      rect[3] - rect[1] + 1);
+  }
   glState->vtkglEnable(GL_DEPTH_TEST);
   glState->vtkglDepthFunc(GL_LEQUAL);
   glState->vtkglDepthMask(GL_TRUE);

@@ -28,8 +28,8 @@
 #include <cmath>
 #include <vector>
 
-// What the last G-buffer was drawn from: a frame with the same signature draws the same image.
-struct vtkNPRGBufferPass::Internals
+// What a G-buffer is drawn from: a frame with the same signature draws the same image.
+struct vtkNPRGBufferSignature
 {
   struct PropStamp
   {
@@ -44,14 +44,29 @@ struct vtkNPRGBufferPass::Internals
   std::vector<vtkMTimeType> Lights;
   vtkCamera* Camera = nullptr;
   vtkMTimeType CameraTime = 0;
-  vtkMTimeType RendererTime = 0;
+  // The renderer's own settings that change the shaded colour (its MTime also changes when
+  // images are read back, so it cannot be used).
+  double RendererSettings[5] = { 0, 0, 0, 0, 0 };
   vtkMTimeType PassTime = 0;
   int Size[2] = { 0, 0 };
   bool Normals = false;
   bool Ids = false;
-  bool Valid = false;
 
-  // Ids of the props in this frame (1-based), looked up by SetShaderParameters.
+  bool operator==(const vtkNPRGBufferSignature& o) const
+  {
+    return this->Props == o.Props && this->Lights == o.Lights && this->Camera == o.Camera &&
+      this->CameraTime == o.CameraTime && std::equal(this->RendererSettings, this->RendererSettings + 5, o.RendererSettings) &&
+      this->PassTime == o.PassTime && this->Size[0] == o.Size[0] && this->Size[1] == o.Size[1] &&
+      this->Normals == o.Normals && this->Ids == o.Ids;
+  }
+};
+
+struct vtkNPRGBufferPass::Internals
+{
+  // Taken right after the last draw, so that what the draw itself touched counts as seen.
+  vtkNPRGBufferSignature Last;
+  bool Valid = false;
+  // The props of this frame; an object id is the 1-based index of its prop here.
   std::vector<vtkProp*> FrameProps;
 };
 
@@ -137,10 +152,12 @@ void vtkNPRGBufferPass::AllocateBuffers(
   this->GeometryTexture->Resize(width, height);
 }
 
-bool vtkNPRGBufferPass::SceneUnchanged(const vtkRenderState* state, int width, int height)
+namespace
 {
-  Internals& last = *this->Internal;
-  Internals now;
+vtkNPRGBufferSignature TakeSignature(
+  const vtkRenderState* state, int width, int height, bool normals, bool ids, vtkMTimeType passTime)
+{
+  vtkNPRGBufferSignature now;
   vtkRenderer* renderer = state->GetRenderer();
   for (int i = 0; i < state->GetPropArrayCount(); ++i)
   {
@@ -157,22 +174,26 @@ bool vtkNPRGBufferPass::SceneUnchanged(const vtkRenderState* state, int width, i
   }
   now.Camera = renderer->GetActiveCamera();
   now.CameraTime = now.Camera->GetMTime();
-  now.RendererTime = renderer->GetMTime();
-  now.PassTime = this->GetMTime();
+  now.RendererSettings[0] = renderer->GetTwoSidedLighting();
+  now.RendererSettings[1] = renderer->GetLightFollowCamera();
+  std::copy_n(renderer->GetAmbient(), 3, now.RendererSettings + 2);
+  now.PassTime = passTime;
   now.Size[0] = width;
   now.Size[1] = height;
-  now.Normals = this->WritesNormals;
-  now.Ids = this->WritesObjectIds;
+  now.Normals = normals;
+  now.Ids = ids;
+  return now;
+}
+}
 
-  const bool unchanged = last.Valid && this->ReuseUnchangedFrames && this->HasContent &&
-    now.Props == last.Props && now.Lights == last.Lights && now.Camera == last.Camera &&
-    now.CameraTime == last.CameraTime && now.RendererTime == last.RendererTime &&
-    now.PassTime == last.PassTime && now.Size[0] == last.Size[0] && now.Size[1] == last.Size[1] &&
-    now.Normals == last.Normals && now.Ids == last.Ids;
-  now.Valid = true;
-  now.FrameProps.swap(last.FrameProps);
-  last = std::move(now);
-  return unchanged;
+bool vtkNPRGBufferPass::SceneUnchanged(const vtkRenderState* state, int width, int height)
+{
+  if (!this->Internal->Valid || !this->ReuseUnchangedFrames || !this->HasContent)
+  {
+    return false;
+  }
+  return TakeSignature(state, width, height, this->WritesNormals, this->WritesObjectIds,
+           this->GetMTime()) == this->Internal->Last;
 }
 
 void vtkNPRGBufferPass::ComputeContentRectangle(const vtkRenderState* state, int width, int height)
@@ -363,6 +384,9 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   this->PostRender(state);
 
   this->HasContent = true;
+  this->Internal->Last = TakeSignature(
+    state, width, height, this->WritesNormals, this->WritesObjectIds, this->GetMTime());
+  this->Internal->Valid = true;
   ++this->NumberOfGeometryDraws;
   ++this->ContentVersion;
   vtkOpenGLCheckErrorMacro("failed after vtkNPRGBufferPass::Render");
@@ -410,16 +434,25 @@ bool vtkNPRGBufferPass::SetShaderParameters(
   {
     return true;
   }
-  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && program->IsUniformUsed("nprViewport"))
+  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
   {
     this->Framebuffer->ActivateDrawBuffers(2);
-    const std::vector<vtkProp*>& props = this->Internal->FrameProps;
-    const auto found = std::find(props.begin(), props.end(), prop);
-    program->SetUniformf("nprObjectId",
-      found == props.end() ? static_cast<float>(props.size() + 1)
-                           : static_cast<float>(found - props.begin() + 1));
-    program->SetUniformMatrix("nprInverseProjection", this->InverseProjection);
-    program->SetUniform4f("nprViewport", this->Viewport);
+    // The compiler drops the uniforms a variant does not read.
+    if (program->IsUniformUsed("nprObjectId"))
+    {
+      const std::vector<vtkProp*>& props = this->Internal->FrameProps;
+      const auto found = std::find(props.begin(), props.end(), prop);
+      program->SetUniformf("nprObjectId",
+        static_cast<float>(found - props.begin() + 1)); // props.size() + 1 when not found
+    }
+    if (program->IsUniformUsed("nprInverseProjection"))
+    {
+      program->SetUniformMatrix("nprInverseProjection", this->InverseProjection);
+    }
+    if (program->IsUniformUsed("nprViewport"))
+    {
+      program->SetUniform4f("nprViewport", this->Viewport);
+    }
   }
   else
   {

@@ -22,9 +22,9 @@
  * draw colour and depth only; they appear as background to the effects.
  *
  * Reuse: when neither the props (their MTime and redraw MTime, which includes their mapper and
- * its input), the camera, the lights, the renderer, the size nor this pass changed since the last
- * frame, the geometry is not drawn again and the last G-buffer is kept (ReuseUnchangedFrames,
- * on by default). GetNumberOfGeometryDraws() counts the draws.
+ * its input), the camera, the lights, the renderer's lighting settings, the size nor this pass
+ * changed since the last frame, the geometry is not drawn again and the last G-buffer is kept
+ * (ReuseUnchangedFrames, on by default). GetNumberOfGeometryDraws() counts the draws.
  *
  * Picking: VTK 9.1 does not call the hardware selector once a renderer has a pass, so during a
  * selection render this pass runs the selector itself (vtkPropPicker, vtkHardwareSelector) and

@@ -1,5 +1,7 @@
 #include "vtkNPRHeadlessRenderWindow.h"
 
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLState.h"
 #include "vtkRendererCollection.h"
 #include "vtk_glew.h"
 
@@ -69,6 +71,30 @@ void vtkNPRHeadlessRenderWindow::MakeCurrent()
     return;
   }
   this->MakeContextCurrent();
+}
+
+int vtkNPRHeadlessRenderWindow::GetColorBufferSizes(int* rgba)
+{
+  rgba[0] = rgba[1] = rgba[2] = rgba[3] = 0;
+  vtkOpenGLFramebufferObject* framebuffer = this->GetRenderFramebuffer();
+  if (!this->ContextValid || !framebuffer || !framebuffer->GetFBOIndex())
+  {
+    return 0;
+  }
+  this->MakeCurrent();
+  vtkOpenGLState* state = this->GetState();
+  state->PushReadFramebufferBinding();
+  framebuffer->Bind(GL_READ_FRAMEBUFFER);
+  const GLenum names[4] = { GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE, GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE,
+    GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE, GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE };
+  for (int i = 0; i < 4; ++i)
+  {
+    GLint size = 0;
+    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, names[i], &size);
+    rgba[i] = size;
+  }
+  state->PopReadFramebufferBinding();
+  return rgba[0] + rgba[1] + rgba[2] + rgba[3];
 }
 
 void vtkNPRHeadlessRenderWindow::Render()

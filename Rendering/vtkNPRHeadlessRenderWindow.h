@@ -69,6 +69,13 @@ public:
   void Render() override;
 
   /**
+   * Bits per channel of the framebuffer VTK renders into (its own framebuffer object: a
+   * surfaceless context's default framebuffer has no colour buffer). vtkHardwareSelector
+   * checks them before picking.
+   */
+  int GetColorBufferSizes(int* rgba) override;
+
+  /**
    * Same as InitializeContext(), for code that calls vtkRenderWindow::Initialize().
    */
   void Initialize() override { this->InitializeContext(); }

@@ -177,8 +177,9 @@ double ParseRange(const std::string& flag, const std::string& text, double low, 
   const double value = ParseNumber(flag, text);
   if (value < low || value > high)
   {
-    throw UsageError(flag + " expects a number in " + nprFormatNumber(low) + ".." +
-      nprFormatNumber(high) + ", got '" + text + "'");
+    std::ostringstream range;
+    range << low << ".." << high;
+    throw UsageError(flag + " expects a number in " + range.str() + ", got '" + text + "'");
   }
   return value;
 }

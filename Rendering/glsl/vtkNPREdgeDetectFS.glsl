@@ -40,20 +40,27 @@ void main()
   float step2 = 0.0;
   if (covered0)
   {
-    float sum = 0.0;
+#if NPR_PERSPECTIVE
+    float a0 = 1.0 / g0.x;
+    float a[4];
     for (int k = 0; k < 4; ++k)
     {
-#if NPR_PERSPECTIVE
-      sum += g[k].x > 0.0 ? g0.x / g[k].x : 0.0;
-#else
-      sum += g[k].x > 0.0 ? g[k].x / g0.x : 1e6;
-#endif
+      a[k] = g[k].x > 0.0 ? 1.0 / g[k].x : 0.0;
     }
-#if NPR_PERSPECTIVE
-    step2 = 4.0 - sum;
+    const float towardsNear = -1.0;
 #else
-    step2 = sum - 4.0;
+    float a0 = g0.x;
+    float a[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      a[k] = g[k].x > 0.0 ? g[k].x : 1e6 * g0.x;
+    }
+    const float towardsNear = 1.0;
 #endif
+    // At the image border one neighbour is missing: that axis contributes nothing.
+    float lapX = (p.x > 0 && p.x < size.x - 1) ? a[0] + a[1] - 2.0 * a0 : 0.0;
+    float lapY = (p.y > 0 && p.y < size.y - 1) ? a[2] + a[3] - 2.0 * a0 : 0.0;
+    step2 = towardsNear * (lapX + lapY) / a0;
   }
 
   float silhouette = 0.0;
@@ -107,7 +114,8 @@ void main()
     if (idk != id0)
     {
       float depthk = g[k].x > 0.0 ? g[k].x : 3.0e38;
-      bool nearer = depth0 < depthk;
+      // Touching objects at one depth: the one with the larger id counts as nearer.
+      bool nearer = abs(depth0 - depthk) <= 1e-5 * depth0 ? id0 > idk : depth0 < depthk;
 #if NPR_CONTOUR_SIDE == 0
       contour = nearer ? 1.0 : contour;
 #elif NPR_CONTOUR_SIDE == 1

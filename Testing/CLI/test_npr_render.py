@@ -92,6 +92,40 @@ rc, _, err = run(os.path.join(models, "cube.glb"), os.path.join(models, "cube.of
                  "-o", out("two.png"))
 check(rc == 0, "two models in one scene (%s)" % err.strip())
 
+# --style edges and --edge-mask: an 8-bit grey mask of the render's size, white lines on black.
+from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+
+
+def read_png(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    scalars = image.GetPointData().GetScalars()
+    values = [scalars.GetValue(i) for i in range(scalars.GetNumberOfValues())]
+    return image.GetDimensions(), scalars.GetNumberOfComponents(), scalars.GetDataTypeAsString(), values
+
+
+rc, _, err = run(rotor, "--style", "edges", "--size", "160x120", "--azimuth", "30", "-o", out("edges.png"),
+                 "--edge-mask", out("mask.png"))
+check(rc == 0, "--style edges with --edge-mask (%s)" % err.strip())
+dims, components, kind, values = read_png(out("mask.png"))
+lit = sum(1 for v in values if v > 127)
+check(dims[:2] == (160, 120) and components == 1 and kind == "unsigned char",
+      "the edge mask is 8-bit grey at the render's size: %s %d %s" % (dims, components, kind))
+check(300 < lit < 0.3 * 160 * 120 and values.count(0) > 0.5 * 160 * 120,
+      "the edge mask has white lines on black (%d line pixels)" % lit)
+rc, _, err = run(rotor, "--style", "edges", "--lines", "none", "--size", "160x120", "--edge-mask", out("none.png"))
+check(rc == 0 and max(read_png(out("none.png"))[3]) == 0, "--lines none gives an empty mask (%s)" % err.strip())
+rc, _, _ = run(rotor, "--style", "edges", "--lines", "silhouettes", "--line-width", "4", "--size", "160x120",
+               "--azimuth", "30", "--edge-mask", out("wide.png"))
+wide = sum(v for v in read_png(out("wide.png"))[3]) / 255.0
+rc2, _, _ = run(rotor, "--style", "edges", "--lines", "silhouettes", "--line-width", "1", "--size", "160x120",
+                "--azimuth", "30", "--edge-mask", out("thin.png"))
+thin = sum(v for v in read_png(out("thin.png"))[3]) / 255.0
+check(rc == 0 and rc2 == 0 and 2.5 * thin < wide < 5.5 * thin,
+      "--line-width 4 draws about 4 times the coverage of --line-width 1 (%.0f vs %.0f)" % (wide, thin))
+
 # Errors: one line on stderr that names the problem, non-zero exit, no crash.
 errors = [
     ([os.path.join(models, "missing.ply"), "-o", out("x.png")], "no such file"),
@@ -100,7 +134,14 @@ errors = [
     ([os.path.join(models, "bad_keyword.off"), "-o", out("x.png")], "is no OFF keyword"),
     ([os.path.join(models, "bad.gltf"), "-o", out("x.png")], "malformed or unreadable gltf"),
     ([os.path.join(models, "cube.xyz"), "-o", out("x.png")], "unknown model format"),
-    ([rotor, "--style", "watercolour", "-o", out("x.png")], "unknown style 'watercolour' (valid styles: shaded)"),
+    ([rotor, "--style", "watercolour", "-o", out("x.png")], "unknown style 'watercolour' (valid styles: shaded, edges)"),
+    ([rotor, "--style", "edges", "--crease-angle", "500", "-o", out("x.png")], "--crease-angle expects a number in 1..179"),
+    ([rotor, "--style", "edges", "--silhouette-threshold", "2", "-o", out("x.png")], "--silhouette-threshold expects a number in"),
+    ([rotor, "--style", "edges", "--line-width", "0", "-o", out("x.png")], "--line-width expects a number in 0.5..16"),
+    ([rotor, "--style", "edges", "--contour-side", "sideways", "-o", out("x.png")], "--contour-side expects inside, outside or both"),
+    ([rotor, "--style", "edges", "--lines", "silhouettes,hatching", "-o", out("x.png")], "--lines expects silhouettes, creases, contours or none, got 'hatching'"),
+    ([rotor, "--style", "edges", "--line-color", "red", "-o", out("x.png")], "--line-color expects r,g,b"),
+    ([rotor, "--edge-mask", out("m.png")], "--edge-mask needs --style edges"),
     ([rotor, "--size", "100", "-o", out("x.png")], "--size expects WxH"),
     ([rotor, "--size", "0x100", "-o", out("x.png")], "--size width expects an integer in 1..16384"),
     ([rotor, "--zoom", "-2", "-o", out("x.png")], "--zoom expects a positive factor"),
