@@ -140,7 +140,7 @@ errors = [
     ([rotor, "--style", "edges", "--line-width", "0", "-o", out("x.png")], "--line-width expects a number in 0.5..16"),
     ([rotor, "--style", "edges", "--contour-side", "sideways", "-o", out("x.png")], "--contour-side expects inside, outside or both"),
     ([rotor, "--style", "edges", "--lines", "silhouettes,hatching", "-o", out("x.png")], "--lines expects silhouettes, creases, contours or none, got 'hatching'"),
-    ([rotor, "--style", "edges", "--line-color", "red", "-o", out("x.png")], "--line-color expects r,g,b"),
+    ([rotor, "--style", "edges", "--line-color", "2,0,0", "-o", out("x.png")], "--line-color expects r,g,b"),
     ([rotor, "--edge-mask", out("m.png")], "--edge-mask needs --style edges"),
     ([rotor, "--size", "100", "-o", out("x.png")], "--size expects WxH"),
     ([rotor, "--size", "0x100", "-o", out("x.png")], "--size width expects an integer in 1..16384"),
