@@ -122,6 +122,7 @@ struct Options
   double ContourColor[3] = { 0.0, 0.0, 0.0 };
   bool AntiAliasing = true;
   std::string EdgeMask;
+  std::string CompareStyle;
 };
 
 void PrintHelp()
@@ -135,6 +136,8 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
   -o, --output FILE        PNG to write
   --size WxH               image size in pixels (default 1024x768)
   --style NAME             shaded (default) or edges
+  --compare-style NAME     with --frames: also time this style, frames interleaved with
+                           the main style's in the same window; print both and the ratio
   --backend NAME           egl, osmesa or x (default: NPR_BACKEND, else egl;
                            osmesa in npr-render-osmesa)
   --azimuth DEG            rotate the camera about the view up after the reset
@@ -388,6 +391,14 @@ Options ParseOptions(int argc, char* argv[])
     {
       options.AntiAliasing = false;
     }
+    else if (arg == "--compare-style")
+    {
+      options.CompareStyle = value();
+      if (std::find(std::begin(Styles), std::end(Styles), options.CompareStyle) == std::end(Styles))
+      {
+        throw UsageError("unknown style '" + options.CompareStyle + "' for --compare-style");
+      }
+    }
     else if (arg == "--edge-mask")
     {
       options.EdgeMask = value();
@@ -414,6 +425,10 @@ Options ParseOptions(int argc, char* argv[])
     options.EdgeMask.empty())
   {
     throw UsageError("nothing to do: give -o FILE, --frames N, --edge-mask FILE or --camera-out FILE");
+  }
+  if (!options.CompareStyle.empty() && options.Frames == 0)
+  {
+    throw UsageError("--compare-style needs --frames N");
   }
   if (!options.EdgeMask.empty() && options.Style != "edges")
   {
@@ -590,27 +605,55 @@ int Run(const Options& options, nprQuietOutputWindow* messages)
 
   if (options.Frames > 0)
   {
+    // Each timed frame is a real one (the camera is modified, so nothing is reused) and ends
+    // with glFinish. With --compare-style the two styles alternate frame by frame in this window,
+    // so both see the same machine state.
     using Clock = std::chrono::steady_clock;
-    window->Render(); // warm-up: shader compilation and buffer uploads are done by now
-    window->WaitForCompletion();
-    std::vector<double> times;
-    for (int i = 0; i < options.Frames; ++i)
+    vtkSmartPointer<vtkNPRPass> comparePass;
+    if (!options.CompareStyle.empty() && options.CompareStyle != "shaded")
     {
-      const Clock::time_point start = Clock::now();
-      camera->Modified(); // a real frame, not a cached one
-      window->Render();
-      window->WaitForCompletion();
-      times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+      Options compare = options;
+      compare.Style = options.CompareStyle;
+      comparePass = MakePass(compare);
     }
-    std::vector<double> sorted = times;
-    std::sort(sorted.begin(), sorted.end());
-    const size_t n = sorted.size();
-    const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    const bool comparing = !options.CompareStyle.empty();
+    std::vector<double> times[2];
+    for (int i = -1; i < options.Frames; ++i) // frame -1: warm-up of both styles
+    {
+      for (int variant = 0; variant < (comparing ? 2 : 1); ++variant)
+      {
+        renderer->SetPass(variant == 0 ? pass.Get() : comparePass.Get());
+        const Clock::time_point start = Clock::now();
+        camera->Modified();
+        window->Render();
+        window->WaitForCompletion();
+        if (i >= 0)
+        {
+          times[variant].push_back(
+            std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        }
+      }
+    }
+    renderer->SetPass(pass);
+    auto median = [](std::vector<double> values) {
+      std::sort(values.begin(), values.end());
+      const size_t n = values.size();
+      return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    };
     auto milliseconds = [](double value) { return nprFormatNumber(std::round(value * 1e3) / 1e3); };
-    std::cout << "{\"style\":" << JsonString(options.Style) << ",\"frames\":" << n
-              << ",\"median_ms\":" << milliseconds(median)
-              << ",\"min_ms\":" << milliseconds(sorted.front())
-              << ",\"max_ms\":" << milliseconds(sorted.back()) << ",\"triangles\":" << triangles
+    const std::vector<double>& main = times[0];
+    std::cout << "{\"style\":" << JsonString(options.Style) << ",\"frames\":" << main.size()
+              << ",\"median_ms\":" << milliseconds(median(main))
+              << ",\"min_ms\":" << milliseconds(*std::min_element(main.begin(), main.end()))
+              << ",\"max_ms\":" << milliseconds(*std::max_element(main.begin(), main.end()));
+    if (comparing)
+    {
+      std::cout << ",\"compare_style\":" << JsonString(options.CompareStyle)
+                << ",\"compare_median_ms\":" << milliseconds(median(times[1]))
+                << ",\"ratio\":"
+                << nprFormatNumber(std::round(median(main) / median(times[1]) * 1e3) / 1e3);
+    }
+    std::cout << ",\"triangles\":" << triangles
               << ",\"pixels\":" << static_cast<long long>(width) * height
               << ",\"width\":" << width << ",\"height\":" << height
               << ",\"backend\":" << JsonString(vtkNPRRenderWindowFactory::GetBackendName(window))

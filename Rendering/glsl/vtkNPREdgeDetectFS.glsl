@@ -114,8 +114,10 @@ void main()
     if (idk != id0)
     {
       float depthk = g[k].x > 0.0 ? g[k].x : 3.0e38;
-      // Touching objects at one depth: the one with the larger id counts as nearer.
-      bool nearer = abs(depth0 - depthk) <= 1e-5 * depth0 ? id0 > idk : depth0 < depthk;
+      // Objects touching or passing through each other (a depth step below the silhouette
+      // threshold): the larger id counts as nearer, so the line keeps to one side.
+      bool nearer = abs(depth0 - depthk) <= silhouetteThreshold * min(depth0, depthk)
+        ? id0 > idk : depth0 < depthk;
 #if NPR_CONTOUR_SIDE == 0
       contour = nearer ? 1.0 : contour;
 #elif NPR_CONTOUR_SIDE == 1

@@ -1,0 +1,49 @@
+#!/bin/sh
+# Regenerates the images of Documentation/edges.md with the commands shown there.
+#
+#   Documentation/images/edges/make_images.sh build/bin/npr-render
+#
+# The commands run from the repository root (the model paths are relative to it) and write into
+# this folder; each is printed as edges.md shows it, "npr-render ... -o NAME.png".
+set -eu
+if [ $# -ne 1 ]; then
+  echo "usage: $0 NPR_RENDER" >&2
+  exit 2
+fi
+npr_render=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+out=$(cd "$(dirname "$0")" && pwd)
+cd "$out/../../.."
+
+# render NAME.png ARGS...: npr-render ARGS -o NAME.png, written into this folder
+render() {
+  name=$1
+  shift
+  echo "npr-render $* -o $name"
+  "$npr_render" "$@" -o "$out/$name"
+}
+
+# The edge style with every line type, and VTK's plain shading for comparison.
+render edges.png Testing/Data/cad_part.vtp --style edges --size 480x360 --azimuth 30 --elevation 30
+render shaded.png Testing/Data/cad_part.vtp --style shaded --size 480x360 --azimuth 30 --elevation 30
+
+# Each line type alone.
+render silhouettes.png Testing/Data/cad_part.vtp --style edges --size 480x360 --azimuth 30 --elevation 30 --lines silhouettes
+render creases.png Testing/Data/cad_part.vtp --style edges --size 480x360 --azimuth 30 --elevation 30 --lines creases
+render contours.png Testing/Data/bunny.ply Testing/Data/rotor.ply --style edges --size 480x360 --azimuth -20 --zoom 1.3 --lines contours
+
+# Crease angle.
+render crease_angle_20.png Testing/Data/cad_part.vtp --style edges --size 480x360 --azimuth 30 --elevation 30 --lines creases --crease-angle 20
+render crease_angle_60.png Testing/Data/cad_part.vtp --style edges --size 480x360 --azimuth 30 --elevation 30 --lines creases --crease-angle 60
+
+# Line width.
+render line_width_1.png Testing/Data/cad_part.vtp --style edges --size 480x360 --azimuth 30 --elevation 30 --line-width 1
+render line_width_3.png Testing/Data/cad_part.vtp --style edges --size 480x360 --azimuth 30 --elevation 30 --line-width 3
+render line_width_6.png Testing/Data/cad_part.vtp --style edges --size 480x360 --azimuth 30 --elevation 30 --line-width 6
+
+# Contour side, on two models: the rotor stands in front of the bunny and cuts into it.
+render contour_side_inside.png Testing/Data/bunny.ply Testing/Data/rotor.ply --style edges --size 480x360 --azimuth -20 --zoom 1.3 --lines contours --contour-side inside --contour-color 0.85,0,0 --line-width 4
+render contour_side_outside.png Testing/Data/bunny.ply Testing/Data/rotor.ply --style edges --size 480x360 --azimuth -20 --zoom 1.3 --lines contours --contour-side outside --contour-color 0.85,0,0 --line-width 4
+render contour_side_both.png Testing/Data/bunny.ply Testing/Data/rotor.ply --style edges --size 480x360 --azimuth -20 --zoom 1.3 --lines contours --contour-side both --contour-color 0.85,0,0 --line-width 4
+
+# A colour per line type.
+render colors.png Testing/Data/bunny.ply Testing/Data/rotor.ply --style edges --size 480x360 --azimuth -20 --zoom 1.3 --line-width 2 --silhouette-color 0.9,0,0 --crease-color 0,0.35,1 --contour-color 0,0.65,0
