@@ -790,6 +790,13 @@ int AntiAliasing()
   const double thick = coverageSum(scene.Mask());
   std::cout << "coverage across the edge: width 1.5 -> " << thin << ", width 6 -> " << thick << "\n";
   NPR_CHECK(thick > 3.0 * thin && thick < 5.0 * thin, "line width not honoured");
+  // Widths are at 72 DPI: a window at 144 DPI draws them twice as wide.
+  scene.Edges()->SetLineWidth(1.5);
+  scene.Window->SetDPI(144);
+  const double doubled = coverageSum(scene.Mask());
+  scene.Window->SetDPI(72);
+  std::cout << "width 1.5 at 144 DPI -> " << doubled << "\n";
+  NPR_CHECK(doubled > 1.6 * thin && doubled < 2.4 * thin, "the DPI scale is not applied");
   return nprTestResult();
 }
 
