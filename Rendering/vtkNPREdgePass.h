@@ -15,10 +15,12 @@
  * - Creases: the angle between the normals of neighbouring pixels of one object exceeds
  *   CreaseAngle (degrees). Lines lie on the side facing the viewer more.
  * - Contours: the object id changes (props are objects; with one prop, coverage changes).
- *   ContourSide puts the line inside the nearer object, outside it (on the farther object or the
- *   background) or on both sides.
+ *   ContourSide finds the one-pixel line on the nearer object's pixels (INSIDE), on the farther
+ *   object's or the background's (OUTSIDE) or on both (BOTH, twice as wide).
  *
- * Lines are LineWidth pixels wide (scaled by the window's DPI / 72 and tile scale) and
+ * Lines are widened symmetrically about their one-pixel line.
+ *
+ * They are LineWidth pixels wide (scaled by the window's DPI / 72 and tile scale) and
  * anti-aliased: the one-pixel line image is filtered with a Gaussian and its level set at half
  * the width gives each pixel's coverage. The cost is one pass of 5 texel fetches per pixel to find
  * line pixels (skipped while the G-buffer and settings are unchanged) and one composite pass of

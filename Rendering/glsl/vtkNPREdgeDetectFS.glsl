@@ -70,13 +70,15 @@ void main()
 
   float crease = 0.0;
 #if NPR_CREASES
-  // Not on the far side of a depth step: that line belongs to the nearer surface.
-  if (covered0 && step2 > -silhouetteThreshold)
+  if (covered0)
   {
     vec3 n0 = nprUnpackNormal(g0.y);
     for (int k = 0; k < 4; ++k)
     {
-      bool sameObject = g[k].x > 0.0;
+      // Not across a depth step from the far side: that line is the nearer surface's silhouette.
+      // Both tests are needed: a fold between a steep and a flat face also bends the depth.
+      bool farSide = step2 < -silhouetteThreshold && g[k].x < g0.x * (1.0 - 4.0 * silhouetteThreshold);
+      bool sameObject = g[k].x > 0.0 && !farSide;
 #if NPR_HAVE_OBJECT_IDS
       sameObject = sameObject && g[k].z == g0.z;
 #endif
