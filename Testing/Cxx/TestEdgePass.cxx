@@ -47,6 +47,13 @@
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWorldPointPicker.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkGPUVolumeRayCastMapper.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 
 #include <algorithm>
 #include <cmath>
@@ -515,6 +522,70 @@ int Layers()
             << " beside it\n";
   NPR_CHECK(redInside == 0, "the sphere behind the cube shows through it");
   NPR_CHECK(redOutside > 100, "the part of the sphere beside the cube should be drawn");
+  return nprTestResult();
+}
+
+// ---- A volume behind the surface is hidden by it; a 2D actor is drawn over everything ----
+int VolumeAndOverlay()
+{
+  Scene scene(400, 300);
+  const double origin[3] = { 0, 0, 0 };
+  AddCube(scene.Renderer, origin);
+  vtkNew<vtkImageData> block;
+  block->SetDimensions(16, 16, 16);
+  block->SetSpacing(0.2, 0.1, 0.1);
+  block->SetOrigin(-0.9, -0.75, -3.0); // x -0.9..2.1, behind the cube
+  block->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  std::fill_n(static_cast<unsigned char*>(block->GetScalarPointer()), 16 * 16 * 16, 200);
+  vtkNew<vtkGPUVolumeRayCastMapper> volumeMapper;
+  volumeMapper->SetInputData(block);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0, 1, 0, 0);
+  color->AddRGBPoint(255, 1, 0, 0);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0, 1.0);
+  opacity->AddPoint(255, 1.0);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(volumeMapper);
+  volume->GetProperty()->SetColor(color);
+  volume->GetProperty()->SetScalarOpacity(opacity);
+  volume->GetProperty()->ShadeOff();
+  scene.Renderer->AddVolume(volume);
+  vtkNew<vtkTextActor> label;
+  label->SetInput("NPR");
+  label->GetTextProperty()->SetFontSize(40);
+  label->GetTextProperty()->SetColor(0, 0, 1);
+  label->SetDisplayPosition(10, 10);
+  scene.Renderer->AddActor2D(label);
+  vtkCamera* camera = scene.Camera();
+  camera->SetPosition(0, 0, 5);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetClippingRange(1, 10);
+  auto image = scene.Render();
+  const double corner0[3] = { -0.5, -0.5, 0.5 }, corner1[3] = { 0.5, 0.5, 0.5 };
+  double a[2], b[2];
+  scene.Project(corner0, a);
+  scene.Project(corner1, b);
+  long long redOver = 0, redBeside = 0, blue = 0;
+  for (int y = 0; y < 300; ++y)
+  {
+    for (int x = 0; x < 400; ++x)
+    {
+      const int r = Value(image, x, y, 0), g = Value(image, x, y, 1), bl = Value(image, x, y, 2);
+      const bool inside = x > a[0] + 3 && x < b[0] - 3 && y > a[1] + 3 && y < b[1] - 3;
+      if (r > 150 && g < 80 && bl < 80)
+      {
+        (inside ? redOver : redBeside)++;
+      }
+      blue += (x < 150 && y < 70 && bl > 150 && r < 80) ? 1 : 0;
+    }
+  }
+  std::cout << "volume: " << redOver << " red pixels over the cube, " << redBeside
+            << " beside it; text: " << blue << " blue pixels\n";
+  NPR_CHECK(redOver == 0, "the volume behind the cube shows through it");
+  NPR_CHECK(redBeside > 1000, "the volume beside the cube should be drawn");
+  NPR_CHECK(blue > 100, "the 2D text actor should be drawn");
   return nprTestResult();
 }
 
@@ -1039,6 +1110,7 @@ int main(int argc, char* argv[])
     { "touching-objects", TouchingObjects },
     { "translucency", Translucency },
     { "layers", Layers },
+    { "volume-overlay", VolumeAndOverlay },
     { "picking", Picking },
     { "reuse", Reuse },
     { "channels", Channels },
