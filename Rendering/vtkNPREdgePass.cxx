@@ -73,9 +73,15 @@ struct LineFilter
   int Radius = 1;          // texels
   float CoverageLevel = 0.5f;
   float CoverageSlope = 1.0f;
+  double Width = -1.0; // the width the taps were computed for
 
   void Compute(double width)
   {
+    if (width == this->Width)
+    {
+      return;
+    }
+    this->Width = width;
     const double sigma = std::max(0.6, 0.3 * width);
     this->Radius = std::max(1, static_cast<int>(std::floor(0.5 * width + 0.5)));
     std::vector<double> g(this->Radius + 2, 0.0);
@@ -134,8 +140,10 @@ struct vtkNPREdgePass::Internals
   QuadProgram Composite;
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
   vtkTextureObject* LineTexture = nullptr;
+  // What the line image was computed from: the G-buffer's content and the detection settings
+  // (colours, width, anti-aliasing and CoverageOnly only change the composite).
   unsigned long LineImageVersion = 0;
-  vtkMTimeType LineImageTime = 0;
+  std::string LineImageSettings;
   bool LineImageValid = false;
   LineFilter Filter;
 };
@@ -192,9 +200,18 @@ void vtkNPREdgePass::Render(const vtkRenderState* state)
   const bool lines = this->GetDrawsLines();
 
   // ---- Step 1: the one-pixel line image, recomputed only when its inputs changed ----
+  std::ostringstream detectDefines;
+  detectDefines << "#define NPR_PERSPECTIVE " << (gbuffer->GetPerspective() ? 1 : 0)
+                << "\n#define NPR_SILHOUETTES " << (this->Silhouettes ? 1 : 0)
+                << "\n#define NPR_CREASES " << (this->Creases && gbuffer->GetWritesNormals() ? 1 : 0)
+                << "\n#define NPR_CONTOURS " << (this->Contours ? 1 : 0)
+                << "\n#define NPR_HAVE_OBJECT_IDS " << (gbuffer->GetWritesObjectIds() ? 1 : 0)
+                << "\n#define NPR_CONTOUR_SIDE " << this->ContourSide << "\n";
+  std::ostringstream detectSettings;
+  detectSettings << detectDefines.str() << this->SilhouetteThreshold << " " << this->CreaseAngle;
   if (lines &&
     (!internal.LineImageValid || internal.LineImageVersion != gbuffer->GetContentVersion() ||
-      internal.LineImageTime < this->GetMTime()))
+      internal.LineImageSettings != detectSettings.str()))
   {
     if (!internal.LineTexture)
     {
@@ -210,14 +227,8 @@ void vtkNPREdgePass::Render(const vtkRenderState* state)
     }
     internal.LineTexture->Resize(width, height);
 
-    std::ostringstream defines;
-    defines << "#define NPR_PERSPECTIVE " << (gbuffer->GetPerspective() ? 1 : 0)
-            << "\n#define NPR_SILHOUETTES " << (this->Silhouettes ? 1 : 0)
-            << "\n#define NPR_CREASES " << (this->Creases && gbuffer->GetWritesNormals() ? 1 : 0)
-            << "\n#define NPR_CONTOURS " << (this->Contours ? 1 : 0)
-            << "\n#define NPR_HAVE_OBJECT_IDS " << (gbuffer->GetWritesObjectIds() ? 1 : 0)
-            << "\n#define NPR_CONTOUR_SIDE " << this->ContourSide << "\n";
-    vtkShaderProgram* program = internal.Detect.Ready(window, vtkNPREdgeDetectFS, defines.str());
+    vtkShaderProgram* program =
+      internal.Detect.Ready(window, vtkNPREdgeDetectFS, detectDefines.str());
     if (!program)
     {
       vtkErrorMacro("the line detection shader did not compile");
@@ -258,7 +269,7 @@ void vtkNPREdgePass::Render(const vtkRenderState* state)
 
     internal.LineImageValid = true;
     internal.LineImageVersion = gbuffer->GetContentVersion();
-    internal.LineImageTime = this->GetMTime();
+    internal.LineImageSettings = detectSettings.str();
     ++this->NumberOfLineImageUpdates;
   }
 

@@ -146,7 +146,7 @@ public:
 
   /**
    * Number of times the line image was computed from the G-buffer (it is reused while the
-   * G-buffer and the settings are unchanged).
+   * G-buffer and the detection settings are unchanged: line types, thresholds, contour side).
    */
   vtkGetMacro(NumberOfLineImageUpdates, int);
 
