@@ -2,6 +2,7 @@
 
 #include "vtkMath.h"
 #include "vtkNPRGBufferPass.h"
+#include "vtkNPRQuadProgram.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -18,6 +19,7 @@
 
 #include "vtkNPREdgeCompositeFS.h"
 #include "vtkNPREdgeDetectFS.h"
+#include "vtkNPRLineColor.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,45 +29,6 @@
 
 namespace
 {
-// A full-screen quad program built from one of the pass's fragment shaders and a set of
-// compile-time defines (llvmpipe runs both sides of uniform branches, so variants are compiled).
-struct QuadProgram
-{
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
-  std::string Defines;
-
-  vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window, const char* source, const std::string& defines)
-  {
-    if (this->Quad && defines != this->Defines)
-    {
-      this->Quad.reset();
-    }
-    if (!this->Quad)
-    {
-      std::string fragment = source;
-      vtkShaderProgram::Substitute(fragment, "//NPR::Defines", defines);
-      this->Quad.reset(new vtkOpenGLQuadHelper(window,
-        vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fragment.c_str(), ""));
-      this->Defines = defines;
-    }
-    else
-    {
-      window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-    }
-    vtkShaderProgram* program = this->Quad->Program;
-    return program && program->GetCompiled() ? program : nullptr;
-  }
-
-  void Release(vtkWindow* window)
-  {
-    if (this->Quad)
-    {
-      this->Quad->ReleaseGraphicsResources(window);
-      this->Quad.reset();
-    }
-  }
-};
-
 // Gaussian filter of the line image as bilinear taps, and the coverage mapping of its result.
 struct LineFilter
 {
@@ -136,8 +99,10 @@ struct LineFilter
 
 struct vtkNPREdgePass::Internals
 {
-  QuadProgram Detect;
-  QuadProgram Composite;
+  vtkNPRQuadProgram Detect;
+  vtkNPRQuadProgram Composite; // lines over the colour, or the mask
+  vtkNPRQuadProgram Coverage;  // each type's coverage and depth, for vtkNPRSketchPass
+  std::string CompositeSource;
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
   vtkTextureObject* LineTexture = nullptr;
   // What the line image was computed from: the G-buffer's content and the detection settings
@@ -182,6 +147,16 @@ double vtkNPREdgePass::GetEffectiveLineWidth(vtkRenderer* renderer) const
 }
 
 void vtkNPREdgePass::Render(const vtkRenderState* state)
+{
+  this->Draw(state, this->CoverageOnly ? OutputMask : OutputComposite);
+}
+
+void vtkNPREdgePass::RenderLineCoverage(const vtkRenderState* state)
+{
+  this->Draw(state, OutputLineCoverage);
+}
+
+void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
 {
   vtkOpenGLClearErrorMacro();
   this->NumberOfRenderedProps = 0;
@@ -262,7 +237,7 @@ void vtkNPREdgePass::Render(const vtkRenderState* state)
     glState->vtkglClear(GL_COLOR_BUFFER_BIT);
     glState->vtkglEnable(GL_SCISSOR_TEST);
     glState->vtkglScissor(rect[0], rect[1], rect[2] - rect[0] + 1, rect[3] - rect[1] + 1);
-    internal.Detect.Quad->Render();
+    internal.Detect.Render();
     internal.Framebuffer->RemoveColorAttachments(1);
     glState->PopFramebufferBindings();
     geometry->Deactivate();
@@ -280,10 +255,15 @@ void vtkNPREdgePass::Render(const vtkRenderState* state)
   std::ostringstream defines;
   defines << "#define NPR_LINES " << (lines ? 1 : 0) << "\n#define NPR_TAPS " << taps
           << "\n#define NPR_RADIUS " << internal.Filter.Radius + 1 << "\n#define NPR_ANTIALIAS "
-          << (this->AntiAliasing ? 1 : 0) << "\n#define NPR_COVERAGE_ONLY " << (this->CoverageOnly ? 1 : 0)
-          << "\n";
+          << (this->AntiAliasing ? 1 : 0) << "\n#define NPR_OUTPUT " << output << "\n";
+  if (internal.CompositeSource.empty())
+  {
+    internal.CompositeSource = vtkNPREdgeCompositeFS;
+    vtkShaderProgram::Substitute(internal.CompositeSource, "//NPR::LineColor", vtkNPRLineColor);
+  }
+  vtkNPRQuadProgram& composite = output == OutputLineCoverage ? internal.Coverage : internal.Composite;
   vtkShaderProgram* program =
-    internal.Composite.Ready(window, vtkNPREdgeCompositeFS, defines.str());
+    composite.Ready(window, internal.CompositeSource, defines.str());
   if (!program)
   {
     vtkErrorMacro("the line composite shader did not compile");
@@ -310,7 +290,7 @@ void vtkNPREdgePass::Render(const vtkRenderState* state)
   }
   int viewportWidth, viewportHeight, origin[2];
   renderer->GetTiledSizeAndOrigin(&viewportWidth, &viewportHeight, origin, origin + 1);
-  if (state->GetFrameBuffer())
+  if (state->GetFrameBuffer() || output == OutputLineCoverage)
   {
     origin[0] = origin[1] = 0;
   }
@@ -325,7 +305,7 @@ void vtkNPREdgePass::Render(const vtkRenderState* state)
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(glState);
   // Outside the props' projected bounds there is only background: nothing to write there.
   const int* rect = gbuffer->GetContentRectangle();
-  if (this->CoverageOnly)
+  if (output == OutputMask)
   {
     glState->vtkglDisable(GL_SCISSOR_TEST); // a mask is black everywhere else
   }
@@ -335,13 +315,23 @@ void vtkNPREdgePass::Render(const vtkRenderState* state)
     glState->vtkglScissor(origin[0] + rect[0], origin[1] + rect[1], rect[2] - rect[0] + 1,
       rect[3] - rect[1] + 1);
   }
-  glState->vtkglEnable(GL_DEPTH_TEST);
-  glState->vtkglDepthFunc(GL_LEQUAL);
-  glState->vtkglDepthMask(GL_TRUE);
-  glState->vtkglEnable(GL_BLEND);
-  glState->vtkglBlendFuncSeparate(
-    GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  internal.Composite.Quad->Render();
+  if (output == OutputLineCoverage)
+  {
+    // Plain values into the caller's target, which has no depth buffer.
+    glState->vtkglDisable(GL_DEPTH_TEST);
+    glState->vtkglDepthMask(GL_FALSE);
+    glState->vtkglDisable(GL_BLEND);
+  }
+  else
+  {
+    glState->vtkglEnable(GL_DEPTH_TEST);
+    glState->vtkglDepthFunc(GL_LEQUAL);
+    glState->vtkglDepthMask(GL_TRUE);
+    glState->vtkglEnable(GL_BLEND);
+    glState->vtkglBlendFuncSeparate(
+      GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  composite.Render();
 
   color->Deactivate();
   depth->Deactivate();
@@ -358,6 +348,7 @@ void vtkNPREdgePass::ReleaseGraphicsResources(vtkWindow* window)
   Internals& internal = *this->Internal;
   internal.Detect.Release(window);
   internal.Composite.Release(window);
+  internal.Coverage.Release(window);
   if (internal.LineTexture)
   {
     internal.LineTexture->ReleaseGraphicsResources(window);

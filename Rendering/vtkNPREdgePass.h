@@ -140,6 +140,16 @@ public:
   ///@}
 
   /**
+   * For passes built on this one (vtkNPRSketchPass): computes the lines as Render() does but
+   * writes, into the current framebuffer (of the G-buffer's size, from its origin), each type's
+   * coverage in [0, 1] (r silhouettes, g creases, b contours) and in alpha the depth the lines
+   * are drawn at: the surface's, or for a line reaching past a surface onto the background, the
+   * nearest surface's; 1 elsewhere. Only the G-buffer's content rectangle is written. Nothing is
+   * drawn after a picking render or when the G-buffer is empty.
+   */
+  void RenderLineCoverage(const vtkRenderState* state);
+
+  /**
    * True when some line type is on.
    */
   bool GetDrawsLines() const { return this->Silhouettes || this->Creases || this->Contours; }
@@ -153,6 +163,14 @@ public:
 protected:
   vtkNPREdgePass();
   ~vtkNPREdgePass() override;
+
+  enum Outputs
+  {
+    OutputComposite = 0,   // lines over the shaded colour, with the depth sprite
+    OutputMask = 1,        // CoverageOnly
+    OutputLineCoverage = 2 // RenderLineCoverage()
+  };
+  void Draw(const vtkRenderState* state, int output);
 
   vtkNPRGBufferPass* GBufferPass = nullptr;
   bool Silhouettes = true;

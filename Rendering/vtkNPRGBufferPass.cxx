@@ -186,6 +186,12 @@ vtkNPRGBufferSignature TakeSignature(
 }
 }
 
+vtkMTimeType vtkNPRGBufferPass::GetSettingsTime()
+{
+  // The delegate's settings change the image too (vtkNPRToonPass: bands, table).
+  return std::max(this->GetMTime(), this->DelegatePass ? this->DelegatePass->GetMTime() : 0);
+}
+
 bool vtkNPRGBufferPass::SceneUnchanged(const vtkRenderState* state, int width, int height)
 {
   if (!this->Internal->Valid || !this->ReuseUnchangedFrames || !this->HasContent)
@@ -193,7 +199,7 @@ bool vtkNPRGBufferPass::SceneUnchanged(const vtkRenderState* state, int width, i
     return false;
   }
   return TakeSignature(state, width, height, this->WritesNormals, this->WritesObjectIds,
-           this->GetMTime()) == this->Internal->Last;
+           this->GetSettingsTime()) == this->Internal->Last;
 }
 
 void vtkNPRGBufferPass::ComputeContentRectangle(const vtkRenderState* state, int width, int height)
@@ -385,7 +391,7 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
 
   this->HasContent = true;
   this->Internal->Last = TakeSignature(
-    state, width, height, this->WritesNormals, this->WritesObjectIds, this->GetMTime());
+    state, width, height, this->WritesNormals, this->WritesObjectIds, this->GetSettingsTime());
   this->Internal->Valid = true;
   ++this->NumberOfGeometryDraws;
   ++this->ContentVersion;

@@ -22,8 +22,8 @@
  * draw colour and depth only; they appear as background to the effects.
  *
  * Reuse: when neither the props (their MTime and redraw MTime, which includes their mapper and
- * its input), the camera, the lights, the renderer's lighting settings, the size nor this pass
- * changed since the last frame, the geometry is not drawn again and the last G-buffer is kept
+ * its input), the camera, the lights, the renderer's lighting settings, the size, this pass nor
+ * its delegate changed since the last frame, the geometry is not drawn again and the last G-buffer is kept
  * (ReuseUnchangedFrames, on by default). GetNumberOfGeometryDraws() counts the draws.
  *
  * Picking: VTK 9.1 does not call the hardware selector once a renderer has a pass, so during a
@@ -140,6 +140,7 @@ protected:
 
   void AllocateBuffers(vtkOpenGLRenderWindow* window, int width, int height, int components);
   bool SceneUnchanged(const vtkRenderState* state, int width, int height);
+  vtkMTimeType GetSettingsTime();
   void ComputeContentRectangle(const vtkRenderState* state, int width, int height);
 
   vtkRenderPass* DelegatePass = nullptr;

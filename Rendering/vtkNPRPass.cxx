@@ -3,6 +3,8 @@
 #include "vtkDualDepthPeelingPass.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
+#include "vtkNPRSketchPass.h"
+#include "vtkNPRToonPass.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
@@ -12,6 +14,8 @@
 #include "vtkRenderer.h"
 #include "vtkSequencePass.h"
 #include "vtkTranslucentPass.h"
+
+#include <cstring>
 
 vtkStandardNewMacro(vtkNPRPass);
 
@@ -23,11 +27,24 @@ vtkNPRPass::vtkNPRPass()
   this->GBufferPass->SetDelegatePass(this->OpaquePass);
   this->EdgePass = vtkNPREdgePass::New();
   this->EdgePass->SetGBufferPass(this->GBufferPass);
+  this->ToonPass = vtkNPRToonPass::New();
+  this->ToonPass->SetDelegatePass(this->OpaquePass);
+  this->FlatPass = vtkNPRToonPass::New();
+  this->FlatPass->SetDelegatePass(this->OpaquePass);
+  this->FlatPass->SetNumberOfBands(1);
+  this->FlatPass->SetSpecular(false);
+  this->SketchPass = vtkNPRSketchPass::New();
+  this->SketchPass->SetEdgePass(this->EdgePass);
   this->EdgesSequence = vtkSequencePass::New();
   vtkNew<vtkRenderPassCollection> passes;
   passes->AddItem(this->GBufferPass);
   passes->AddItem(this->EdgePass);
   this->EdgesSequence->SetPasses(passes);
+  this->SketchSequence = vtkSequencePass::New();
+  vtkNew<vtkRenderPassCollection> sketchPasses;
+  sketchPasses->AddItem(this->GBufferPass);
+  sketchPasses->AddItem(this->SketchPass);
+  this->SketchSequence->SetPasses(sketchPasses);
   this->TranslucentPass = vtkTranslucentPass::New();
   this->DepthPeelingPass = vtkDualDepthPeelingPass::New();
   this->DepthPeelingPass->SetTranslucentPass(this->TranslucentPass);
@@ -37,6 +54,10 @@ vtkNPRPass::~vtkNPRPass()
 {
   this->RenderStepsPass->Delete();
   this->EdgesSequence->Delete();
+  this->SketchSequence->Delete();
+  this->SketchPass->Delete();
+  this->ToonPass->Delete();
+  this->FlatPass->Delete();
   this->EdgePass->Delete();
   this->GBufferPass->Delete();
   this->OpaquePass->Delete();
@@ -52,23 +73,54 @@ const char* vtkNPRPass::GetStyleName(int style)
       return "shaded";
     case EDGES:
       return "edges";
+    case TOON:
+      return "toon";
+    case TOON_EDGES:
+      return "toon+edges";
+    case SKETCH:
+      return "sketch";
     default:
       return "unknown";
   }
 }
 
+int vtkNPRPass::GetStyleFromName(const char* name)
+{
+  for (int style = SHADED; name && style <= SKETCH; ++style)
+  {
+    if (strcmp(name, GetStyleName(style)) == 0)
+    {
+      return style;
+    }
+  }
+  return -1;
+}
+
 void vtkNPRPass::Render(const vtkRenderState* state)
 {
   vtkRenderer* renderer = state->GetRenderer();
-  if (this->Style == SHADED)
+  this->GBufferPass->SetNormalsRequested(this->EdgePass->GetCreases());
+  this->GBufferPass->SetObjectIdsRequested(this->EdgePass->GetContours());
+  switch (this->Style)
   {
-    this->RenderStepsPass->SetOpaquePass(this->OpaquePass);
-  }
-  else
-  {
-    this->GBufferPass->SetNormalsRequested(this->EdgePass->GetCreases());
-    this->GBufferPass->SetObjectIdsRequested(this->EdgePass->GetContours());
-    this->RenderStepsPass->SetOpaquePass(this->EdgesSequence);
+    case SHADED:
+      this->RenderStepsPass->SetOpaquePass(this->OpaquePass);
+      break;
+    case TOON:
+      this->RenderStepsPass->SetOpaquePass(this->ToonPass);
+      break;
+    case TOON_EDGES:
+      this->GBufferPass->SetDelegatePass(this->ToonPass);
+      this->RenderStepsPass->SetOpaquePass(this->EdgesSequence);
+      break;
+    case SKETCH:
+      this->GBufferPass->SetDelegatePass(this->SketchToonShading ? this->ToonPass : this->FlatPass);
+      this->RenderStepsPass->SetOpaquePass(this->SketchSequence);
+      break;
+    default: // EDGES
+      this->GBufferPass->SetDelegatePass(this->OpaquePass);
+      this->RenderStepsPass->SetOpaquePass(this->EdgesSequence);
+      break;
   }
   if (renderer->GetUseDepthPeeling())
   {
@@ -89,6 +141,9 @@ void vtkNPRPass::ReleaseGraphicsResources(vtkWindow* window)
   this->RenderStepsPass->ReleaseGraphicsResources(window);
   this->GBufferPass->ReleaseGraphicsResources(window);
   this->EdgePass->ReleaseGraphicsResources(window);
+  this->ToonPass->ReleaseGraphicsResources(window);
+  this->FlatPass->ReleaseGraphicsResources(window);
+  this->SketchPass->ReleaseGraphicsResources(window);
   this->OpaquePass->ReleaseGraphicsResources(window);
   this->DepthPeelingPass->ReleaseGraphicsResources(window);
   this->TranslucentPass->ReleaseGraphicsResources(window);
@@ -100,6 +155,11 @@ void vtkNPRPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Style: " << GetStyleName(this->Style) << "\n";
   os << indent << "GBufferPass:\n";
   this->GBufferPass->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "SketchToonShading: " << this->SketchToonShading << "\n";
   os << indent << "EdgePass:\n";
   this->EdgePass->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "ToonPass:\n";
+  this->ToonPass->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "SketchPass:\n";
+  this->SketchPass->PrintSelf(os, indent.GetNextIndent());
 }

@@ -5,17 +5,24 @@
  * Builds and owns the whole chain of passes a renderer needs:
  *
  *   vtkRenderStepsPass: camera, lights,
- *     opaque: vtkNPRGBufferPass (drawing a vtkOpaquePass) then vtkNPREdgePass,
+ *     opaque, by style:
+ *       SHADED      vtkOpaquePass (VTK's own drawing, the baseline),
+ *       EDGES       vtkNPRGBufferPass (drawing a vtkOpaquePass), then vtkNPREdgePass,
+ *       TOON        vtkNPRToonPass (drawing a vtkOpaquePass) straight into the window,
+ *       TOON_EDGES  vtkNPRGBufferPass (drawing the toon pass), then vtkNPREdgePass,
+ *       SKETCH      vtkNPRGBufferPass (drawing flat colours: a one-band vtkNPRToonPass, or the
+ *                   toon pass with SketchToonShading), then vtkNPRSketchPass,
  *     translucent: vtkTranslucentPass, or vtkDualDepthPeelingPass when the renderer's
  *                  UseDepthPeeling is on (its MaximumNumberOfPeels and OcclusionRatio apply),
  *     volumes, overlay.
  *
- * The edge pass writes a depth sprite, so everything drawn after the opaque step (translucent
- * props, volumes, 2D actors, renderers on higher layers) composites as with VTK's own chain.
+ * The edge and sketch passes write a depth sprite, so everything drawn after the opaque step
+ * (translucent props, volumes, 2D actors, renderers on higher layers) composites as with VTK's
+ * own chain. Translucent props are shaded as usual in every style.
  *
- * Styles: EDGES (default: lines on the shaded surfaces) and SHADED (VTK's plain opaque step,
- * no G-buffer). The effect passes are exposed for tuning (GetEdgePass(), GetGBufferPass()); the
- * G-buffer channels follow what the enabled lines need.
+ * The effect passes are exposed for tuning (GetEdgePass(), GetToonPass(), GetSketchPass(),
+ * GetGBufferPass()); the G-buffer channels follow what the enabled lines need. The sketch uses
+ * the edge pass's line settings (types, thresholds, width, colours).
  *
  * Renderer flags that VTK ignores once a pass is set (UseFXAA, UseSSAO, UseShadows) stay ignored;
  * UseDepthPeeling is honoured here.
@@ -31,6 +38,8 @@
 class vtkDualDepthPeelingPass;
 class vtkNPREdgePass;
 class vtkNPRGBufferPass;
+class vtkNPRSketchPass;
+class vtkNPRToonPass;
 class vtkOpaquePass;
 class vtkRenderStepsPass;
 class vtkSequencePass;
@@ -49,18 +58,37 @@ public:
   enum Styles
   {
     SHADED = 0,
-    EDGES = 1
+    EDGES = 1,
+    TOON = 2,
+    TOON_EDGES = 3,
+    SKETCH = 4
   };
 
   ///@{
   /**
-   * The style (default EDGES).
+   * The style (default EDGES). Names: shaded, edges, toon, toon+edges, sketch.
    */
-  vtkSetClampMacro(Style, int, SHADED, EDGES);
+  vtkSetClampMacro(Style, int, SHADED, SKETCH);
   vtkGetMacro(Style, int);
   void SetStyleToShaded() { this->SetStyle(SHADED); }
   void SetStyleToEdges() { this->SetStyle(EDGES); }
+  void SetStyleToToon() { this->SetStyle(TOON); }
+  void SetStyleToToonEdges() { this->SetStyle(TOON_EDGES); }
+  void SetStyleToSketch() { this->SetStyle(SKETCH); }
   static const char* GetStyleName(int style);
+  /**
+   * The style of a name (as GetStyleName() gives it), -1 for an unknown name.
+   */
+  static int GetStyleFromName(const char* name);
+  ///@}
+
+  ///@{
+  /**
+   * SKETCH: sketch the toon pass's bands instead of flat colours (off by default).
+   */
+  vtkSetMacro(SketchToonShading, bool);
+  vtkGetMacro(SketchToonShading, bool);
+  vtkBooleanMacro(SketchToonShading, bool);
   ///@}
 
   ///@{
@@ -69,6 +97,8 @@ public:
    */
   vtkGetObjectMacro(GBufferPass, vtkNPRGBufferPass);
   vtkGetObjectMacro(EdgePass, vtkNPREdgePass);
+  vtkGetObjectMacro(ToonPass, vtkNPRToonPass);
+  vtkGetObjectMacro(SketchPass, vtkNPRSketchPass);
   vtkGetObjectMacro(RenderStepsPass, vtkRenderStepsPass);
   ///@}
 
@@ -77,11 +107,16 @@ protected:
   ~vtkNPRPass() override;
 
   int Style = EDGES;
+  bool SketchToonShading = false;
   vtkRenderStepsPass* RenderStepsPass;
   vtkOpaquePass* OpaquePass;
   vtkNPRGBufferPass* GBufferPass;
   vtkNPREdgePass* EdgePass;
+  vtkNPRToonPass* ToonPass;
+  vtkNPRToonPass* FlatPass; // one band, no highlight: the flat colours a sketch fills with
+  vtkNPRSketchPass* SketchPass;
   vtkSequencePass* EdgesSequence;
+  vtkSequencePass* SketchSequence;
   vtkTranslucentPass* TranslucentPass;
   vtkDualDepthPeelingPass* DepthPeelingPass;
 

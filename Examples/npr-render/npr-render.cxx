@@ -13,6 +13,8 @@
 #include "vtkNPRGBufferPass.h"
 #include "vtkNPRModelReader.h"
 #include "vtkNPRPass.h"
+#include "vtkNPRSketchPass.h"
+#include "vtkNPRToonPass.h"
 #include "vtkNPRRenderWindowFactory.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -43,7 +45,7 @@
 
 namespace
 {
-const char* const Styles[] = { "shaded", "edges" };
+const char* const Styles[] = { "shaded", "edges", "toon", "toon+edges", "sketch" };
 
 struct UsageError : std::runtime_error
 {
@@ -123,6 +125,18 @@ struct Options
   bool AntiAliasing = true;
   std::string EdgeMask;
   std::string CompareStyle;
+
+  // --style toon, toon+edges (and sketch with --sketch-toon)
+  int ToonBands = 3;
+  bool ToonPerVertex = false;
+
+  // --style sketch
+  double Uncertainty = 3.0;
+  int NoiseSeed = 1;
+  double NoiseFrequency = 2.0;
+  bool Paper = false;
+  double PaperColor[3] = { 1.0, 0.98, 0.92 };
+  bool SketchToon = false;
 };
 
 void PrintHelp()
@@ -135,7 +149,7 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
 
   -o, --output FILE        PNG to write
   --size WxH               image size in pixels (default 1024x768)
-  --style NAME             shaded (default) or edges
+  --style NAME             shaded (default), edges, toon, toon+edges or sketch
   --compare-style NAME     with --frames: also time this style, frames interleaved with
                            the main style's in the same window; print both and the ratio
   --backend NAME           egl, osmesa or x (default: NPR_BACKEND, else egl;
@@ -149,7 +163,7 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
   --frames N               time N frames after a warm-up; print one JSON line
   -h, --help               this text
 
-Lines (--style edges):
+Lines (--style edges, toon+edges and sketch):
   --lines LIST             line types drawn, comma separated: silhouettes, creases,
                            contours, or none (default silhouettes,creases,contours)
   --silhouette-threshold X relative depth step that makes a silhouette (default 0.005)
@@ -160,7 +174,20 @@ Lines (--style edges):
   --silhouette-color COLOR, --crease-color COLOR, --contour-color COLOR
   --no-antialias           lines without anti-aliasing
   --edge-mask FILE         also write the line coverage alone: white on black, 8-bit
-                           grey PNG of the render's size
+                           grey PNG of the render's size (edges, toon+edges)
+
+Toon shading (--style toon, toon+edges):
+  --toon-bands N           number of equal light bands, 1..64 (default 3)
+  --toon-per-vertex        light at the vertices, interpolated, then banded (default:
+                           per pixel)
+
+Sketch (--style sketch):
+  --uncertainty PX         largest displacement of lines and fills in pixels, 0..32
+                           (default 3; 0 draws the exact lines on flat colours)
+  --noise-seed N           seed of the noise, 0..2147483647 (default 1)
+  --noise-frequency F      noise cells per 100 pixels, 0.05..25 (default 2)
+  --paper-color COLOR      draw on paper of this colour instead of the background
+  --sketch-toon            fill with the toon bands (--toon-bands) instead of flat colours
 )";
 }
 
@@ -403,6 +430,35 @@ Options ParseOptions(int argc, char* argv[])
     {
       options.EdgeMask = value();
     }
+    else if (arg == "--toon-bands")
+    {
+      options.ToonBands = ParseInteger(arg, value(), 1, 64);
+    }
+    else if (arg == "--toon-per-vertex")
+    {
+      options.ToonPerVertex = true;
+    }
+    else if (arg == "--uncertainty")
+    {
+      options.Uncertainty = ParseRange(arg, value(), 0.0, 32.0);
+    }
+    else if (arg == "--noise-seed")
+    {
+      options.NoiseSeed = ParseInteger(arg, value(), 0, 2147483647);
+    }
+    else if (arg == "--noise-frequency")
+    {
+      options.NoiseFrequency = ParseRange(arg, value(), 0.05, 25.0);
+    }
+    else if (arg == "--paper-color")
+    {
+      ParseColor(arg, value(), options.PaperColor);
+      options.Paper = true;
+    }
+    else if (arg == "--sketch-toon")
+    {
+      options.SketchToon = true;
+    }
     else if (arg.size() > 1 && arg[0] == '-')
     {
       throw UsageError("unknown option '" + arg + "' (see --help)");
@@ -430,9 +486,9 @@ Options ParseOptions(int argc, char* argv[])
   {
     throw UsageError("--compare-style needs --frames N");
   }
-  if (!options.EdgeMask.empty() && options.Style != "edges")
+  if (!options.EdgeMask.empty() && options.Style != "edges" && options.Style != "toon+edges")
   {
-    throw UsageError("--edge-mask needs --style edges");
+    throw UsageError("--edge-mask needs --style edges or toon+edges");
   }
   return options;
 }
@@ -489,7 +545,7 @@ void WriteWindowPNG(vtkRenderWindow* window, const std::string& path, bool grey)
 vtkSmartPointer<vtkNPRPass> MakePass(const Options& options)
 {
   auto pass = vtkSmartPointer<vtkNPRPass>::New();
-  pass->SetStyle(options.Style == "edges" ? vtkNPRPass::EDGES : vtkNPRPass::SHADED);
+  pass->SetStyle(vtkNPRPass::GetStyleFromName(options.Style.c_str()));
   vtkNPREdgePass* edges = pass->GetEdgePass();
   edges->SetSilhouettes(options.Silhouettes);
   edges->SetCreases(options.Creases);
@@ -502,6 +558,16 @@ vtkSmartPointer<vtkNPRPass> MakePass(const Options& options)
   edges->SetCreaseColor(options.CreaseColor);
   edges->SetContourColor(options.ContourColor);
   edges->SetAntiAliasing(options.AntiAliasing);
+  vtkNPRToonPass* toon = pass->GetToonPass();
+  toon->SetNumberOfBands(options.ToonBands);
+  toon->SetPerVertex(options.ToonPerVertex);
+  vtkNPRSketchPass* sketch = pass->GetSketchPass();
+  sketch->SetUncertainty(options.Uncertainty);
+  sketch->SetNoiseSeed(static_cast<unsigned int>(options.NoiseSeed));
+  sketch->SetNoiseFrequency(options.NoiseFrequency);
+  sketch->SetPaper(options.Paper);
+  sketch->SetPaperColor(options.PaperColor);
+  pass->SetSketchToonShading(options.SketchToon);
   return pass;
 }
 

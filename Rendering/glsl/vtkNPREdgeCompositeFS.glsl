@@ -7,6 +7,9 @@
 // width w is then 0.5 + (P - P(w/2)) / |P'(w/2)|, which is clamp(w/2 + 0.5 - d, 0, 1) near the
 // line's border: a line of the requested width with one pixel of anti-aliasing, and no staircase
 // since the filter averages the staircase of the one-pixel line.
+//
+// Outputs (NPR_OUTPUT): 0 lines over the colour; 1 the coverage alone as grey (an edge mask);
+// 2 each type's coverage and the depth the lines are drawn at (for vtkNPRSketchPass).
 //NPR::Defines
 in vec2 texCoord;
 uniform sampler2D lineTexture;  // linear filtering
@@ -17,10 +20,23 @@ uniform vec2 texelSize;
 uniform ivec2 viewportOrigin; // of the renderer in the window
 uniform float coverageLevel;    // P(w/2)
 uniform float coverageSlope;    // |P'(w/2)|
-uniform vec3 silhouetteColor;
-uniform vec3 creaseColor;
-uniform vec3 contourColor;
+//NPR::LineColor
 //VTK::Output::Dec
+
+// Lines reaching past a surface onto the background belong to the nearest surface around.
+float nprNearestDepth(ivec2 p)
+{
+  ivec2 size = textureSize(depthTexture, 0);
+  float nearest = 1.0;
+  for (int r = 1; r <= NPR_RADIUS; ++r)
+  {
+    nearest = min(nearest, texelFetch(depthTexture, clamp(p + ivec2(r, 0), ivec2(0), size - 1), 0).r);
+    nearest = min(nearest, texelFetch(depthTexture, clamp(p - ivec2(r, 0), ivec2(0), size - 1), 0).r);
+    nearest = min(nearest, texelFetch(depthTexture, clamp(p + ivec2(0, r), ivec2(0), size - 1), 0).r);
+    nearest = min(nearest, texelFetch(depthTexture, clamp(p - ivec2(0, r), ivec2(0), size - 1), 0).r);
+  }
+  return nearest;
+}
 
 void main()
 {
@@ -39,42 +55,29 @@ void main()
 #endif
   ivec2 p = ivec2(gl_FragCoord.xy) - viewportOrigin;
   float depth = texelFetch(depthTexture, p, 0).r;
-#if NPR_COVERAGE_ONLY
+  bool onLine = max(coverage.r, max(coverage.g, coverage.b)) > 0.0;
+#if NPR_OUTPUT == 1
   gl_FragData[0] = vec4(vec3(max(coverage.r, max(coverage.g, coverage.b))), 1.0);
   gl_FragDepth = depth;
-  return;
-#endif
+#elif NPR_OUTPUT == 2
+  gl_FragData[0] = vec4(coverage, depth < 1.0 || !onLine ? depth : nprNearestDepth(p));
+#else
   if (depth < 1.0)
   {
-    // On a surface: creases, then contours, then silhouettes on top.
-    vec3 color = texelFetch(colorTexture, p, 0).rgb;
-    color = mix(color, creaseColor, coverage.g);
-    color = mix(color, contourColor, coverage.b);
-    color = mix(color, silhouetteColor, coverage.r);
-    gl_FragData[0] = vec4(color, 1.0);
+    // On a surface.
+    gl_FragData[0] = vec4(nprLinesOver(texelFetch(colorTexture, p, 0).rgb, coverage), 1.0);
     gl_FragDepth = depth;
   }
   else
   {
     // Background: only the parts of wide or anti-aliased lines that reach past a surface, blended
     // over the window's background at the depth of the nearest surface they belong to.
-    if (max(coverage.r, max(coverage.g, coverage.b)) <= 0.0)
+    if (!onLine)
     {
       discard;
     }
-    vec4 color = vec4(creaseColor, 1.0) * coverage.g;
-    color = mix(color, vec4(contourColor, 1.0), coverage.b);
-    color = mix(color, vec4(silhouetteColor, 1.0), coverage.r);
-    ivec2 size = textureSize(depthTexture, 0);
-    float nearest = 1.0;
-    for (int r = 1; r <= NPR_RADIUS; ++r)
-    {
-      nearest = min(nearest, texelFetch(depthTexture, clamp(p + ivec2(r, 0), ivec2(0), size - 1), 0).r);
-      nearest = min(nearest, texelFetch(depthTexture, clamp(p - ivec2(r, 0), ivec2(0), size - 1), 0).r);
-      nearest = min(nearest, texelFetch(depthTexture, clamp(p + ivec2(0, r), ivec2(0), size - 1), 0).r);
-      nearest = min(nearest, texelFetch(depthTexture, clamp(p - ivec2(0, r), ivec2(0), size - 1), 0).r);
-    }
-    gl_FragData[0] = vec4(color.rgb / max(color.a, 1e-6), color.a);
-    gl_FragDepth = nearest;
+    gl_FragData[0] = nprLinesAlone(coverage);
+    gl_FragDepth = nprNearestDepth(p);
   }
+#endif
 }

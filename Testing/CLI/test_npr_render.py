@@ -126,6 +126,24 @@ thin = sum(v for v in read_png(out("thin.png"))[3]) / 255.0
 check(rc == 0 and rc2 == 0 and 2.5 * thin < wide < 5.5 * thin,
       "--line-width 4 draws about 4 times the coverage of --line-width 1 (%.0f vs %.0f)" % (wide, thin))
 
+# --style toon, toon+edges and sketch: each renders and differs from the others; the sketch is the
+# same for the same seed and differs for another seed.
+styles = {}
+for style, extra in (("shaded", []), ("toon", ["--toon-bands", "2"]), ("toon+edges", []),
+                     ("sketch", ["--noise-seed", "7"]), ("sketch", ["--noise-seed", "7", "--paper-color", "#fff8e0"]),
+                     ("sketch", ["--noise-seed", "8"]), ("sketch", ["--noise-seed", "7", "--uncertainty", "0"])):
+    name = "%s%s.png" % (style, "".join(extra).replace("#", "").replace("-", "_"))
+    rc, _, err = run(rotor, "--style", style, "--size", "160x120", "--azimuth", "30", "-o", out(name), *extra)
+    check(rc == 0, "--style %s %s renders (%s)" % (style, " ".join(extra), err.strip()))
+    styles[name] = read_png(out(name))[3]
+rc, _, err = run(rotor, "--style", "sketch", "--noise-seed", "7", "--size", "160x120", "--azimuth", "30",
+                 "-o", out("sketch_again.png"))
+check(read_png(out("sketch_again.png"))[3] == styles["sketch__noise_seed7.png"], "the same seed gives the same sketch")
+names = sorted(styles)
+for i, a in enumerate(names):
+    for b in names[i + 1:]:
+        check(styles[a] != styles[b], "%s and %s differ" % (a, b))
+
 # Errors: one line on stderr that names the problem, non-zero exit, no crash.
 errors = [
     ([os.path.join(models, "missing.ply"), "-o", out("x.png")], "no such file"),
@@ -134,14 +152,20 @@ errors = [
     ([os.path.join(models, "bad_keyword.off"), "-o", out("x.png")], "is no OFF keyword"),
     ([os.path.join(models, "bad.gltf"), "-o", out("x.png")], "malformed or unreadable gltf"),
     ([os.path.join(models, "cube.xyz"), "-o", out("x.png")], "unknown model format"),
-    ([rotor, "--style", "watercolour", "-o", out("x.png")], "unknown style 'watercolour' (valid styles: shaded, edges)"),
+    ([rotor, "--style", "watercolour", "-o", out("x.png")], "unknown style 'watercolour' (valid styles: shaded, edges, toon, toon+edges, sketch)"),
+    ([rotor, "--style", "toon", "--toon-bands", "0", "-o", out("x.png")], "--toon-bands expects an integer in 1..64"),
+    ([rotor, "--style", "sketch", "--uncertainty", "40", "-o", out("x.png")], "--uncertainty expects a number in 0..32"),
+    ([rotor, "--style", "sketch", "--noise-frequency", "0", "-o", out("x.png")], "--noise-frequency expects a number in 0.05..25"),
+    ([rotor, "--style", "sketch", "--noise-seed", "-1", "-o", out("x.png")], "--noise-seed expects an integer in 0..2147483647"),
+    ([rotor, "--style", "sketch", "--paper-color", "2,0,0", "-o", out("x.png")], "--paper-color"),
+    ([rotor, "--style", "sketch", "--edge-mask", out("m.png")], "--edge-mask needs --style edges or toon+edges"),
     ([rotor, "--style", "edges", "--crease-angle", "500", "-o", out("x.png")], "--crease-angle expects a number in 1..179"),
     ([rotor, "--style", "edges", "--silhouette-threshold", "2", "-o", out("x.png")], "--silhouette-threshold expects a number in"),
     ([rotor, "--style", "edges", "--line-width", "0", "-o", out("x.png")], "--line-width expects a number in 0.5..16"),
     ([rotor, "--style", "edges", "--contour-side", "sideways", "-o", out("x.png")], "--contour-side expects inside, outside or both"),
     ([rotor, "--style", "edges", "--lines", "silhouettes,hatching", "-o", out("x.png")], "--lines expects silhouettes, creases, contours or none, got 'hatching'"),
     ([rotor, "--style", "edges", "--line-color", "2,0,0", "-o", out("x.png")], "--line-color expects r,g,b"),
-    ([rotor, "--edge-mask", out("m.png")], "--edge-mask needs --style edges"),
+    ([rotor, "--edge-mask", out("m.png")], "--edge-mask needs --style edges or toon+edges"),
     ([rotor, "--size", "100", "-o", out("x.png")], "--size expects WxH"),
     ([rotor, "--size", "0x100", "-o", out("x.png")], "--size width expects an integer in 1..16384"),
     ([rotor, "--zoom", "-2", "-o", out("x.png")], "--zoom expects a positive factor"),

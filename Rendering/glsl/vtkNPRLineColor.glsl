@@ -1,0 +1,22 @@
+// vtkNPREdgePass and vtkNPRSketchPass: the colour of lines given each type's coverage
+// (r silhouettes, g creases, b contours). Creases are drawn first, then contours, silhouettes on top.
+uniform vec3 silhouetteColor;
+uniform vec3 creaseColor;
+uniform vec3 contourColor;
+
+// Lines over an opaque colour.
+vec3 nprLinesOver(vec3 color, vec3 coverage)
+{
+  color = mix(color, creaseColor, coverage.g);
+  color = mix(color, contourColor, coverage.b);
+  return mix(color, silhouetteColor, coverage.r);
+}
+
+// Lines over nothing: their colour and total coverage (alpha), not premultiplied.
+vec4 nprLinesAlone(vec3 coverage)
+{
+  vec4 color = vec4(creaseColor, 1.0) * coverage.g;
+  color = mix(color, vec4(contourColor, 1.0), coverage.b);
+  color = mix(color, vec4(silhouetteColor, 1.0), coverage.r);
+  return vec4(color.rgb / max(color.a, 1e-6), color.a);
+}

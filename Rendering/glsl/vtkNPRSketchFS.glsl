@@ -1,0 +1,105 @@
+//VTK::System::Dec
+// vtkNPRSketchPass: lines and surfaces looked up through noise-displaced coordinates, merged on
+// the surface colour or the paper, with the smaller of the two displaced depths as the depth
+// sprite. Every lookup is a texelFetch with the filtering done here, so that the displacement
+// of each pixel is exactly what vtkNPRSketchPass::GetDisplacement() computes.
+//NPR::Defines
+in vec2 texCoord;
+uniform sampler2D colorTexture;    // the G-buffer's colour (flat colours)
+uniform sampler2D depthTexture;    // the G-buffer's depth
+uniform sampler2D coverageTexture; // r, g, b: coverage of each line type; a: the lines' depth
+uniform sampler2D noiseTexture;    // 256 x 256 tile, xy: noise vector
+uniform ivec2 viewportOrigin;      // of the renderer in the window
+uniform float noiseScale;          // noise texels per pixel
+uniform vec4 edgeDisplacement;     // uncertainty x edge matrix, row major
+uniform vec4 surfaceDisplacement;  // uncertainty x surface matrix, row major
+uniform vec3 paperColor;
+//NPR::LineColor
+//VTK::Output::Dec
+
+vec2 nprNoise(vec2 pixel)
+{
+  vec2 t = (pixel + 0.5) * noiseScale - 0.5;
+  vec2 cell = floor(t);
+  vec2 f = t - cell;
+  ivec2 i = ivec2(cell) & 255;
+  ivec2 j = (i + 1) & 255;
+  vec2 n00 = texelFetch(noiseTexture, i, 0).xy;
+  vec2 n10 = texelFetch(noiseTexture, ivec2(j.x, i.y), 0).xy;
+  vec2 n01 = texelFetch(noiseTexture, ivec2(i.x, j.y), 0).xy;
+  vec2 n11 = texelFetch(noiseTexture, j, 0).xy;
+  return mix(mix(n00, n10, f.x), mix(n01, n11, f.x), f.y);
+}
+
+vec2 nprTimes(vec4 m, vec2 v)
+{
+  return vec2(m.x * v.x + m.y * v.y, m.z * v.x + m.w * v.y);
+}
+
+bool nprInside(ivec2 texel, ivec2 size)
+{
+  return all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, size));
+}
+
+vec4 nprCoverageAt(ivec2 texel, ivec2 size)
+{
+  return nprInside(texel, size) ? texelFetch(coverageTexture, texel, 0) : vec4(0.0, 0.0, 0.0, 1.0);
+}
+
+void main()
+{
+  ivec2 size = textureSize(depthTexture, 0);
+  vec2 pixel = vec2(ivec2(gl_FragCoord.xy) - viewportOrigin);
+  vec2 noise = nprNoise(pixel);
+
+  // Surfaces: nearest texel at the displaced position.
+  ivec2 surfaceTexel = ivec2(floor(pixel + 0.5 + nprTimes(surfaceDisplacement, noise)));
+  float surfaceDepth = 1.0;
+  vec3 surfaceColor = vec3(0.0);
+  if (nprInside(surfaceTexel, size))
+  {
+    surfaceDepth = texelFetch(depthTexture, surfaceTexel, 0).r;
+    surfaceColor = texelFetch(colorTexture, surfaceTexel, 0).rgb;
+  }
+
+  // Lines: bilinear coverage at the displaced position, the depth of its nearest texel.
+  vec2 lineAt = pixel + 0.5 + nprTimes(edgeDisplacement, noise);
+  vec2 t = lineAt - 0.5;
+  vec2 corner = floor(t);
+  vec2 f = t - corner;
+  ivec2 i = ivec2(corner);
+  vec4 c00 = nprCoverageAt(i, size);
+  vec4 c10 = nprCoverageAt(i + ivec2(1, 0), size);
+  vec4 c01 = nprCoverageAt(i + ivec2(0, 1), size);
+  vec4 c11 = nprCoverageAt(i + ivec2(1, 1), size);
+  vec3 coverage = mix(mix(c00.rgb, c10.rgb, f.x), mix(c01.rgb, c11.rgb, f.x), f.y);
+  ivec2 nearest = ivec2(floor(lineAt)) - i; // 0 or 1 on each axis
+  float lineDepth = nearest.y == 0 ? (nearest.x == 0 ? c00.a : c10.a) : (nearest.x == 0 ? c01.a : c11.a);
+
+  float depth = min(surfaceDepth, lineDepth);
+  bool onLine = max(coverage.r, max(coverage.g, coverage.b)) > 0.0;
+  if (surfaceDepth < 1.0)
+  {
+    gl_FragData[0] = vec4(nprLinesOver(surfaceColor, coverage), 1.0);
+  }
+  else
+  {
+#if NPR_PAPER
+    gl_FragData[0] = vec4(nprLinesOver(paperColor, coverage), 1.0);
+#else
+    if (onLine)
+    {
+      gl_FragData[0] = nprLinesAlone(coverage);
+    }
+    else if (depth < 1.0)
+    {
+      gl_FragData[0] = vec4(0.0); // the depth sprite only: the background shows
+    }
+    else
+    {
+      discard;
+    }
+#endif
+  }
+  gl_FragDepth = depth;
+}

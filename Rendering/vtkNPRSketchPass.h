@@ -1,0 +1,159 @@
+/**
+ * @class   vtkNPRSketchPass
+ * @brief   Sketchy drawing (Nienhaus & Döllner 2004): lines and fills that wobble like a hand
+ *          drawing, written as a depth sprite.
+ *
+ * Reads the G-buffer of the edge pass's vtkNPRGBufferPass (drawn earlier in the frame, normally
+ * with flat unlit colours: vtkNPRPass style SKETCH) and the lines of the vtkNPREdgePass (their
+ * coverage, as vtkNPREdgePass::RenderLineCoverage() gives it), and looks both up through
+ * perturbed texture coordinates:
+ *
+ *   n(p)     = a tileable 2D gradient noise vector (|n| <= 1) at pixel p
+ *   lines at   p + Uncertainty x EdgeMatrix    x n(p)
+ *   surfaces at p + Uncertainty x SurfaceMatrix x n(p)
+ *
+ * so lines and fills are displaced by at most Uncertainty pixels, and differently (the two 2x2
+ * matrices; one with a norm above 1 is scaled down to norm 1). The lines are drawn over the
+ * surface colour, or over the paper (PaperColor, when Paper is on) or the window's background.
+ * Surfaces are looked up with nearest sampling, lines bilinearly so they bend smoothly.
+ *
+ * Depth sprite: the depth is looked up with the same two displacements (the surface depth, and
+ * the depth the lines are drawn at) and the smaller of the two is written to gl_FragDepth, so
+ * translucent props, volumes, overlays and other layers drawn later are depth-tested against the
+ * sketch as drawn. Where the paper shows, the depth is the far plane.
+ *
+ * The noise is Perlin gradient noise made on the CPU from NoiseSeed (a 256 x 256 texel tile of
+ * 8 x 8 lattice cells, each of its two components an independent noise): the same seed gives
+ * the same image on every run and platform. NoiseFrequency is the number of lattice cells per
+ * 100 pixels. Uncertainty and the noise period are scaled like line widths (DPI / 72 x tile
+ * scale). With Uncertainty 0 the result is exactly the vtkNPREdgePass image of the same
+ * G-buffer.
+ *
+ * @sa vtkNPRPass vtkNPREdgePass vtkNPRGBufferPass vtkNPRToonPass
+ */
+#ifndef vtkNPRSketchPass_h
+#define vtkNPRSketchPass_h
+
+#include "vtkRenderPass.h"
+#include "vtkRenderingNPRModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkImageData;
+class vtkNPREdgePass;
+class vtkRenderer;
+
+class VTKRENDERINGNPR_EXPORT vtkNPRSketchPass : public vtkRenderPass
+{
+public:
+  static vtkNPRSketchPass* New();
+  vtkTypeMacro(vtkNPRSketchPass, vtkRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  void Render(const vtkRenderState* state) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+  ///@{
+  /**
+   * The edge pass whose lines and G-buffer are sketched (its G-buffer is drawn before this pass
+   * in the same frame; the edge pass itself is not rendered).
+   */
+  virtual void SetEdgePass(vtkNPREdgePass* pass);
+  vtkGetObjectMacro(EdgePass, vtkNPREdgePass);
+  ///@}
+
+  ///@{
+  /**
+   * Largest displacement in pixels at 72 DPI (default 3), clamped to [0, 32].
+   */
+  vtkSetClampMacro(Uncertainty, double, 0.0, 32.0);
+  vtkGetMacro(Uncertainty, double);
+  ///@}
+
+  ///@{
+  /**
+   * Seed of the noise (default 1).
+   */
+  vtkSetMacro(NoiseSeed, unsigned int);
+  vtkGetMacro(NoiseSeed, unsigned int);
+  ///@}
+
+  ///@{
+  /**
+   * Noise lattice cells per 100 pixels (default 2: the wobble changes about every 50 pixels),
+   * clamped to [0.05, 25].
+   */
+  vtkSetClampMacro(NoiseFrequency, double, 0.05, 25.0);
+  vtkGetMacro(NoiseFrequency, double);
+  ///@}
+
+  ///@{
+  /**
+   * The 2x2 matrices (row major: a b c d is [a b; c d]) turning the noise vector into the
+   * lines' and the surfaces' displacements. Defaults: identity for lines, a reflection
+   * (-0.6 0.8 0.8 0.6) for surfaces.
+   */
+  vtkSetVector4Macro(EdgeMatrix, double);
+  vtkGetVector4Macro(EdgeMatrix, double);
+  vtkSetVector4Macro(SurfaceMatrix, double);
+  vtkGetVector4Macro(SurfaceMatrix, double);
+  ///@}
+
+  ///@{
+  /**
+   * Paper: when on (off by default), the background of the renderer's viewport is PaperColor
+   * (default 1, 0.98, 0.92) instead of the window's background.
+   */
+  vtkSetMacro(Paper, bool);
+  vtkGetMacro(Paper, bool);
+  vtkBooleanMacro(Paper, bool);
+  vtkSetVector3Macro(PaperColor, double);
+  vtkGetVector3Macro(PaperColor, double);
+  ///@}
+
+  /**
+   * Uncertainty in pixels for this renderer: Uncertainty x DPI / 72 x tile scale.
+   */
+  double GetEffectiveUncertainty(vtkRenderer* renderer) const;
+
+  /**
+   * Noise texels per pixel for this renderer (NoiseFrequency / 100 x 32 texels per cell, over
+   * the same DPI and tile scale).
+   */
+  double GetEffectiveNoiseScale(vtkRenderer* renderer) const;
+
+  /**
+   * The noise tile (256 x 256, two float components, |vector| <= 1) for the current seed: the
+   * shader reads it with wrap-around at texel centres and interpolates bilinearly.
+   */
+  vtkImageData* GetNoiseImage();
+
+  /**
+   * The displacement in pixels at pixel (x, y) of the renderer's viewport, as the shader
+   * computes it, for lines (surfaces = false) or surfaces: uncertainty x matrix x n(p), with
+   * the matrices after their normalisation.
+   */
+  void GetDisplacement(vtkRenderer* renderer, int x, int y, bool surfaces, double displacement[2]);
+
+protected:
+  vtkNPRSketchPass();
+  ~vtkNPRSketchPass() override;
+
+  vtkNPREdgePass* EdgePass = nullptr;
+  double Uncertainty = 3.0;
+  unsigned int NoiseSeed = 1;
+  double NoiseFrequency = 2.0;
+  double EdgeMatrix[4] = { 1.0, 0.0, 0.0, 1.0 };
+  double SurfaceMatrix[4] = { -0.6, 0.8, 0.8, 0.6 };
+  bool Paper = false;
+  double PaperColor[3] = { 1.0, 0.98, 0.92 };
+
+private:
+  vtkNPRSketchPass(const vtkNPRSketchPass&) = delete;
+  void operator=(const vtkNPRSketchPass&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

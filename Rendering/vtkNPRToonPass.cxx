@@ -1,0 +1,371 @@
+#include "vtkNPRToonPass.h"
+
+#include "vtkCamera.h"
+#include "vtkHardwareSelector.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkScalarsToColors.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkTransform.h"
+#include "vtk_glew.h"
+
+#include "vtkNPRToonDecl.h"
+#include "vtkNPRToonImpl.h"
+#include "vtkNPRToonLighting.h"
+#include "vtkNPRToonVertexDecl.h"
+#include "vtkNPRToonVertexImpl.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace
+{
+// Samples of a user table: enough that a table's own entries stay distinct bands.
+constexpr int UserTableSamples = 256;
+}
+
+struct vtkNPRToonPass::Internals
+{
+  vtkTextureObject* TableTexture = nullptr;
+  std::vector<float> TableValues; // RGBA per entry, what the texture holds
+  vtkMTimeType TableTime = 0;     // of the pass (bands, table) when the texture was made
+  // Lights of this frame, in the layout of the shader's uniforms.
+  int LightCount = 0;
+  float Position[MaximumNumberOfLights][4];
+  float Spot[MaximumNumberOfLights][4];
+  float Attenuation[MaximumNumberOfLights][4];
+  float Intensity[MaximumNumberOfLights];
+  bool WarnedAboutLights = false;
+  std::string ShaderSettings;
+};
+
+vtkStandardNewMacro(vtkNPRToonPass);
+vtkCxxSetObjectMacro(vtkNPRToonPass, DelegatePass, vtkRenderPass);
+vtkCxxSetObjectMacro(vtkNPRToonPass, Table, vtkScalarsToColors);
+
+vtkNPRToonPass::vtkNPRToonPass()
+  : Internal(new Internals)
+{
+  this->ShaderStageTime.Modified();
+}
+
+vtkNPRToonPass::~vtkNPRToonPass()
+{
+  this->SetDelegatePass(nullptr);
+  this->SetTable(nullptr);
+  if (this->Internal->TableTexture)
+  {
+    this->Internal->TableTexture->Delete();
+  }
+}
+
+vtkMTimeType vtkNPRToonPass::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  if (this->Table)
+  {
+    time = std::max(time, this->Table->GetMTime());
+  }
+  return time;
+}
+
+void vtkNPRToonPass::GetShade(double intensity, double rgb[3])
+{
+  if (!(intensity >= 0.0))
+  {
+    intensity = 0.0;
+  }
+  intensity = std::min(intensity, 1.0);
+  if (!this->Table)
+  {
+    const int n = this->NumberOfBands;
+    const int band = std::min(static_cast<int>(intensity * n), n - 1);
+    rgb[0] = rgb[1] = rgb[2] = (band + 1.0) / n;
+    return;
+  }
+  const double* range = this->Table->GetRange();
+  const int sample = std::min(static_cast<int>(intensity * UserTableSamples), UserTableSamples - 1);
+  // The sample's own intensity is the centre of its interval.
+  const double value = range[0] + (sample + 0.5) / UserTableSamples * (range[1] - range[0]);
+  double color[3];
+  this->Table->GetColor(value, color);
+  for (int i = 0; i < 3; ++i)
+  {
+    rgb[i] = std::min(std::max(color[i], 0.0), 1.0);
+  }
+}
+
+void vtkNPRToonPass::UpdateTable(vtkWindow* window)
+{
+  Internals& internal = *this->Internal;
+  const vtkMTimeType time = this->GetMTime();
+  if (internal.TableTexture && internal.TableTime == time)
+  {
+    return;
+  }
+  const int size = this->Table ? UserTableSamples : this->NumberOfBands;
+  internal.TableValues.assign(4 * size, 1.0f);
+  for (int i = 0; i < size; ++i)
+  {
+    double rgb[3];
+    this->GetShade((i + 0.5) / size, rgb);
+    std::copy(rgb, rgb + 3, internal.TableValues.begin() + 4 * i);
+  }
+  if (!internal.TableTexture)
+  {
+    internal.TableTexture = vtkTextureObject::New();
+  }
+  internal.TableTexture->SetContext(static_cast<vtkOpenGLRenderWindow*>(window));
+  internal.TableTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+  internal.TableTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  internal.TableTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+  internal.TableTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+  internal.TableTexture->Create2DFromRaw(size, 1, 4, VTK_FLOAT, internal.TableValues.data());
+  internal.TableTime = time;
+}
+
+void vtkNPRToonPass::UpdateLights(const vtkRenderState* state)
+{
+  Internals& internal = *this->Internal;
+  vtkRenderer* renderer = state->GetRenderer();
+  vtkTransform* view = renderer->GetActiveCamera()->GetModelViewTransformObject();
+  internal.LightCount = 0;
+  int switchedOn = 0;
+  vtkCollectionSimpleIterator it;
+  renderer->GetLights()->InitTraversal(it);
+  while (vtkLight* light = renderer->GetLights()->GetNextLight(it))
+  {
+    if (light->GetSwitch() == 0 || light->GetIntensity() <= 0.0)
+    {
+      continue;
+    }
+    if (++switchedOn > MaximumNumberOfLights)
+    {
+      continue;
+    }
+    const int i = internal.LightCount++;
+    const double* color = light->GetDiffuseColor();
+    // Rec. 709 luminance: a white light of intensity 1 gives 1.
+    internal.Intensity[i] = static_cast<float>(light->GetIntensity() *
+      (0.2126 * color[0] + 0.7152 * color[1] + 0.0722 * color[2]));
+    double direction[3], position[3], viewDirection[3], viewPosition[3];
+    light->GetTransformedFocalPoint(direction);
+    light->GetTransformedPosition(position);
+    vtkMath::Subtract(direction, position, direction); // the way the light shines
+    if (vtkMath::Normalize(direction) == 0.0)
+    {
+      direction[0] = direction[1] = 0.0;
+      direction[2] = -1.0;
+    }
+    view->TransformNormal(direction, viewDirection);
+    vtkMath::Normalize(viewDirection);
+    for (int j = 0; j < 4; ++j)
+    {
+      internal.Spot[i][j] = internal.Attenuation[i][j] = 0.0f;
+    }
+    if (light->GetPositional())
+    {
+      view->TransformPoint(position, viewPosition);
+      for (int j = 0; j < 3; ++j)
+      {
+        internal.Position[i][j] = static_cast<float>(viewPosition[j]);
+        internal.Spot[i][j] = static_cast<float>(viewDirection[j]);
+        internal.Attenuation[i][j] = static_cast<float>(light->GetAttenuationValues()[j]);
+      }
+      internal.Position[i][3] = 1.0f;
+      internal.Spot[i][3] = light->GetConeAngle() < 90.0
+        ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(light->GetConeAngle())))
+        : -2.0f;
+      internal.Attenuation[i][3] = static_cast<float>(light->GetExponent());
+    }
+    else
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        internal.Position[i][j] = static_cast<float>(-viewDirection[j]);
+      }
+      internal.Position[i][3] = 0.0f;
+    }
+  }
+  if (switchedOn > MaximumNumberOfLights && !internal.WarnedAboutLights)
+  {
+    vtkWarningMacro(<< switchedOn << " lights are on; toon shading uses the first "
+                    << MaximumNumberOfLights);
+    internal.WarnedAboutLights = true;
+  }
+}
+
+void vtkNPRToonPass::Render(const vtkRenderState* state)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro("no delegate pass: nothing drawn");
+    return;
+  }
+  vtkRenderer* renderer = state->GetRenderer();
+  // Picking renders through the pass chain too; run the selector as vtkOpenGLRenderer would.
+  if (vtkHardwareSelector* selector = renderer->GetSelector())
+  {
+    this->NumberOfRenderedProps =
+      selector->Render(renderer, state->GetPropArray(), state->GetPropArrayCount());
+    return;
+  }
+
+  const std::string settings = std::string(this->PerVertex ? "v" : "p") + (this->Specular ? "s" : "");
+  if (settings != this->Internal->ShaderSettings)
+  {
+    this->Internal->ShaderSettings = settings;
+    this->ShaderStageTime.Modified(); // the mappers rebuild their shaders
+  }
+  this->UpdateTable(renderer->GetRenderWindow());
+  this->UpdateLights(state);
+
+  this->PreRender(state); // the mappers now call this pass's shader hooks
+  this->Internal->TableTexture->Activate();
+  this->DelegatePass->Render(state);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  this->Internal->TableTexture->Deactivate();
+  this->PostRender(state);
+  vtkOpenGLCheckErrorMacro("failed after vtkNPRToonPass::Render");
+}
+
+namespace
+{
+// The lit fragment shaders of vtkOpenGLPolyDataMapper (Gouraud, Phong, flat), not PBR.
+bool IsLitPolyDataShader(const std::string& fragmentShader)
+{
+  return fragmentShader.find("uniform vec3 lightColor0;") != std::string::npos &&
+    fragmentShader.find("vec3 diffuseColor") != std::string::npos &&
+    fragmentShader.find("vec3 ambientColor") != std::string::npos &&
+    fragmentShader.find("normalVCVSOutput") != std::string::npos &&
+    fragmentShader.find("albedo") == std::string::npos;
+}
+}
+
+bool vtkNPRToonPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    // Tags of our own right after VTK's lighting, filled in once VTK's code is in place.
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
+      "//VTK::Light::Impl\n  //NPR::Toon::Impl\n", false);
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
+      "//VTK::Output::Dec\n//NPR::Toon::Dec\n", false);
+  }
+  return true;
+}
+
+bool vtkNPRToonPass::PostReplaceShaderValues(std::string& vertexShader,
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) ||
+    fragmentShader.find("//NPR::Toon::Impl") == std::string::npos)
+  {
+    return true;
+  }
+  if (!IsLitPolyDataShader(fragmentShader))
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Impl", "", false);
+    vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Dec", "", false);
+    return true;
+  }
+  const bool perVertex = this->PerVertex && geometryShader.empty() &&
+    vertexShader.find("normalVCVSOutput = normalMatrix * normalMC") != std::string::npos &&
+    vertexShader.find("vertexVCVSOutput = MCVCMatrix * vertexMC") != std::string::npos &&
+    vertexShader.find("//VTK::Light::Impl") != std::string::npos;
+  const bool specular = this->Specular &&
+    fragmentShader.find("vec3 specularColor") != std::string::npos &&
+    fragmentShader.find("float specularPower") != std::string::npos;
+  const bool vertexVC = fragmentShader.find("vec4 vertexVC = ") != std::string::npos;
+  const std::string defines = std::string("#define NPR_TOON_PER_VERTEX ") + (perVertex ? "1" : "0") +
+    "\n#define NPR_TOON_SPECULAR " + (specular ? "1" : "0") + "\n#define NPR_TOON_HAVE_VERTEX_VC " +
+    (vertexVC ? "1" : "0") + "\n";
+  vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Dec",
+    defines + vtkNPRToonLighting + vtkNPRToonDecl, false);
+  vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Impl", vtkNPRToonImpl, false);
+  if (perVertex)
+  {
+    vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Dec",
+      std::string("//VTK::Light::Dec\n") + vtkNPRToonLighting + vtkNPRToonVertexDecl, false);
+    vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Impl",
+      std::string("//VTK::Light::Impl\n") + vtkNPRToonVertexImpl, false);
+  }
+  return true;
+}
+
+bool vtkNPRToonPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  Internals& internal = *this->Internal;
+  if (!internal.TableTexture || !program->IsUniformUsed("nprToonTable"))
+  {
+    return true;
+  }
+  program->SetUniformi("nprToonTable", internal.TableTexture->GetTextureUnit());
+  program->SetUniformi("nprToonTableSize", internal.TableTexture->GetWidth());
+  program->SetUniformi("nprToonLightCount", internal.LightCount);
+  if (internal.LightCount > 0)
+  {
+    // Array uniforms are set whole; unused ones were dropped by the compiler.
+    const int n = internal.LightCount;
+    if (program->IsUniformUsed("nprToonLightPosition"))
+    {
+      program->SetUniform4fv("nprToonLightPosition", n, internal.Position);
+    }
+    if (program->IsUniformUsed("nprToonLightSpot"))
+    {
+      program->SetUniform4fv("nprToonLightSpot", n, internal.Spot);
+    }
+    if (program->IsUniformUsed("nprToonLightAttenuation"))
+    {
+      program->SetUniform4fv("nprToonLightAttenuation", n, internal.Attenuation);
+    }
+    if (program->IsUniformUsed("nprToonLightIntensity"))
+    {
+      program->SetUniform1fv("nprToonLightIntensity", n, internal.Intensity);
+    }
+  }
+  return true;
+}
+
+vtkMTimeType vtkNPRToonPass::GetShaderStageMTime()
+{
+  return this->ShaderStageTime.GetMTime();
+}
+
+void vtkNPRToonPass::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(window);
+  }
+  if (this->Internal->TableTexture)
+  {
+    this->Internal->TableTexture->ReleaseGraphicsResources(window);
+    this->Internal->TableTexture->Delete();
+    this->Internal->TableTexture = nullptr;
+  }
+}
+
+void vtkNPRToonPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+  os << indent << "NumberOfBands: " << this->NumberOfBands << "\n";
+  os << indent << "Table: " << this->Table << "\n";
+  os << indent << "PerVertex: " << this->PerVertex << "\n";
+  os << indent << "Specular: " << this->Specular << "\n";
+}
