@@ -41,6 +41,12 @@ float nprNearestDepth(ivec2 p)
 void main()
 {
   vec3 coverage = vec3(0.0);
+#if !NPR_LINES
+  if (texCoord.x < -1.0)
+  {
+    discard; // never: texCoord is read so that VTK does not warn about an unread input
+  }
+#endif
 #if NPR_LINES
   vec3 lines = vec3(0.0);
   for (int i = 0; i < NPR_TAPS; ++i)

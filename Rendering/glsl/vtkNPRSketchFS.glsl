@@ -4,7 +4,7 @@
 // sprite. Every lookup is a texelFetch with the filtering done here, so that the displacement
 // of each pixel is exactly what vtkNPRSketchPass::GetDisplacement() computes.
 //NPR::Defines
-in vec2 texCoord;
+in vec2 texCoord; // unused (pixels come from gl_FragCoord) but read: VTK warns about unread inputs
 uniform sampler2D colorTexture;    // the G-buffer's colour (flat colours)
 uniform sampler2D depthTexture;    // the G-buffer's depth
 uniform sampler2D coverageTexture; // r, g, b: coverage of each line type; a: the lines' depth
@@ -48,6 +48,10 @@ vec4 nprCoverageAt(ivec2 texel, ivec2 size)
 
 void main()
 {
+  if (texCoord.x < -1.0)
+  {
+    discard; // never: see texCoord
+  }
   ivec2 size = textureSize(depthTexture, 0);
   vec2 pixel = vec2(ivec2(gl_FragCoord.xy) - viewportOrigin);
   vec2 noise = nprNoise(pixel);

@@ -66,28 +66,6 @@
 
 namespace
 {
-// Counts the errors and warnings VTK reports while the test runs: a pass that works reports none.
-class CountingOutputWindow : public vtkOutputWindow
-{
-public:
-  static CountingOutputWindow* New();
-  vtkTypeMacro(CountingOutputWindow, vtkOutputWindow);
-  void DisplayErrorText(const char* text) override
-  {
-    ++this->Errors;
-    std::cerr << "VTK error: " << text << "\n";
-  }
-  void DisplayWarningText(const char* text) override
-  {
-    ++this->Warnings;
-    std::cerr << "VTK warning: " << text << "\n";
-  }
-  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
-  int Errors = 0;
-  int Warnings = 0;
-};
-vtkStandardNewMacro(CountingOutputWindow);
-
 std::string DataDir;
 
 struct Scene
@@ -136,21 +114,6 @@ struct Scene
   }
 };
 
-vtkSmartPointer<vtkActor> AddActor(vtkRenderer* renderer, vtkAlgorithmOutput* port,
-  const double color[3] = nullptr)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(port);
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  if (color)
-  {
-    actor->GetProperty()->SetColor(color[0], color[1], color[2]);
-  }
-  renderer->AddActor(actor);
-  return actor;
-}
-
 vtkSmartPointer<vtkActor> AddCube(vtkRenderer* renderer, const double center[3], double size = 1.0)
 {
   vtkNew<vtkCubeSource> cube;
@@ -159,17 +122,7 @@ vtkSmartPointer<vtkActor> AddCube(vtkRenderer* renderer, const double center[3],
   cube->SetYLength(size);
   cube->SetZLength(size);
   const double grey[3] = { 0.8, 0.8, 0.8 };
-  return AddActor(renderer, cube->GetOutputPort(), grey);
-}
-
-int Value(vtkImageData* image, int x, int y, int component = 0)
-{
-  const int* dims = image->GetDimensions();
-  if (x < 0 || y < 0 || x >= dims[0] || y >= dims[1])
-  {
-    return 0;
-  }
-  return static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0))[component];
+  return nprAddActor(renderer, cube->GetOutputPort(), grey);
 }
 
 long long CountAbove(vtkImageData* image, int threshold)
@@ -180,7 +133,7 @@ long long CountAbove(vtkImageData* image, int threshold)
   {
     for (int x = 0; x < dims[0]; ++x)
     {
-      count += Value(image, x, y) > threshold ? 1 : 0;
+      count += nprPixel(image, x, y) > threshold ? 1 : 0;
     }
   }
   return count;
@@ -278,12 +231,12 @@ int CubeEdges(bool parallel)
       {
         nearest = std::min(nearest, SegmentDistance(p, edge.first.data(), edge.second.data()));
       }
-      if (Value(mask, x, y) > 127)
+      if (nprPixel(mask, x, y) > 127)
       {
         ++linePixels;
         worst = std::max(worst, nearest);
       }
-      if (nearest > 2.0 && Value(mask, x, y) > 0)
+      if (nearest > 2.0 && nprPixel(mask, x, y) > 0)
       {
         ++falsePixels;
       }
@@ -306,7 +259,7 @@ int CubeEdges(bool parallel)
           const int x = static_cast<int>(std::floor(px)) + ox, y = static_cast<int>(std::floor(py)) + oy;
           const double c[2] = { x + 0.5, y + 0.5 };
           const double d = std::hypot(c[0] - px, c[1] - py);
-          hit = d <= 1.0 && Value(mask, x, y) > 127;
+          hit = d <= 1.0 && nprPixel(mask, x, y) > 127;
         }
       }
       ++samples;
@@ -334,7 +287,7 @@ int GrazingPlane()
   plane->SetPoint2(-50, 0, 50);
   plane->SetResolution(20, 20);
   const double grey[3] = { 0.7, 0.7, 0.7 };
-  AddActor(scene.Renderer, plane->GetOutputPort(), grey);
+  nprAddActor(scene.Renderer, plane->GetOutputPort(), grey);
   vtkCamera* camera = scene.Camera();
   camera->SetPosition(0, 0.3, 30);
   camera->SetFocalPoint(0, -0.5, -50);
@@ -350,7 +303,7 @@ int GrazingPlane()
   {
     for (int x = 0; x < 400; ++x)
     {
-      if (Value(mask, x, y) > 0)
+      if (nprPixel(mask, x, y) > 0)
       {
         (std::abs(y + 0.5 - horizon[1]) <= 3.0 ? far : inside)++;
       }
@@ -386,8 +339,8 @@ int TouchingObjects()
       bool row = false;
       for (int x = static_cast<int>(t[0]) - 2; x <= static_cast<int>(t[0]) + 2; ++x)
       {
-        count += Value(mask, x, y) > 127 ? 1 : 0;
-        row = row || Value(mask, x, y) > 127;
+        count += nprPixel(mask, x, y) > 127 ? 1 : 0;
+        row = row || nprPixel(mask, x, y) > 127;
       }
       rows += row ? 1 : 0;
     }
@@ -428,7 +381,7 @@ int Translucency()
   plane->SetPoint1(0, -2, 1);
   plane->SetPoint2(-2, 2, 1);
   const double red[3] = { 1, 0, 0 };
-  vtkSmartPointer<vtkActor> glass = AddActor(scene.Renderer, plane->GetOutputPort(), red);
+  vtkSmartPointer<vtkActor> glass = nprAddActor(scene.Renderer, plane->GetOutputPort(), red);
   glass->GetProperty()->SetOpacity(0.5);
   glass->GetProperty()->LightingOff();
   vtkCamera* camera = scene.Camera();
@@ -442,7 +395,7 @@ int Translucency()
     first = last = -1;
     for (int x = 0; x < 400; ++x)
     {
-      if (Value(mask, x, y) == 255)
+      if (nprPixel(mask, x, y) == 255)
       {
         first = first < 0 ? x : first;
         last = x;
@@ -458,8 +411,8 @@ int Translucency()
     int first, last;
     lineColumns(mask, 150, first, last);
     NPR_CHECK(first > 0 && last > first, "no silhouette found on the middle row");
-    const int r = Value(image, first, 150, 0), g = Value(image, first, 150, 1);
-    const int rr = Value(image, last, 150, 0), rg = Value(image, last, 150, 1);
+    const int r = nprPixel(image, first, 150, 0), g = nprPixel(image, first, 150, 1);
+    const int rr = nprPixel(image, last, 150, 0), rg = nprPixel(image, last, 150, 1);
     std::cout << "peeling " << depthPeeling << ": left line under the glass (" << r << "," << g
               << "), right line (" << rr << "," << rg << ")\n";
     NPR_CHECK(r > 90 && r < 200 && g < 40, "the line under the glass should be tinted red");
@@ -467,9 +420,9 @@ int Translucency()
     // Behind the cube, the glass covers the background only.
     glass->SetPosition(0, 0, -2);
     image = scene.Render();
-    const int br = Value(image, first, 150, 0);
+    const int br = nprPixel(image, first, 150, 0);
     NPR_CHECK(br < 60, "glass behind the cube tinted its line: red " << br);
-    NPR_CHECK(Value(image, 80, 150, 0) > 200 && Value(image, 80, 150, 1) < 200,
+    NPR_CHECK(nprPixel(image, 80, 150, 0) > 200 && nprPixel(image, 80, 150, 1) < 200,
       "the glass behind the cube should still tint the background");
   }
   return nprTestResult();
@@ -500,7 +453,7 @@ int Layers()
   sphere->SetThetaResolution(32);
   sphere->SetPhiResolution(16);
   const double red[3] = { 1, 0, 0 };
-  vtkSmartPointer<vtkActor> ball = AddActor(overlay, sphere->GetOutputPort(), red);
+  vtkSmartPointer<vtkActor> ball = nprAddActor(overlay, sphere->GetOutputPort(), red);
   ball->GetProperty()->LightingOff();
   auto image = scene.Render();
 
@@ -513,7 +466,7 @@ int Layers()
   {
     for (int x = 0; x < 400; ++x)
     {
-      const bool red = Value(image, x, y, 0) > 200 && Value(image, x, y, 1) < 60;
+      const bool red = nprPixel(image, x, y, 0) > 200 && nprPixel(image, x, y, 1) < 60;
       const bool inside = x > a[0] + 3 && x < b[0] - 3 && y > a[1] + 3 && y < b[1] - 3;
       (inside ? redInside : redOutside) += red ? 1 : 0;
     }
@@ -572,7 +525,7 @@ int VolumeAndOverlay()
   {
     for (int x = 0; x < 400; ++x)
     {
-      const int r = Value(image, x, y, 0), g = Value(image, x, y, 1), bl = Value(image, x, y, 2);
+      const int r = nprPixel(image, x, y, 0), g = nprPixel(image, x, y, 1), bl = nprPixel(image, x, y, 2);
       const bool inside = x > a[0] + 3 && x < b[0] - 3 && y > a[1] + 3 && y < b[1] - 3;
       if (r > 150 && g < 80 && bl < 80)
       {
@@ -650,7 +603,7 @@ int Reuse()
   sphere->SetThetaResolution(32);
   sphere->SetPhiResolution(16);
   const double grey[3] = { 0.8, 0.8, 0.8 };
-  vtkSmartPointer<vtkActor> actor = AddActor(scene.Renderer, sphere->GetOutputPort(), grey);
+  vtkSmartPointer<vtkActor> actor = nprAddActor(scene.Renderer, sphere->GetOutputPort(), grey);
   vtkNPRGBufferPass* gbuffer = scene.GBuffer();
   auto first = scene.Render();
   NPR_CHECK(gbuffer->GetNumberOfGeometryDraws() == 1, "first frame: one draw");
@@ -668,7 +621,7 @@ int Reuse()
     { "actor position", [&] { actor->SetPosition(0.1, 0, 0); } },
     { "source", [&] { sphere->SetRadius(0.4); } },
     { "visibility of a new actor",
-      [&] { AddActor(scene.Renderer, sphere->GetOutputPort(), grey)->SetPosition(1, 0, 0); } },
+      [&] { nprAddActor(scene.Renderer, sphere->GetOutputPort(), grey)->SetPosition(1, 0, 0); } },
     { "light", [&] { scene.Renderer->GetLights()->GetItemAsObject(0)->Modified(); } },
     { "size", [&] { scene.Window->SetSize(320, 200); } },
     { "line types", [&] { scene.Edges()->CreasesOff(); } },
@@ -708,7 +661,7 @@ int Channels()
   NPR_CHECK(!gbuffer->GetHasContent() && !gbuffer->GetGeometryTexture() &&
       !gbuffer->GetColorTexture(),
     "an empty renderer allocated G-buffer textures");
-  NPR_CHECK(Value(empty, 100, 75, 0) == 255, "the empty renderer's background is not white");
+  NPR_CHECK(nprPixel(empty, 100, 75, 0) == 255, "the empty renderer's background is not white");
 
   const double origin[3] = { 0, 0, 0 }, beside[3] = { 1.5, 0, 0 };
   AddCube(scene.Renderer, origin);
@@ -769,7 +722,7 @@ int AntiAliasing()
   vtkNew<vtkTransformPolyDataFilter> tilted;
   tilted->SetTransform(tilt);
   tilted->SetInputConnection(cube->GetOutputPort());
-  AddActor(scene.Renderer, tilted->GetOutputPort());
+  nprAddActor(scene.Renderer, tilted->GetOutputPort());
   vtkCamera* camera = scene.Camera();
   camera->SetPosition(0, 0, 5);
   camera->SetFocalPoint(0, 0, 0);
@@ -796,7 +749,7 @@ int AntiAliasing()
       double sum = 0, weighted = 0;
       for (int y = static_cast<int>(yEdge) - 4; y <= static_cast<int>(yEdge) + 4; ++y)
       {
-        const int v = Value(mask, x, y);
+        const int v = nprPixel(mask, x, y);
         lit += v > 0 ? 1 : 0;
         intermediate += v > 25 && v < 230 ? 1 : 0;
         sum += v;
@@ -851,7 +804,7 @@ int AntiAliasing()
       for (int y = 0; y < 300; ++y)
       {
         const double yEdge = e0[1] + (x + 0.5 - e0[0]) * (e1[1] - e0[1]) / (e1[0] - e0[0]);
-        sum += std::abs(y + 0.5 - yEdge) < 8 ? Value(mask, x, y) / 255.0 : 0.0;
+        sum += std::abs(y + 0.5 - yEdge) < 8 ? nprPixel(mask, x, y) / 255.0 : 0.0;
       }
     }
     return sum;
@@ -1081,7 +1034,7 @@ int Baseline(const char* model, const char* name)
   normals->SplittingOn();
   Scene scene(400, 300);
   const double color[3] = { 0.85, 0.82, 0.75 };
-  AddActor(scene.Renderer, normals->GetOutputPort(), color);
+  nprAddActor(scene.Renderer, normals->GetOutputPort(), color);
   scene.Renderer->ResetCamera();
   scene.Camera()->Azimuth(30);
   scene.Camera()->Elevation(30);
@@ -1101,7 +1054,7 @@ int main(int argc, char* argv[])
     return 2;
   }
   DataDir = argc > 2 ? argv[2] : ".";
-  vtkNew<CountingOutputWindow> output;
+  vtkNew<nprCountingOutputWindow> output;
   vtkOutputWindow::SetInstance(output);
   const std::map<std::string, std::function<int()>> cases = {
     { "cube", [] { return CubeEdges(false); } },

@@ -1,11 +1,16 @@
 #include "nprTesting.h"
 
+#include "vtkActor.h"
 #include "vtkImageData.h"
 #include "vtkNPRRenderWindowFactory.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
@@ -18,6 +23,45 @@
 #ifndef NPR_BASELINE_DIR
 #error "NPR_BASELINE_DIR must name Testing/Data/Baseline"
 #endif
+
+vtkStandardNewMacro(nprCountingOutputWindow);
+
+void nprCountingOutputWindow::DisplayErrorText(const char* text)
+{
+  ++this->Errors;
+  std::cerr << "VTK error: " << text << "\n";
+}
+
+void nprCountingOutputWindow::DisplayWarningText(const char* text)
+{
+  ++this->Warnings;
+  std::cerr << "VTK warning: " << text << "\n";
+}
+
+vtkSmartPointer<vtkActor> nprAddActor(
+  vtkRenderer* renderer, vtkAlgorithmOutput* port, const double color[3])
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(port);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  if (color)
+  {
+    actor->GetProperty()->SetColor(color[0], color[1], color[2]);
+  }
+  renderer->AddActor(actor);
+  return actor;
+}
+
+int nprPixel(vtkImageData* image, int x, int y, int component)
+{
+  const int* dims = image->GetDimensions();
+  if (x < 0 || y < 0 || x >= dims[0] || y >= dims[1])
+  {
+    return 0;
+  }
+  return static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0))[component];
+}
 
 int& nprTestFailures()
 {

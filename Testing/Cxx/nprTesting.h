@@ -14,13 +14,37 @@
 #ifndef nprTesting_h
 #define nprTesting_h
 
+#include "vtkOutputWindow.h"
 #include "vtkSmartPointer.h"
 
 #include <iostream>
 #include <string>
 
+class vtkActor;
+class vtkAlgorithmOutput;
 class vtkImageData;
 class vtkRenderWindow;
+class vtkRenderer;
+
+// Counts the errors and warnings VTK reports while a test runs: a pass that works reports none.
+class nprCountingOutputWindow : public vtkOutputWindow
+{
+public:
+  static nprCountingOutputWindow* New();
+  vtkTypeMacro(nprCountingOutputWindow, vtkOutputWindow);
+  void DisplayErrorText(const char* text) override;
+  void DisplayWarningText(const char* text) override;
+  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
+  int Errors = 0;
+  int Warnings = 0;
+};
+
+// An actor of the port's polygons (through a vtkPolyDataMapper) added to the renderer.
+vtkSmartPointer<vtkActor> nprAddActor(
+  vtkRenderer* renderer, vtkAlgorithmOutput* port, const double color[3] = nullptr);
+
+// A channel (0..255) of an unsigned char image's pixel; 0 outside the image.
+int nprPixel(vtkImageData* image, int x, int y, int component = 0);
 
 // Counts failed checks; a test returns nprTestResult().
 int& nprTestFailures();
