@@ -1,5 +1,6 @@
 #include "vtkNPRToonPass.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkHardwareSelector.h"
 #include "vtkLight.h"
@@ -9,6 +10,7 @@
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkScalarsToColors.h"
@@ -41,6 +43,7 @@ struct vtkNPRToonPass::Internals
   vtkMTimeType TableTime = 0;     // of the pass (bands, table) when the texture was made
   // Lights of this frame, in the layout of the shader's uniforms.
   int LightCount = 0;
+  bool AnyPositional = false;
   float Position[MaximumNumberOfLights][4];
   float Spot[MaximumNumberOfLights][4];
   float Attenuation[MaximumNumberOfLights][4];
@@ -140,6 +143,7 @@ void vtkNPRToonPass::UpdateLights(const vtkRenderState* state)
   vtkRenderer* renderer = state->GetRenderer();
   vtkTransform* view = renderer->GetActiveCamera()->GetModelViewTransformObject();
   internal.LightCount = 0;
+  internal.AnyPositional = false;
   int switchedOn = 0;
   vtkCollectionSimpleIterator it;
   renderer->GetLights()->InitTraversal(it);
@@ -175,6 +179,7 @@ void vtkNPRToonPass::UpdateLights(const vtkRenderState* state)
     }
     if (light->GetPositional())
     {
+      internal.AnyPositional = true;
       view->TransformPoint(position, viewPosition);
       for (int j = 0; j < 3; ++j)
       {
@@ -223,14 +228,17 @@ void vtkNPRToonPass::Render(const vtkRenderState* state)
     return;
   }
 
-  const std::string settings = std::string(this->PerVertex ? "v" : "p") + (this->Specular ? "s" : "");
+  this->UpdateTable(renderer->GetRenderWindow());
+  this->UpdateLights(state);
+  // What is compiled into the shaders: the mappers rebuild them when it changes.
+  const std::string settings = std::string(this->PerVertex ? "v" : "p") +
+    (this->Specular ? "s" : "") + std::to_string(this->Internal->LightCount) +
+    (this->Internal->AnyPositional ? "p" : "d");
   if (settings != this->Internal->ShaderSettings)
   {
     this->Internal->ShaderSettings = settings;
-    this->ShaderStageTime.Modified(); // the mappers rebuild their shaders
+    this->ShaderStageTime.Modified();
   }
-  this->UpdateTable(renderer->GetRenderWindow());
-  this->UpdateLights(state);
 
   this->PreRender(state); // the mappers now call this pass's shader hooks
   this->Internal->TableTexture->Activate();
@@ -269,7 +277,7 @@ bool vtkNPRToonPass::PreReplaceShaderValues(
 }
 
 bool vtkNPRToonPass::PostReplaceShaderValues(std::string& vertexShader,
-  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) ||
     fragmentShader.find("//NPR::Toon::Impl") == std::string::npos)
@@ -286,20 +294,26 @@ bool vtkNPRToonPass::PostReplaceShaderValues(std::string& vertexShader,
     vertexShader.find("normalVCVSOutput = normalMatrix * normalMC") != std::string::npos &&
     vertexShader.find("vertexVCVSOutput = MCVCMatrix * vertexMC") != std::string::npos &&
     vertexShader.find("//VTK::Light::Impl") != std::string::npos;
-  const bool specular = this->Specular &&
+  // Highlights only for actors that have some: the Phong term is a third of the shader's cost
+  // on llvmpipe. (A change of the property rebuilds the mapper's shaders.)
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  const bool specular = this->Specular && actor && actor->GetProperty()->GetSpecular() > 0.0 &&
     fragmentShader.find("vec3 specularColor") != std::string::npos &&
     fragmentShader.find("float specularPower") != std::string::npos;
   const bool vertexVC = fragmentShader.find("vec4 vertexVC = ") != std::string::npos;
+  const Internals& internal = *this->Internal;
   const std::string defines = std::string("#define NPR_TOON_PER_VERTEX ") + (perVertex ? "1" : "0") +
     "\n#define NPR_TOON_SPECULAR " + (specular ? "1" : "0") + "\n#define NPR_TOON_HAVE_VERTEX_VC " +
-    (vertexVC ? "1" : "0") + "\n";
+    (vertexVC ? "1" : "0") + "\n#define NPR_TOON_LIGHTS " + std::to_string(internal.LightCount) +
+    "\n#define NPR_TOON_LIGHT_ARRAY " + std::to_string(std::max(1, internal.LightCount)) +
+    "\n#define NPR_TOON_POSITIONAL " + (internal.AnyPositional ? "1" : "0") + "\n";
   vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Dec",
     defines + vtkNPRToonLighting + vtkNPRToonDecl, false);
   vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Impl", vtkNPRToonImpl, false);
   if (perVertex)
   {
     vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Dec",
-      std::string("//VTK::Light::Dec\n") + vtkNPRToonLighting + vtkNPRToonVertexDecl, false);
+      std::string("//VTK::Light::Dec\n") + defines + vtkNPRToonLighting + vtkNPRToonVertexDecl, false);
     vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Impl",
       std::string("//VTK::Light::Impl\n") + vtkNPRToonVertexImpl, false);
   }
@@ -316,7 +330,6 @@ bool vtkNPRToonPass::SetShaderParameters(
   }
   program->SetUniformi("nprToonTable", internal.TableTexture->GetTextureUnit());
   program->SetUniformi("nprToonTableSize", internal.TableTexture->GetWidth());
-  program->SetUniformi("nprToonLightCount", internal.LightCount);
   if (internal.LightCount > 0)
   {
     // Array uniforms are set whole; unused ones were dropped by the compiler.

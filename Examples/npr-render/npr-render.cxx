@@ -124,7 +124,7 @@ struct Options
   double ContourColor[3] = { 0.0, 0.0, 0.0 };
   bool AntiAliasing = true;
   std::string EdgeMask;
-  std::string CompareStyle;
+  std::vector<std::string> CompareStyles;
 
   // --style toon, toon+edges (and sketch with --sketch-toon)
   int ToonBands = 3;
@@ -150,8 +150,9 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
   -o, --output FILE        PNG to write
   --size WxH               image size in pixels (default 1024x768)
   --style NAME             shaded (default), edges, toon, toon+edges or sketch
-  --compare-style NAME     with --frames: also time this style, frames interleaved with
-                           the main style's in the same window; print both and the ratio
+  --compare-style LIST     with --frames: also time these styles (comma separated), frames
+                           interleaved with the main style's in the same window; print
+                           each median and its ratio to the main style's
   --backend NAME           egl, osmesa or x (default: NPR_BACKEND, else egl;
                            osmesa in npr-render-osmesa)
   --azimuth DEG            rotate the camera about the view up after the reset
@@ -420,10 +421,15 @@ Options ParseOptions(int argc, char* argv[])
     }
     else if (arg == "--compare-style")
     {
-      options.CompareStyle = value();
-      if (std::find(std::begin(Styles), std::end(Styles), options.CompareStyle) == std::end(Styles))
+      std::stringstream parts(value());
+      std::string part;
+      while (std::getline(parts, part, ','))
       {
-        throw UsageError("unknown style '" + options.CompareStyle + "' for --compare-style");
+        if (std::find(std::begin(Styles), std::end(Styles), part) == std::end(Styles))
+        {
+          throw UsageError("unknown style '" + part + "' for --compare-style");
+        }
+        options.CompareStyles.push_back(part);
       }
     }
     else if (arg == "--edge-mask")
@@ -482,7 +488,7 @@ Options ParseOptions(int argc, char* argv[])
   {
     throw UsageError("nothing to do: give -o FILE, --frames N, --edge-mask FILE or --camera-out FILE");
   }
-  if (!options.CompareStyle.empty() && options.Frames == 0)
+  if (!options.CompareStyles.empty() && options.Frames == 0)
   {
     throw UsageError("--compare-style needs --frames N");
   }
@@ -672,23 +678,25 @@ int Run(const Options& options, nprQuietOutputWindow* messages)
   if (options.Frames > 0)
   {
     // Each timed frame is a real one (the camera is modified, so nothing is reused) and ends
-    // with glFinish. With --compare-style the two styles alternate frame by frame in this window,
-    // so both see the same machine state.
+    // with glFinish. With --compare-style the styles alternate frame by frame in this window, so
+    // all see the same machine state.
     using Clock = std::chrono::steady_clock;
-    vtkSmartPointer<vtkNPRPass> comparePass;
-    if (!options.CompareStyle.empty() && options.CompareStyle != "shaded")
+    // One pass per style; "shaded" is VTK's own chain (no pass).
+    std::vector<std::string> styles = { options.Style };
+    styles.insert(styles.end(), options.CompareStyles.begin(), options.CompareStyles.end());
+    std::vector<vtkSmartPointer<vtkNPRPass>> passes = { pass };
+    for (size_t i = 1; i < styles.size(); ++i)
     {
       Options compare = options;
-      compare.Style = options.CompareStyle;
-      comparePass = MakePass(compare);
+      compare.Style = styles[i];
+      passes.push_back(styles[i] == "shaded" ? nullptr : MakePass(compare));
     }
-    const bool comparing = !options.CompareStyle.empty();
-    std::vector<double> times[2];
-    for (int i = -1; i < options.Frames; ++i) // frame -1: warm-up of both styles
+    std::vector<std::vector<double>> times(styles.size());
+    for (int i = -1; i < options.Frames; ++i) // frame -1: warm-up of every style
     {
-      for (int variant = 0; variant < (comparing ? 2 : 1); ++variant)
+      for (size_t variant = 0; variant < styles.size(); ++variant)
       {
-        renderer->SetPass(variant == 0 ? pass.Get() : comparePass.Get());
+        renderer->SetPass(passes[variant]);
         const Clock::time_point start = Clock::now();
         camera->Modified();
         window->Render();
@@ -707,17 +715,26 @@ int Run(const Options& options, nprQuietOutputWindow* messages)
       return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
     };
     auto milliseconds = [](double value) { return nprFormatNumber(std::round(value * 1e3) / 1e3); };
+    auto ratio = [](double value) { return nprFormatNumber(std::round(value * 1e3) / 1e3); };
     const std::vector<double>& main = times[0];
+    const double mainMedian = median(main);
     std::cout << "{\"style\":" << JsonString(options.Style) << ",\"frames\":" << main.size()
-              << ",\"median_ms\":" << milliseconds(median(main))
+              << ",\"median_ms\":" << milliseconds(mainMedian)
               << ",\"min_ms\":" << milliseconds(*std::min_element(main.begin(), main.end()))
               << ",\"max_ms\":" << milliseconds(*std::max_element(main.begin(), main.end()));
-    if (comparing)
+    if (styles.size() > 1)
     {
-      std::cout << ",\"compare_style\":" << JsonString(options.CompareStyle)
+      // The first compared style as before; every compared style with its time over the main's.
+      std::cout << ",\"compare_style\":" << JsonString(styles[1])
                 << ",\"compare_median_ms\":" << milliseconds(median(times[1]))
-                << ",\"ratio\":"
-                << nprFormatNumber(std::round(median(main) / median(times[1]) * 1e3) / 1e3);
+                << ",\"ratio\":" << ratio(mainMedian / median(times[1])) << ",\"compare\":[";
+      for (size_t i = 1; i < styles.size(); ++i)
+      {
+        std::cout << (i > 1 ? "," : "") << "{\"style\":" << JsonString(styles[i])
+                  << ",\"median_ms\":" << milliseconds(median(times[i]))
+                  << ",\"ratio_to_main\":" << ratio(median(times[i]) / mainMedian) << "}";
+      }
+      std::cout << "]";
     }
     std::cout << ",\"triangles\":" << triangles
               << ",\"pixels\":" << static_cast<long long>(width) * height
