@@ -1,0 +1,54 @@
+#!/bin/sh
+# Regenerates the images of Documentation/toon-sketch.md with the commands shown there.
+#
+#   Documentation/images/toon-sketch/make_images.sh build/bin/npr-render
+#
+# The commands run from the repository root (the model paths are relative to it) and write into
+# this folder; each is printed as toon-sketch.md shows it, "npr-render ... -o NAME.png".
+set -eu
+if [ $# -ne 1 ]; then
+  echo "usage: $0 NPR_RENDER" >&2
+  exit 2
+fi
+npr_render=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+out=$(cd "$(dirname "$0")" && pwd)
+cd "$out/../../.."
+
+# render NAME.png ARGS...: npr-render ARGS -o NAME.png, written into this folder
+render() {
+  name=$1
+  shift
+  echo "npr-render $* -o $name"
+  "$npr_render" "$@" -o "$out/$name"
+}
+
+cad="Testing/Data/cad_part.vtp --size 480x360 --azimuth 30 --elevation 30"
+bunny="Testing/Data/bunny.ply --size 480x360 --azimuth 20 --elevation 10"
+
+# Toon shading, alone and with lines.
+render toon.png $cad --style toon
+render toon_edges.png $cad --style toon+edges
+
+# Number of bands.
+render toon_bands_2.png $bunny --style toon --toon-bands 2
+render toon_bands_3.png $bunny --style toon --toon-bands 3
+render toon_bands_6.png $bunny --style toon --toon-bands 6
+
+# Per pixel and per vertex.
+render toon_per_pixel.png $cad --zoom 1.8 --style toon --toon-bands 5
+render toon_per_vertex.png $cad --zoom 1.8 --style toon --toon-bands 5 --toon-per-vertex
+
+# The sketch: default, on paper, and filled with toon bands.
+render sketch.png $cad --style sketch
+render sketch_paper.png $cad --style sketch --paper-color 1,0.97,0.9
+render sketch_toon.png $cad --style sketch --paper-color 1,0.97,0.9 --sketch-toon
+
+# Uncertainty.
+render sketch_uncertainty_0.png $bunny --style sketch --uncertainty 0
+render sketch_uncertainty_3.png $bunny --style sketch --uncertainty 3
+render sketch_uncertainty_8.png $bunny --style sketch --uncertainty 8
+
+# Noise frequency and seed.
+render sketch_frequency_0.5.png $bunny --style sketch --uncertainty 5 --noise-frequency 0.5
+render sketch_frequency_6.png $bunny --style sketch --uncertainty 5 --noise-frequency 6
+render sketch_seed_2.png $bunny --style sketch --uncertainty 5 --noise-seed 2
