@@ -2,6 +2,7 @@
 
 #include "vtkMath.h"
 #include "vtkNPRGBufferPass.h"
+#include "vtkNPRPassUtilities.h"
 #include "vtkNPRQuadProgram.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
@@ -136,14 +137,7 @@ vtkNPREdgePass::~vtkNPREdgePass()
 
 double vtkNPREdgePass::GetEffectiveLineWidth(vtkRenderer* renderer) const
 {
-  double scale = 1.0;
-  if (renderer && renderer->GetRenderWindow())
-  {
-    vtkWindow* window = renderer->GetRenderWindow();
-    scale = std::max(1, window->GetDPI()) / 72.0 *
-      std::max(1, std::max(window->GetTileScale()[0], window->GetTileScale()[1]));
-  }
-  return std::min(std::max(this->LineWidth * scale, 0.5), 32.0);
+  return std::min(std::max(this->LineWidth * vtkNPRWindowScale(renderer), 0.5), 32.0);
 }
 
 void vtkNPREdgePass::Render(const vtkRenderState* state)
@@ -288,21 +282,15 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
     program->SetUniform3f("creaseColor", this->CreaseColor);
     program->SetUniform3f("contourColor", this->ContourColor);
   }
-  int viewportWidth, viewportHeight, origin[2];
-  renderer->GetTiledSizeAndOrigin(&viewportWidth, &viewportHeight, origin, origin + 1);
-  if (state->GetFrameBuffer() || output == OutputLineCoverage)
+  int origin[2] = { 0, 0 };
+  if (output != OutputLineCoverage)
   {
-    origin[0] = origin[1] = 0;
+    vtkNPRViewportOrigin(state, origin);
   }
   program->SetUniform2i("viewportOrigin", origin);
 
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(glState, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(glState, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglScissor scissorSaver(glState);
-  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(glState);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(glState);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(glState);
+  vtkNPRCompositeState compositeState(glState);
+  compositeState.Apply();
   // Outside the props' projected bounds there is only background: nothing to write there.
   const int* rect = gbuffer->GetContentRectangle();
   if (output == OutputMask)
@@ -321,15 +309,6 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
     glState->vtkglDisable(GL_DEPTH_TEST);
     glState->vtkglDepthMask(GL_FALSE);
     glState->vtkglDisable(GL_BLEND);
-  }
-  else
-  {
-    glState->vtkglEnable(GL_DEPTH_TEST);
-    glState->vtkglDepthFunc(GL_LEQUAL);
-    glState->vtkglDepthMask(GL_TRUE);
-    glState->vtkglEnable(GL_BLEND);
-    glState->vtkglBlendFuncSeparate(
-      GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   }
   composite.Render();
 

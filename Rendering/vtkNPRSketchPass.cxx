@@ -6,6 +6,7 @@
 #include "vtkNew.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
+#include "vtkNPRPassUtilities.h"
 #include "vtkNPRQuadProgram.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
@@ -88,17 +89,6 @@ void NormalisedMatrix(const double m[4], double out[4])
     out[i] = std::isfinite(m[i]) ? m[i] * scale : 0.0;
   }
 }
-
-double WindowScale(vtkRenderer* renderer)
-{
-  if (!renderer || !renderer->GetRenderWindow())
-  {
-    return 1.0;
-  }
-  vtkWindow* window = renderer->GetRenderWindow();
-  return std::max(1, window->GetDPI()) / 72.0 *
-    std::max(1, std::max(window->GetTileScale()[0], window->GetTileScale()[1]));
-}
 }
 
 struct vtkNPRSketchPass::Internals
@@ -138,12 +128,12 @@ vtkNPRSketchPass::~vtkNPRSketchPass()
 
 double vtkNPRSketchPass::GetEffectiveUncertainty(vtkRenderer* renderer) const
 {
-  return this->Uncertainty * WindowScale(renderer);
+  return this->Uncertainty * vtkNPRWindowScale(renderer);
 }
 
 double vtkNPRSketchPass::GetEffectiveNoiseScale(vtkRenderer* renderer) const
 {
-  return this->NoiseFrequency / 100.0 * TexelsPerCell / WindowScale(renderer);
+  return this->NoiseFrequency / 100.0 * TexelsPerCell / vtkNPRWindowScale(renderer);
 }
 
 vtkImageData* vtkNPRSketchPass::GetNoiseImage()
@@ -340,22 +330,12 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
   program->SetUniform3f("silhouetteColor", this->EdgePass->GetSilhouetteColor());
   program->SetUniform3f("creaseColor", this->EdgePass->GetCreaseColor());
   program->SetUniform3f("contourColor", this->EdgePass->GetContourColor());
-  int viewportWidth, viewportHeight, origin[2];
-  renderer->GetTiledSizeAndOrigin(&viewportWidth, &viewportHeight, origin, origin + 1);
-  if (state->GetFrameBuffer())
-  {
-    origin[0] = origin[1] = 0;
-  }
+  int origin[2];
+  vtkNPRViewportOrigin(state, origin);
   program->SetUniform2i("viewportOrigin", origin);
 
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(glState, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(glState, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglScissor scissorSaver(glState);
-  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(glState);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(glState);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(glState);
-  glState->vtkglEnable(GL_SCISSOR_TEST);
+  vtkNPRCompositeState compositeState(glState);
+  compositeState.Apply();
   if (this->Paper)
   {
     glState->vtkglScissor(origin[0], origin[1], width, height);
@@ -370,12 +350,6 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
     glState->vtkglScissor(
       origin[0] + x0, origin[1] + y0, std::max(0, x1 - x0 + 1), std::max(0, y1 - y0 + 1));
   }
-  glState->vtkglEnable(GL_DEPTH_TEST);
-  glState->vtkglDepthFunc(GL_LEQUAL);
-  glState->vtkglDepthMask(GL_TRUE);
-  glState->vtkglEnable(GL_BLEND);
-  glState->vtkglBlendFuncSeparate(
-    GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   internal.Sketch.Render();
 
   color->Deactivate();

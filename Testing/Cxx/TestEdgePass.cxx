@@ -66,8 +66,6 @@
 
 namespace
 {
-std::string DataDir;
-
 struct Scene
 {
   vtkSmartPointer<vtkRenderWindow> Window;
@@ -1025,7 +1023,7 @@ int Windows()
 int Baseline(const char* model, const char* name)
 {
   vtkNew<vtkNPRModelReader> reader;
-  reader->SetFileName((DataDir + "/" + model).c_str());
+  reader->SetFileName((nprTestDataDir() + "/" + model).c_str());
   reader->Update();
   NPR_CHECK(!*reader->GetErrorMessage(), reader->GetErrorMessage());
   vtkNew<vtkPolyDataNormals> normals;
@@ -1048,14 +1046,6 @@ int Baseline(const char* model, const char* name)
 
 int main(int argc, char* argv[])
 {
-  if (argc < 2)
-  {
-    std::cerr << "usage: TestEdgePass CASE [DATA_DIR]\n";
-    return 2;
-  }
-  DataDir = argc > 2 ? argv[2] : ".";
-  vtkNew<nprCountingOutputWindow> output;
-  vtkOutputWindow::SetInstance(output);
   const std::map<std::string, std::function<int()>> cases = {
     { "cube", [] { return CubeEdges(false); } },
     { "cube-parallel", [] { return CubeEdges(true); } },
@@ -1073,18 +1063,5 @@ int main(int argc, char* argv[])
     { "baseline-cad", [] { return Baseline("cad_part.vtp", "edges_cad_part"); } },
     { "baseline-bunny", [] { return Baseline("bunny.ply", "edges_bunny"); } },
   };
-  const auto found = cases.find(argv[1]);
-  if (found == cases.end())
-  {
-    std::cerr << "unknown case " << argv[1] << "\n";
-    return 2;
-  }
-  int result = found->second();
-  NPR_CHECK(output->Errors == 0, output->Errors << " VTK errors reported");
-  if (output->Errors)
-  {
-    result = nprTestResult();
-  }
-  vtkOutputWindow::SetInstance(nullptr);
-  return result;
+  return nprRunTestCase(argc, argv, cases);
 }

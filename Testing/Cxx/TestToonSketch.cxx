@@ -39,8 +39,6 @@
 
 namespace
 {
-std::string DataDir;
-
 struct Scene
 {
   vtkSmartPointer<vtkRenderWindow> Window;
@@ -623,7 +621,7 @@ int SketchLayer()
 int Baseline(const char* model, const char* name, int style, bool paper)
 {
   vtkNew<vtkNPRModelReader> reader;
-  reader->SetFileName((DataDir + "/" + model).c_str());
+  reader->SetFileName((nprTestDataDir() + "/" + model).c_str());
   reader->Update();
   NPR_CHECK(!*reader->GetErrorMessage(), reader->GetErrorMessage());
   vtkNew<vtkPolyDataNormals> normals;
@@ -650,14 +648,6 @@ int Baseline(const char* model, const char* name, int style, bool paper)
 
 int main(int argc, char* argv[])
 {
-  if (argc < 2)
-  {
-    std::cerr << "usage: TestToonSketch CASE [DATA_DIR]\n";
-    return 2;
-  }
-  DataDir = argc > 2 ? argv[2] : ".";
-  vtkNew<nprCountingOutputWindow> output;
-  vtkOutputWindow::SetInstance(output);
   const std::map<std::string, std::function<int()>> cases = {
     { "toon-bands", ToonBands },
     { "toon-scalars", ToonScalars },
@@ -675,18 +665,5 @@ int main(int argc, char* argv[])
     { "baseline-sketch-cad",
       [] { return Baseline("cad_part.vtp", "sketch_cad_part", vtkNPRPass::SKETCH, true); } },
   };
-  const auto found = cases.find(argv[1]);
-  if (found == cases.end())
-  {
-    std::cerr << "unknown case " << argv[1] << "\n";
-    return 2;
-  }
-  int result = found->second();
-  NPR_CHECK(output->Errors == 0, output->Errors << " VTK errors reported");
-  if (output->Errors)
-  {
-    result = nprTestResult();
-  }
-  vtkOutputWindow::SetInstance(nullptr);
-  return result;
+  return nprRunTestCase(argc, argv, cases);
 }

@@ -38,6 +38,39 @@ void nprCountingOutputWindow::DisplayWarningText(const char* text)
   std::cerr << "VTK warning: " << text << "\n";
 }
 
+std::string& nprTestDataDir()
+{
+  static std::string folder = ".";
+  return folder;
+}
+
+int nprRunTestCase(
+  int argc, char* argv[], const std::map<std::string, std::function<int()>>& cases)
+{
+  const auto found = argc >= 2 ? cases.find(argv[1]) : cases.end();
+  if (found == cases.end())
+  {
+    std::cerr << "usage: " << argv[0] << " CASE [DATA_DIR]; CASE is one of:";
+    for (const auto& entry : cases)
+    {
+      std::cerr << " " << entry.first;
+    }
+    std::cerr << "\n";
+    return 2;
+  }
+  nprTestDataDir() = argc > 2 ? argv[2] : ".";
+  vtkNew<nprCountingOutputWindow> output;
+  vtkOutputWindow::SetInstance(output);
+  int result = found->second();
+  NPR_CHECK(output->Errors == 0, output->Errors << " VTK errors reported");
+  if (output->Errors)
+  {
+    result = nprTestResult();
+  }
+  vtkOutputWindow::SetInstance(nullptr);
+  return result;
+}
+
 vtkSmartPointer<vtkActor> nprAddActor(
   vtkRenderer* renderer, vtkAlgorithmOutput* port, const double color[3])
 {

@@ -17,7 +17,9 @@
 #include "vtkOutputWindow.h"
 #include "vtkSmartPointer.h"
 
+#include <functional>
 #include <iostream>
+#include <map>
 #include <string>
 
 class vtkActor;
@@ -38,6 +40,14 @@ public:
   int Errors = 0;
   int Warnings = 0;
 };
+
+// The data folder given to a test program (its second argument; "." without one).
+std::string& nprTestDataDir();
+
+// The main of a test program of named cases: "PROGRAM CASE [DATA_DIR]". Runs the case with an
+// nprCountingOutputWindow installed and fails it when VTK reported an error; 2 for a bad call.
+int nprRunTestCase(
+  int argc, char* argv[], const std::map<std::string, std::function<int()>>& cases);
 
 // An actor of the port's polygons (through a vtkPolyDataMapper) added to the renderer.
 vtkSmartPointer<vtkActor> nprAddActor(

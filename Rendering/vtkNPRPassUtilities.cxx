@@ -1,0 +1,53 @@
+#include "vtkNPRPassUtilities.h"
+
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkRenderWindow.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+
+double vtkNPRWindowScale(vtkRenderer* renderer)
+{
+  if (!renderer || !renderer->GetRenderWindow())
+  {
+    return 1.0;
+  }
+  vtkWindow* window = renderer->GetRenderWindow();
+  return std::max(1, window->GetDPI()) / 72.0 *
+    std::max(1, std::max(window->GetTileScale()[0], window->GetTileScale()[1]));
+}
+
+void vtkNPRViewportOrigin(const vtkRenderState* state, int origin[2])
+{
+  int width, height;
+  state->GetRenderer()->GetTiledSizeAndOrigin(&width, &height, origin, origin + 1);
+  if (state->GetFrameBuffer())
+  {
+    origin[0] = origin[1] = 0;
+  }
+}
+
+vtkNPRCompositeState::vtkNPRCompositeState(vtkOpenGLState* state)
+  : State(state)
+  , DepthTest(state, GL_DEPTH_TEST)
+  , Blend(state, GL_BLEND)
+  , ScissorTest(state, GL_SCISSOR_TEST)
+  , Scissor(state)
+  , DepthFunc(state)
+  , DepthMask(state)
+  , BlendFunc(state)
+{
+}
+
+void vtkNPRCompositeState::Apply()
+{
+  this->State->vtkglEnable(GL_SCISSOR_TEST);
+  this->State->vtkglEnable(GL_DEPTH_TEST);
+  this->State->vtkglDepthFunc(GL_LEQUAL);
+  this->State->vtkglDepthMask(GL_TRUE);
+  this->State->vtkglEnable(GL_BLEND);
+  this->State->vtkglBlendFuncSeparate(
+    GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+}

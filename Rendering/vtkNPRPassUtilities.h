@@ -1,0 +1,37 @@
+// Helpers shared by the module's passes. Private to the module.
+#ifndef vtkNPRPassUtilities_h
+#define vtkNPRPassUtilities_h
+
+#include "vtkOpenGLState.h" // for the scoped state savers
+
+class vtkRenderState;
+class vtkRenderer;
+
+// How many pixels one pixel at 72 DPI is in this renderer's window: DPI / 72 x tile scale.
+double vtkNPRWindowScale(vtkRenderer* renderer);
+
+// Where the renderer's viewport starts in the framebuffer being drawn (0, 0 in a pass's own
+// framebuffer object).
+void vtkNPRViewportOrigin(const vtkRenderState* state, int origin[2]);
+
+// The state a full-screen depth-sprite composite changes, restored when this goes out of scope.
+// Apply() sets what the composites need: depth test LEQUAL with depth writes (gl_FragDepth),
+// alpha blending of colour over what is there, scissor test on.
+class vtkNPRCompositeState
+{
+public:
+  explicit vtkNPRCompositeState(vtkOpenGLState* state);
+  void Apply();
+
+private:
+  vtkOpenGLState* State;
+  vtkOpenGLState::ScopedglEnableDisable DepthTest;
+  vtkOpenGLState::ScopedglEnableDisable Blend;
+  vtkOpenGLState::ScopedglEnableDisable ScissorTest;
+  vtkOpenGLState::ScopedglScissor Scissor;
+  vtkOpenGLState::ScopedglDepthFunc DepthFunc;
+  vtkOpenGLState::ScopedglDepthMask DepthMask;
+  vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
+};
+
+#endif
