@@ -2,7 +2,8 @@
 // the number and values of the toon shades, the bands over scalar colours, the G-buffer redrawn
 // when the table changes; the sketch with no uncertainty equal to the edges on flat colours, the
 // lines displaced by no more than the uncertainty, the z-buffer equal to the smaller of the two
-// displaced depth lookups, a second layer hidden by the sketch as drawn; and baseline images.
+// displaced depth lookups, a second layer hidden by the sketch as drawn; windows, resizes and
+// releases; and baseline images.
 //
 // usage: TestToonSketch CASE [DATA_DIR]   (CASE: see the table at the end of this file)
 #include "nprTesting.h"
@@ -10,6 +11,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
+#include "vtkDataArray.h"
 #include "vtkElevationFilter.h"
 #include "vtkImageData.h"
 #include "vtkActorCollection.h"
@@ -21,6 +23,8 @@
 #include "vtkNPRSketchPass.h"
 #include "vtkNPRToonPass.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
@@ -228,6 +232,30 @@ int ToonBands()
   scene.Toon()->GetShade(0.2, shade);
   NPR_CHECK(std::abs(shade[0] - 0.25) < 1.0 / 255, "GetShade(0.2) with the table gives " << shade[0]);
   scene.Toon()->SetTable(nullptr);
+
+  // Zero-length normals: no NaN colour, only band colours (the darkest where n is 0).
+  vtkNew<vtkPolyData> flattened;
+  coarse->Update();
+  flattened->DeepCopy(coarse->GetOutput());
+  vtkDataArray* normals = flattened->GetPointData()->GetNormals();
+  for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); i += 2)
+  {
+    normals->SetTuple3(i, 0.0, 0.0, 0.0);
+  }
+  vtkPolyDataMapper::SafeDownCast(sphere->GetMapper())->SetInputData(flattened);
+  for (bool perVertex : { false, true })
+  {
+    scene.Toon()->SetPerVertex(perVertex);
+    const std::set<Color> colors = ObjectColors(scene.Render());
+    for (const Color& c : colors)
+    {
+      const bool known =
+        std::any_of(shades.begin(), shades.end(), [&](const Color& e) { return Near(c, e); });
+      NPR_CHECK(known, "zero-length normals give the colour " << c[0] << "," << c[1] << "," << c[2]);
+    }
+    NPR_CHECK(colors.size() >= 2, "zero-length normals: " << colors.size() << " colours");
+  }
+  scene.Toon()->SetPerVertex(false);
 
   // An unlit actor keeps its flat colour.
   sphere->GetProperty()->LightingOff();
@@ -617,6 +645,52 @@ int SketchLayer()
   return nprTestResult();
 }
 
+// ---- Several windows, a resize and a release: every style draws each time ----
+int Windows()
+{
+  const double color[3] = { 0.9, 0.6, 0.3 };
+  auto check = [&](Scene& scene, const std::string& what) {
+    auto image = scene.Render();
+    long long object = 0, dark = 0;
+    for (int y = 0; y < scene.Height; ++y)
+    {
+      for (int x = 0; x < scene.Width; ++x)
+      {
+        const int r = nprPixel(image, x, y, 0), g = nprPixel(image, x, y, 1);
+        object += (r != 255 || g != 255) ? 1 : 0;
+        dark += std::max(r, g) < 60 ? 1 : 0;
+      }
+    }
+    const bool lines = scene.Pass->GetStyle() != vtkNPRPass::TOON;
+    NPR_CHECK(object > 2000, what << ": only " << object << " object pixels");
+    NPR_CHECK(!lines || dark > 100, what << ": only " << dark << " line pixels");
+  };
+  for (int style : { vtkNPRPass::TOON, vtkNPRPass::TOON_EDGES, vtkNPRPass::SKETCH })
+  {
+    const std::string name = vtkNPRPass::GetStyleName(style);
+    for (int round = 0; round < 2; ++round)
+    {
+      Scene first(200, 150), second(160, 120);
+      for (Scene* scene : { &first, &second })
+      {
+        const double origin[3] = { 0, 0, 0 };
+        AddSphere(scene->Renderer, origin, 1.0, color, 32);
+        scene->LookAtOrigin(4.5);
+        scene->Pass->SetStyle(style);
+      }
+      check(first, name + " first window");
+      check(second, name + " second window");
+      first.Window->SetSize(260, 180);
+      first.Width = 260;
+      first.Height = 180;
+      check(first, name + " resized");
+      first.Pass->ReleaseGraphicsResources(first.Window);
+      check(first, name + " after ReleaseGraphicsResources");
+    }
+  }
+  return nprTestResult();
+}
+
 // ---- Baselines ----
 int Baseline(const char* model, const char* name, int style, bool paper)
 {
@@ -656,6 +730,7 @@ int main(int argc, char* argv[])
     { "sketch-displacement", SketchDisplacement },
     { "sketch-depth", SketchDepth },
     { "sketch-layer", SketchLayer },
+    { "windows", Windows },
     { "baseline-toon-bunny",
       [] { return Baseline("bunny.ply", "toon_bunny", vtkNPRPass::TOON, false); } },
     { "baseline-toon-cad",
