@@ -1,12 +1,12 @@
 #include "vtkNPRGBufferPass.h"
 
 #include "vtkCamera.h"
-#include "vtkHardwareSelector.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNPRPassUtilities.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLError.h"
@@ -280,14 +280,10 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   }
   vtkRenderer* renderer = state->GetRenderer();
 
-  // Picking renders through the pass chain too; run the selector as vtkOpenGLRenderer would.
-  vtkHardwareSelector* selector = renderer->GetSelector();
-  this->LastRenderWasSelection = selector != nullptr;
-  if (selector)
+  this->LastRenderWasSelection = vtkNPRRenderSelection(state, this->NumberOfRenderedProps);
+  if (this->LastRenderWasSelection)
   {
-    this->NumberOfRenderedProps =
-      selector->Render(renderer, state->GetPropArray(), state->GetPropArrayCount());
-    return;
+    return; // a picking render: no G-buffer
   }
 
   int opaqueProps = 0;

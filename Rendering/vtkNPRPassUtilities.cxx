@@ -1,5 +1,6 @@
 #include "vtkNPRPassUtilities.h"
 
+#include "vtkHardwareSelector.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
@@ -17,6 +18,18 @@ double vtkNPRWindowScale(vtkRenderer* renderer)
   vtkWindow* window = renderer->GetRenderWindow();
   return std::max(1, window->GetDPI()) / 72.0 *
     std::max(1, std::max(window->GetTileScale()[0], window->GetTileScale()[1]));
+}
+
+bool vtkNPRRenderSelection(const vtkRenderState* state, int& renderedProps)
+{
+  vtkRenderer* renderer = state->GetRenderer();
+  vtkHardwareSelector* selector = renderer->GetSelector();
+  if (!selector)
+  {
+    return false;
+  }
+  renderedProps = selector->Render(renderer, state->GetPropArray(), state->GetPropArrayCount());
+  return true;
 }
 
 void vtkNPRViewportOrigin(const vtkRenderState* state, int origin[2])

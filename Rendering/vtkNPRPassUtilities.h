@@ -10,6 +10,11 @@ class vtkRenderer;
 // How many pixels one pixel at 72 DPI is in this renderer's window: DPI / 72 x tile scale.
 double vtkNPRWindowScale(vtkRenderer* renderer);
 
+// VTK 9.1 does not call the hardware selector once a renderer has a pass: a pass that draws the
+// props runs it itself during a selection render. Returns false (and does nothing) otherwise;
+// true with the number of props the selector rendered.
+bool vtkNPRRenderSelection(const vtkRenderState* state, int& renderedProps);
+
 // Where the renderer's viewport starts in the framebuffer being drawn (0, 0 in a pass's own
 // framebuffer object).
 void vtkNPRViewportOrigin(const vtkRenderState* state, int origin[2]);

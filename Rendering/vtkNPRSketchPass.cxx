@@ -97,6 +97,12 @@ struct vtkNPRSketchPass::Internals
   std::string Source;
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
   vtkTextureObject* CoverageTexture = nullptr;
+  // What the coverage texture was computed from: the G-buffer's content and the edge pass's
+  // settings, at a line width and size; unchanged frames reuse it.
+  bool CoverageValid = false;
+  unsigned long CoverageContentVersion = 0;
+  vtkMTimeType CoverageEdgeTime = 0;
+  double CoverageLineWidth = 0.0;
   vtkTextureObject* NoiseTexture = nullptr;
   vtkNew<vtkImageData> NoiseImage;
   bool NoiseValid = false;
@@ -235,7 +241,8 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
   const int width = depth->GetWidth();
   const int height = depth->GetHeight();
 
-  // ---- The lines' coverage and depth, unperturbed, into a texture of the G-buffer's size ----
+  // ---- The lines' coverage and depth, unperturbed, into a texture of the G-buffer's size,
+  // recomputed only when the G-buffer or the line settings changed ----
   if (!internal.CoverageTexture)
   {
     internal.CoverageTexture = vtkTextureObject::New();
@@ -251,8 +258,16 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
     internal.Framebuffer = vtkOpenGLFramebufferObject::New();
     internal.Framebuffer->SetContext(window);
   }
-  internal.CoverageTexture->Resize(width, height);
+  const double lineWidth = this->EdgePass->GetEffectiveLineWidth(renderer);
+  const bool coverageCurrent = internal.CoverageValid &&
+    internal.CoverageContentVersion == gbuffer->GetContentVersion() &&
+    internal.CoverageEdgeTime == this->EdgePass->GetMTime() &&
+    internal.CoverageLineWidth == lineWidth &&
+    internal.CoverageTexture->GetWidth() == static_cast<unsigned int>(width) &&
+    internal.CoverageTexture->GetHeight() == static_cast<unsigned int>(height);
+  if (!coverageCurrent)
   {
+    internal.CoverageTexture->Resize(width, height);
     vtkOpenGLState::ScopedglViewport viewportSaver(glState);
     vtkOpenGLState::ScopedglClearColor clearColorSaver(glState);
     vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
@@ -268,6 +283,10 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
     this->EdgePass->RenderLineCoverage(state);
     internal.Framebuffer->RemoveColorAttachments(1);
     glState->PopFramebufferBindings();
+    internal.CoverageValid = true;
+    internal.CoverageContentVersion = gbuffer->GetContentVersion();
+    internal.CoverageEdgeTime = this->EdgePass->GetMTime();
+    internal.CoverageLineWidth = lineWidth;
   }
 
   // ---- The noise tile ----
@@ -363,6 +382,7 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
 void vtkNPRSketchPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   Internals& internal = *this->Internal;
+  internal.CoverageValid = false;
   internal.Sketch.Release(window);
   for (vtkTextureObject** texture : { &internal.CoverageTexture, &internal.NoiseTexture })
   {

@@ -2,10 +2,10 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkHardwareSelector.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
+#include "vtkNPRPassUtilities.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLPolyDataMapper.h"
@@ -219,14 +219,11 @@ void vtkNPRToonPass::Render(const vtkRenderState* state)
     vtkWarningMacro("no delegate pass: nothing drawn");
     return;
   }
-  vtkRenderer* renderer = state->GetRenderer();
-  // Picking renders through the pass chain too; run the selector as vtkOpenGLRenderer would.
-  if (vtkHardwareSelector* selector = renderer->GetSelector())
+  if (vtkNPRRenderSelection(state, this->NumberOfRenderedProps))
   {
-    this->NumberOfRenderedProps =
-      selector->Render(renderer, state->GetPropArray(), state->GetPropArrayCount());
-    return;
+    return; // a picking render
   }
+  vtkRenderer* renderer = state->GetRenderer();
 
   this->UpdateTable(renderer->GetRenderWindow());
   this->UpdateLights(state);
