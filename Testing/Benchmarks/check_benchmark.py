@@ -1,0 +1,118 @@
+#!/usr/bin/python3
+"""Smoke test of npr-benchmark: runs it with --quick (or --stress --quick) and checks that the
+files are written and that every figure is sane (F1 in [0, 1], no NaN, positive times).
+
+usage: check_benchmark.py --npr-benchmark EXE --data DIR --out DIR [--stress]"""
+import argparse
+import csv
+import math
+import os
+import shutil
+import subprocess
+import sys
+
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("check failed: " + message, file=sys.stderr)
+
+
+def number(row, key):
+    text = row[key]
+    try:
+        value = float(text)
+    except ValueError:
+        check(False, "%s is not a number: %r" % (key, text))
+        return float("nan")
+    check(math.isfinite(value), "%s is not finite: %r in %s" % (key, text, row))
+    return value
+
+
+def check_png(path):
+    check(os.path.isfile(path), path + " missing")
+    if os.path.isfile(path):
+        with open(path, "rb") as f:
+            check(f.read(8) == b"\x89PNG\r\n\x1a\n", path + " is not a PNG")
+        check(os.path.getsize(path) > 5000, path + " is nearly empty")
+
+
+def read_csv(path):
+    check(os.path.isfile(path), path + " missing")
+    if not os.path.isfile(path):
+        return []
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def check_benchmark(out):
+    rows = read_csv(os.path.join(out, "results.csv"))
+    check(len(rows) >= 2, "results.csv has %d rows" % len(rows))
+    methods = {row["method"] for row in rows}
+    check("edges-float" in methods, "edges-float missing from " + str(sorted(methods)))
+    for row in rows:
+        for key in ("precision_1px", "recall_1px", "f1_1px", "precision_2px", "recall_2px",
+                    "f1_2px"):
+            value = number(row, key)
+            check(0.0 <= value <= 1.0, "%s out of [0, 1]: %s" % (key, row))
+        check(number(row, "f1_2px") >= number(row, "f1_1px"), "F1@2 < F1@1: %s" % row)
+        check(number(row, "mean_distance_px") >= 0.0, "negative distance: %s" % row)
+        check(number(row, "median_ms") > 0.0 and number(row, "ratio_to_shaded") > 0.0,
+              "times: %s" % row)
+        check(int(row["reference_pixels"]) > 0 and int(row["method_pixels"]) > 0,
+              "an empty mask: %s" % row)
+    # The float edge pass finds the CAD part's lines: a broken mask reader would not.
+    for row in rows:
+        if row["method"] == "edges-float":
+            check(number(row, "f1_2px") > 0.5, "edges-float F1@2 %s" % row["f1_2px"])
+    md = open(os.path.join(out, "results.md")).read() if os.path.isfile(
+        os.path.join(out, "results.md")) else ""
+    check("| method | size |" in md and "edges-float" in md, "results.md has no table")
+    check("nan" not in md.lower().replace("nanosecond", ""), "results.md has a NaN")
+    check_png(os.path.join(out, "time_vs_f1.png"))
+
+
+def check_stress(out):
+    rows = read_csv(os.path.join(out, "stress.csv"))
+    cases = {row["case"] for row in rows}
+    for case in ("unit", "scale 1e-6", "scale 1e6", "translate 1e7", "near/far 1e6 (near)",
+                 "slivers", "duplicate vertices", "zero normals", "NaN points"):
+        check(case in cases, "stress case %r missing from %s" % (case, sorted(cases)))
+    for row in rows:
+        for key in ("f1_1px_own_reference", "f1_1px_unit_reference", "reference_f1_vs_unit"):
+            value = number(row, key)
+            check(0.0 <= value <= 1.0, "%s out of [0, 1]: %s" % (key, row))
+        for key in ("stray_pixels", "coverage_changed", "nonfinite_pixels", "bad_depth_pixels"):
+            check(int(row[key]) >= 0, "%s: %s" % (key, row))
+        if row["case"] == "unit":
+            check(number(row, "drift") == 0.0, "unit drift: %s" % row)
+            check(number(row, "f1_1px_own_reference") > 0.5, "unit F1: %s" % row)
+    check(os.path.isfile(os.path.join(out, "stress.md")), "stress.md missing")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--npr-benchmark", required=True)
+    parser.add_argument("--data", required=True)
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--stress", action="store_true")
+    args = parser.parse_args()
+    shutil.rmtree(args.out, ignore_errors=True)
+    command = [args.npr_benchmark, "--quick", "--data", args.data, "--out", args.out]
+    if args.stress:
+        command.append("--stress")
+    print(" ".join(command))
+    result = subprocess.run(command)
+    check(result.returncode == 0, "npr-benchmark exited with %d" % result.returncode)
+    if args.stress:
+        check_stress(args.out)
+    else:
+        check_benchmark(args.out)
+    print("FAILED (%d failed checks)" % len(failures) if failures else "PASSED")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

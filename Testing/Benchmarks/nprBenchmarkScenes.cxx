@@ -1,0 +1,342 @@
+#include "nprBenchmarkScenes.h"
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDoubleArray.h"
+#include "vtkFlyingEdges3D.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkNPRModelReader.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkRenderer.h"
+#include "vtkTriangleFilter.h"
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+
+namespace
+{
+// Only the geometry and the triangles: colours and other arrays play no part in the benchmark,
+// and double-precision points keep the stress variants' transforms exact in memory.
+vtkSmartPointer<vtkPolyData> Geometry(vtkPolyData* input)
+{
+  vtkNew<vtkTriangleFilter> triangles; // strips and polygons as triangles, no verts or lines
+  triangles->SetInputData(input);
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  triangles->Update();
+  vtkPolyData* output = triangles->GetOutput();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->DeepCopy(output->GetPoints());
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(output->GetPolys());
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> ReadModel(const std::string& path)
+{
+  if (!std::ifstream(path))
+  {
+    throw std::runtime_error(path + ": no such file");
+  }
+  vtkNew<vtkNPRModelReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (*reader->GetErrorMessage())
+  {
+    throw std::runtime_error(reader->GetErrorMessage());
+  }
+  return Geometry(reader->GetOutput());
+}
+
+// A closed, wavy isosurface of VTK's analytic wavelet: 101^3 samples, value 200 (about 103k
+// triangles in 10 closed pieces, no boundary).
+vtkSmartPointer<vtkPolyData> Isosurface()
+{
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-50, 50, -50, 50, -50, 50);
+  vtkNew<vtkFlyingEdges3D> contour;
+  contour->SetInputConnection(wavelet->GetOutputPort());
+  contour->SetValue(0, 200.0);
+  contour->ComputeNormalsOff(); // normals as for the files, below
+  contour->ComputeScalarsOff();
+  contour->Update();
+  return Geometry(contour->GetOutput());
+}
+
+// Copies a mesh with new points (same cells).
+vtkSmartPointer<vtkPolyData> WithPoints(vtkPolyData* raw, vtkPoints* points)
+{
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(raw->GetPolys());
+  return mesh;
+}
+}
+
+const std::vector<std::string>& nprBenchmarkSceneNames()
+{
+  static const std::vector<std::string> names = { "cad", "rotor", "bunny", "isosurface",
+    "bunny1m" };
+  return names;
+}
+
+nprBenchmarkScene nprLoadBenchmarkScene(
+  const std::string& name, const std::string& dataDir, const std::string& denseMesh)
+{
+  nprBenchmarkScene scene;
+  scene.Name = name;
+  if (name == "cad")
+  {
+    scene.Raw = ReadModel(dataDir + "/cad_part.vtp");
+    scene.Description = "CAD part (cad_part.vtp)";
+  }
+  else if (name == "rotor")
+  {
+    scene.Raw = ReadModel(dataDir + "/rotor.ply");
+    scene.Description = "rotor (rotor.ply)";
+  }
+  else if (name == "bunny")
+  {
+    scene.Raw = ReadModel(dataDir + "/bunny.ply");
+    scene.Description = "Stanford bunny (bunny.ply)";
+  }
+  else if (name == "isosurface")
+  {
+    scene.Raw = Isosurface();
+    scene.Description = "isosurface of vtkRTAnalyticSource, extent [-50,50]^3, value 200";
+  }
+  else if (name == "bunny1m")
+  {
+    scene.Raw = ReadModel(denseMesh);
+    scene.Description = "bunny refined twice by Loop subdivision (bunny_1m.ply)";
+  }
+  else
+  {
+    throw std::runtime_error("unknown scene '" + name + "'");
+  }
+  scene.Mesh = nprPrepareMesh(scene.Raw);
+  scene.Triangles = nprCountTriangles(scene.Mesh);
+  return scene;
+}
+
+vtkSmartPointer<vtkPolyData> nprPrepareMesh(vtkPolyData* raw)
+{
+  if (raw->GetPointData()->GetNormals())
+  {
+    return raw;
+  }
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(raw);
+  normals->SetFeatureAngle(30.0);
+  normals->SplittingOn();
+  normals->ConsistencyOff();
+  normals->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(normals->GetOutput());
+  return mesh;
+}
+
+long long nprCountTriangles(vtkPolyData* mesh)
+{
+  vtkCellArray* polys = mesh->GetPolys();
+  return static_cast<long long>(polys->GetNumberOfConnectivityIds() - 2 * polys->GetNumberOfCells());
+}
+
+const std::vector<nprBenchmarkCamera>& nprBenchmarkCameras()
+{
+  static const std::vector<nprBenchmarkCamera> cameras = { { "a30e20", 30.0, 20.0 },
+    { "a-60e35", -60.0, 35.0 }, { "a160e-15", 160.0, -15.0 } };
+  return cameras;
+}
+
+void nprApplyBenchmarkCamera(vtkRenderer* renderer, const nprBenchmarkCamera& preset)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.0, 0.0, 1.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->ParallelProjectionOff();
+  renderer->ResetCamera();
+  camera->Azimuth(preset.Azimuth);
+  camera->Elevation(preset.Elevation);
+  camera->OrthogonalizeViewUp();
+  renderer->ResetCameraClippingRange();
+}
+
+double nprModelSize(vtkPolyData* mesh)
+{
+  double bounds[6];
+  mesh->GetPoints()->GetBounds(bounds);
+  return std::sqrt(vtkMath::Distance2BetweenPoints(
+    std::array<double, 3>{ bounds[0], bounds[2], bounds[4] }.data(),
+    std::array<double, 3>{ bounds[1], bounds[3], bounds[5] }.data()));
+}
+
+vtkSmartPointer<vtkPolyData> nprScaledMesh(vtkPolyData* raw, double factor)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(raw->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < raw->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    raw->GetPoint(i, p);
+    points->SetPoint(i, p[0] * factor, p[1] * factor, p[2] * factor);
+  }
+  return WithPoints(raw, points);
+}
+
+vtkSmartPointer<vtkPolyData> nprTranslatedMesh(vtkPolyData* raw, double distance)
+{
+  double direction[3] = { 1.0, 0.7, 0.4 };
+  vtkMath::Normalize(direction);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(raw->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < raw->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    raw->GetPoint(i, p);
+    for (int c = 0; c < 3; ++c)
+    {
+      p[c] += distance * direction[c];
+    }
+    points->SetPoint(i, p);
+  }
+  return WithPoints(raw, points);
+}
+
+vtkSmartPointer<vtkPolyData> nprSliverMesh(vtkPolyData* raw)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->DeepCopy(raw->GetPoints());
+  vtkNew<vtkCellArray> polys;
+  polys->DeepCopy(raw->GetPolys());
+  auto cells = vtk::TakeSmartPointer(raw->GetPolys()->NewIterator());
+  vtkIdType index = 0;
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++index)
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    if (index % 5 != 0 || size != 3)
+    {
+      continue;
+    }
+    double a[3], b[3], c[3];
+    points->GetPoint(ids[0], a);
+    points->GetPoint(ids[1], b);
+    points->GetPoint(ids[2], c);
+    // The apex: the edge's midpoint moved towards the third point by 1e-6 of the edge's length,
+    // so the needle lies inside its triangle (no new visible geometry).
+    const double length = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+    double apex[3], towards[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      apex[k] = 0.5 * (a[k] + b[k]);
+      towards[k] = c[k] - apex[k];
+    }
+    vtkMath::Normalize(towards);
+    for (int k = 0; k < 3; ++k)
+    {
+      apex[k] += 1e-6 * length * towards[k];
+    }
+    const vtkIdType needle[3] = { ids[0], ids[1], points->InsertNextPoint(apex) };
+    polys->InsertNextCell(3, needle);
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> nprSoupMesh(vtkPolyData* raw)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  auto cells = vtk::TakeSmartPointer(raw->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    polys->InsertNextCell(size);
+    for (vtkIdType k = 0; k < size; ++k)
+    {
+      polys->InsertCellPoint(points->InsertNextPoint(raw->GetPoint(ids[k])));
+    }
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> nprNaNPointsMesh(vtkPolyData* raw)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->DeepCopy(raw->GetPoints());
+  vtkNew<vtkCellArray> polys;
+  polys->DeepCopy(raw->GetPolys());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // One NaN point (all coordinates, or one) per 50 triangles, joined to a real edge.
+  auto cells = vtk::TakeSmartPointer(raw->GetPolys()->NewIterator());
+  vtkIdType index = 0;
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++index)
+  {
+    if (index % 50 != 0)
+    {
+      continue;
+    }
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    double p[3];
+    points->GetPoint(ids[0], p);
+    if (index % 100 == 0)
+    {
+      p[0] = p[1] = p[2] = nan;
+    }
+    else
+    {
+      p[1] = nan;
+    }
+    const vtkIdType triangle[3] = { ids[1], ids[0], points->InsertNextPoint(p) };
+    polys->InsertNextCell(3, triangle);
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> nprZeroNormalsMesh(vtkPolyData* prepared)
+{
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(prepared);
+  vtkDataArray* given = prepared->GetPointData()->GetNormals();
+  vtkNew<vtkFloatArray> normals;
+  normals->DeepCopy(given);
+  normals->SetName(given->GetName());
+  for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); i += 7)
+  {
+    normals->SetTuple3(i, 0.0, 0.0, 0.0);
+  }
+  mesh->GetPointData()->SetNormals(normals);
+  return mesh;
+}

@@ -1,0 +1,65 @@
+// The benchmark's scenes, cameras and the stress variants of a mesh (npr-benchmark).
+#ifndef nprBenchmarkScenes_h
+#define nprBenchmarkScenes_h
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkCamera;
+class vtkPolyData;
+class vtkRenderer;
+
+struct nprBenchmarkScene
+{
+  std::string Name;
+  std::string Description;
+  vtkSmartPointer<vtkPolyData> Raw;  // as loaded (or generated), double-precision points
+  vtkSmartPointer<vtkPolyData> Mesh; // what is drawn: Raw prepared by nprPrepareMesh()
+  long long Triangles = 0;
+};
+
+// The scene names, in the default order: cad, rotor, bunny, isosurface, bunny1m.
+const std::vector<std::string>& nprBenchmarkSceneNames();
+
+// Loads or generates a scene. dataDir holds cad_part.vtp, rotor.ply and bunny.ply; denseMesh is
+// the 1M-triangle bunny (bunny_1m.ply). Throws std::runtime_error on failure.
+nprBenchmarkScene nprLoadBenchmarkScene(
+  const std::string& name, const std::string& dataDir, const std::string& denseMesh);
+
+// As npr-render draws a model: a mesh without point normals gets them from vtkPolyDataNormals
+// (feature angle 30, splitting on), so sharp edges stay sharp.
+vtkSmartPointer<vtkPolyData> nprPrepareMesh(vtkPolyData* raw);
+
+long long nprCountTriangles(vtkPolyData* mesh);
+
+// The benchmark's cameras: after ResetCamera, an azimuth and an elevation (degrees), perspective.
+struct nprBenchmarkCamera
+{
+  const char* Name;
+  double Azimuth;
+  double Elevation;
+};
+const std::vector<nprBenchmarkCamera>& nprBenchmarkCameras();
+void nprApplyBenchmarkCamera(vtkRenderer* renderer, const nprBenchmarkCamera& camera);
+
+// ---- Stress variants of a scene's raw mesh (npr-benchmark --stress) ----
+// The points scaled by a factor about the origin (units changed, as a user's file would be).
+vtkSmartPointer<vtkPolyData> nprScaledMesh(vtkPolyData* raw, double factor);
+// The points moved by a distance along a fixed oblique direction.
+vtkSmartPointer<vtkPolyData> nprTranslatedMesh(vtkPolyData* raw, double distance);
+// Near-degenerate needle triangles lying in the surface: every fifth triangle gets a sliver over
+// its first edge, its apex 1e-6 of the edge's length off the edge's midpoint.
+vtkSmartPointer<vtkPolyData> nprSliverMesh(vtkPolyData* raw);
+// A triangle soup: every triangle has its own three points (duplicate vertices, as in STL).
+vtkSmartPointer<vtkPolyData> nprSoupMesh(vtkPolyData* raw);
+// NaN points added to the mesh, each used by a triangle with two real points.
+vtkSmartPointer<vtkPolyData> nprNaNPointsMesh(vtkPolyData* raw);
+// A prepared mesh with every seventh point normal set to (0, 0, 0).
+vtkSmartPointer<vtkPolyData> nprZeroNormalsMesh(vtkPolyData* prepared);
+
+// The length of the diagonal of a mesh's bounding box.
+double nprModelSize(vtkPolyData* mesh);
+
+#endif
