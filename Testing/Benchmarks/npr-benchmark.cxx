@@ -558,6 +558,7 @@ struct Bench
   vtkNew<vtkPolyDataMapper> LineMapper;
   vtkNew<vtkActor> LineActor;
   vtkSmartPointer<vtkNPRPass> ReferencePass; // TEMPORARY placeholder of vtkNPRReferenceMask
+  int DefaultResolve = vtkMapper::GetResolveCoincidentTopology();
 
   explicit Bench(double lineWidth)
     : LineWidth(lineWidth)
@@ -574,11 +575,7 @@ struct Bench
     this->MeshActor->SetMapper(this->MeshMapper);
     this->Renderer->AddActor(this->MeshActor);
     this->ShadeMesh();
-    // Object-space lines: drawn over the mesh, which VTK's coincident-topology resolution
-    // pushes back (polygon offset) so that lines lying on it win the depth test.
-    vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
 #if NPR_HAVE_FEATURE_LINES
-    this->FeatureLines->SetCamera(this->Renderer->GetActiveCamera());
     this->LineMapper->SetInputConnection(this->FeatureLines->GetOutputPort());
 #endif
     this->LineMapper->ScalarVisibilityOff();
@@ -644,6 +641,19 @@ struct Bench
   {
     this->Renderer->SetPass(pass);
     this->LineActor->SetVisibility(objectLines);
+    // Object-space lines lie on the mesh: VTK's coincident-topology resolution (polygon
+    // offset) lets them win the depth test. The other methods draw as users get them, without.
+    vtkMapper::SetResolveCoincidentTopology(
+      objectLines ? VTK_RESOLVE_POLYGON_OFFSET : this->DefaultResolve);
+  }
+
+  // The object-space lines for the current camera (its values are copied: once per frame).
+  void UpdateFeatureLines()
+  {
+#if NPR_HAVE_FEATURE_LINES
+    this->FeatureLines->SetCamera(this->Camera());
+    this->FeatureLines->Modified(); // the extraction is part of every frame of the method
+#endif
   }
 
   // One timed frame: nothing may be reused, and the GPU has finished when it returns.
@@ -651,14 +661,10 @@ struct Bench
   {
     const Clock::time_point start = Clock::now();
     this->Camera()->Modified();
-#if NPR_HAVE_FEATURE_LINES
     if (objectLines)
     {
-      this->FeatureLines->Modified(); // the extraction is part of the method's frame
+      this->UpdateFeatureLines();
     }
-#else
-    (void)objectLines;
-#endif
     this->Window->Render();
     this->Window->WaitForCompletion();
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -690,6 +696,7 @@ struct Bench
     {
       // The lines white over the mesh black on black: what the lines leave visible.
       this->Activate(nullptr, true);
+      this->UpdateFeatureLines();
       vtkProperty* property = this->MeshActor->GetProperty();
       property->SetColor(0.0, 0.0, 0.0);
       property->LightingOff();
