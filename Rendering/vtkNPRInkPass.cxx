@@ -104,7 +104,19 @@ void vtkNPRInkPass::Render(const vtkRenderState* state)
     this->DrawMode = DrawInk;
     glState->vtkglLineWidth(static_cast<float>(drawnWidth));
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    // Front faces culled underneath vtkOpenGLState's cache: each actor's property disables
+    // culling through the cache, which believes it is off and skips the call. A property that
+    // culls itself turns it back on through the cache, and the next one then off for real: its
+    // props are drawn unculled and the shader's discard keeps the result the same, slower.
+    glState->vtkglDisable(GL_CULL_FACE); // the cache must believe it is off
+    glCullFace(GL_FRONT);
+    glEnable(GL_CULL_FACE);
     this->DelegatePass->Render(&inkState);
+    glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glState->ResetGLCullFaceState();
+    glState->vtkglEnable(GL_CULL_FACE); // the cache and OpenGL agree again: off
+    glState->vtkglDisable(GL_CULL_FACE);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     glState->vtkglLineWidth(1.0f);
   }

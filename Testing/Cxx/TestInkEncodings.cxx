@@ -175,7 +175,7 @@ int InkedCube()
   for (bool parallel : { true, false })
   {
     Scene scene(size, size);
-    AddCubeSeenFromCorner(scene, parallel);
+    vtkSmartPointer<vtkActor> cube = AddCubeSeenFromCorner(scene, parallel);
     scene.Pass->SetStyleToShaded();
     const Mask object = Threshold(scene.Render(), IsObject);
     const Mask outline = Boundary(object, size, size);
@@ -210,6 +210,11 @@ int InkedCube()
     // About 2 pixels of ink per outline pixel.
     NPR_CHECK(Count(ink) > 1.3 * Count(outline) && Count(ink) < 3.2 * Count(outline),
       Count(ink) << " ink pixels for " << Count(outline) << " outline pixels at width 2");
+
+    // The same ink when the property culls faces itself (the pass culls front faces under it).
+    cube->GetProperty()->BackfaceCullingOn();
+    NPR_CHECK(Threshold(scene.Render(), IsInk) == ink, "the same ink with backface culling");
+    cube->GetProperty()->BackfaceCullingOff();
 
     scene.Window->MakeCurrent();
     GLint mode[2] = { 0, 0 };
