@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -108,6 +109,7 @@ struct vtkNPREdgePass::Internals
   unsigned long LineImageVersion = 0;
   std::string LineImageSettings;
   bool LineImageValid = false;
+  bool WarnedAboutEncoding = false;
   LineFilter Filter;
 };
 
@@ -130,6 +132,35 @@ vtkNPREdgePass::~vtkNPREdgePass()
   {
     this->Internal->Framebuffer->Delete();
   }
+}
+
+const char* vtkNPREdgePass::GetEncodingName(int encoding)
+{
+  switch (encoding)
+  {
+    case FLOAT:
+      return "float";
+    case HALF:
+      return "half";
+    case PACKED8:
+      return "packed8";
+    case PACKED16:
+      return "packed16";
+    default:
+      return "unknown";
+  }
+}
+
+int vtkNPREdgePass::GetEncodingFromName(const char* name)
+{
+  for (int encoding = FLOAT; name && encoding <= PACKED16; ++encoding)
+  {
+    if (strcmp(name, GetEncodingName(encoding)) == 0)
+    {
+      return encoding;
+    }
+  }
+  return -1;
 }
 
 double vtkNPREdgePass::GetEffectiveLineWidth(vtkRenderer* renderer) const
@@ -166,15 +197,27 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
   const bool lines = this->GetDrawsLines();
 
   // ---- Step 1: the one-pixel line image, recomputed only when its inputs changed ----
+  const int encoding = gbuffer->GetWrittenEncoding();
+  if (encoding != this->Encoding && !internal.WarnedAboutEncoding)
+  {
+    vtkWarningMacro("the G-buffer holds the " << GetEncodingName(encoding)
+                                              << " encoding, not the edge pass's "
+                                              << GetEncodingName(this->Encoding)
+                                              << ": set its GeometryEncoding to match");
+    internal.WarnedAboutEncoding = true;
+  }
+  const bool packed = encoding == PACKED8 || encoding == PACKED16;
   std::ostringstream detectDefines;
-  detectDefines << "#define NPR_PERSPECTIVE " << (gbuffer->GetPerspective() ? 1 : 0)
+  detectDefines << "#define NPR_ENCODING " << encoding << "\n#define NPR_PACKED_BLUR "
+                << (packed && this->PackedBlur ? 1 : 0) << "\n#define NPR_PERSPECTIVE " << (gbuffer->GetPerspective() ? 1 : 0)
                 << "\n#define NPR_SILHOUETTES " << (this->Silhouettes ? 1 : 0)
                 << "\n#define NPR_CREASES " << (this->Creases && gbuffer->GetWritesNormals() ? 1 : 0)
                 << "\n#define NPR_CONTOURS " << (this->Contours ? 1 : 0)
                 << "\n#define NPR_HAVE_OBJECT_IDS " << (gbuffer->GetWritesObjectIds() ? 1 : 0)
                 << "\n#define NPR_CONTOUR_SIDE " << this->ContourSide << "\n";
   std::ostringstream detectSettings;
-  detectSettings << detectDefines.str() << this->SilhouetteThreshold << " " << this->CreaseAngle;
+  detectSettings << detectDefines.str() << this->SilhouetteThreshold << " " << this->CreaseAngle
+                 << " " << this->PackedThreshold;
   if (lines &&
     (!internal.LineImageValid || internal.LineImageVersion != gbuffer->GetContentVersion() ||
       internal.LineImageSettings != detectSettings.str()))
@@ -202,10 +245,20 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
     }
     geometry->Activate();
     program->SetUniformi("geometryTexture", geometry->GetTextureUnit());
-    program->SetUniformf("silhouetteThreshold", static_cast<float>(this->SilhouetteThreshold));
-    const double radians = vtkMath::RadiansFromDegrees(this->CreaseAngle);
-    program->SetUniformf("creaseAngle", static_cast<float>(radians));
-    program->SetUniformf("creaseRamp", static_cast<float>(std::min(0.0175, 0.25 * radians)));
+    if (!packed)
+    {
+      program->SetUniformf("silhouetteThreshold", static_cast<float>(this->SilhouetteThreshold));
+      const double radians = vtkMath::RadiansFromDegrees(this->CreaseAngle);
+      program->SetUniformf("creaseAngle", static_cast<float>(radians));
+      program->SetUniformf("creaseRamp", static_cast<float>(std::min(0.0175, 0.25 * radians)));
+    }
+    else
+    {
+      // A texel's normalised value in units of one component's range (0..63 or 0..16383).
+      const double unit = encoding == PACKED8 ? 255.0 / 63.0 : 65535.0 / 16383.0;
+      program->SetUniformf("packedUnit", static_cast<float>(unit));
+      program->SetUniformf("packedThreshold", static_cast<float>(this->PackedThreshold));
+    }
 
     vtkOpenGLState::ScopedglViewport viewportSaver(glState);
     vtkOpenGLState::ScopedglEnableDisable depthTestSaver(glState, GL_DEPTH_TEST);
@@ -353,6 +406,8 @@ void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
      << this->ContourColor[0] << " " << this->ContourColor[1] << " " << this->ContourColor[2]
      << "\n";
   os << indent << "LineWidth: " << this->LineWidth << "\n";
+  os << indent << "Encoding: " << GetEncodingName(this->Encoding) << " packed threshold "
+     << this->PackedThreshold << " blur " << this->PackedBlur << "\n";
   os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";
   os << indent << "CoverageOnly: " << this->CoverageOnly << "\n";
   os << indent << "NumberOfLineImageUpdates: " << this->NumberOfLineImageUpdates << "\n";

@@ -20,6 +20,13 @@
  *
  * Lines are widened symmetrically about their one-pixel line.
  *
+ * Encoding chooses how the G-buffer stores the geometry the lines are found from (the G-buffer's
+ * GeometryEncoding must match; vtkNPRPass keeps them in step): FLOAT (default), HALF, and the
+ * packed depth+normal buffers of the 1990s, PACKED8 and PACKED16, where one value per pixel mixes
+ * the quantised depth and normal and a Laplacian kernel (optionally after a blur, PackedBlur)
+ * above PackedThreshold finds the lines. Packed lines have no type: they take the silhouette
+ * colour and are drawn when any line type is on; they straddle each step (about two pixels).
+ *
  * They are LineWidth pixels wide (scaled by the window's DPI / 72 and tile scale) and
  * anti-aliased: the one-pixel line image is filtered with a Gaussian and its level set at half
  * the width gives each pixel's coverage. The cost is one pass of 5 texel fetches per pixel to find
@@ -107,6 +114,41 @@ public:
   vtkGetVector3Macro(ContourColor, double);
   ///@}
 
+  enum Encodings
+  {
+    FLOAT = 0,
+    HALF = 1,
+    PACKED8 = 2,
+    PACKED16 = 3
+  };
+
+  ///@{
+  /**
+   * How the G-buffer stores depth and normals (default FLOAT). Names: float, half, packed8,
+   * packed16.
+   */
+  vtkSetClampMacro(Encoding, int, FLOAT, PACKED16);
+  vtkGetMacro(Encoding, int);
+  static const char* GetEncodingName(int encoding);
+  /**
+   * The encoding of a name (as GetEncodingName() gives it), -1 for an unknown name.
+   */
+  static int GetEncodingFromName(const char* name);
+  ///@}
+
+  ///@{
+  /**
+   * Packed encodings: the Laplacian magnitude that starts a line, in units of one quantised
+   * component's full range (default 0.1, i.e. 6.3 levels of the 8-bit buffer's 63), clamped to
+   * [0.001, 4]; and a 3x3 blur before the Laplacian (off by default).
+   */
+  vtkSetClampMacro(PackedThreshold, double, 0.001, 4.0);
+  vtkGetMacro(PackedThreshold, double);
+  vtkSetMacro(PackedBlur, bool);
+  vtkGetMacro(PackedBlur, bool);
+  vtkBooleanMacro(PackedBlur, bool);
+  ///@}
+
   ///@{
   /**
    * Line width in pixels at 72 DPI (default 1.5), clamped to [0.5, 16].
@@ -183,6 +225,9 @@ protected:
   int ContourSide = INSIDE;
   double ContourColor[3] = { 0.0, 0.0, 0.0 };
   double LineWidth = 1.5;
+  int Encoding = FLOAT;
+  double PackedThreshold = 0.1;
+  bool PackedBlur = false;
   bool AntiAliasing = true;
   bool CoverageOnly = false;
   int NumberOfLineImageUpdates = 0;

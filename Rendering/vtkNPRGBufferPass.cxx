@@ -110,12 +110,34 @@ vtkTextureObject* NewNearestTexture(vtkOpenGLRenderWindow* window)
   return texture;
 }
 
-const unsigned int GeometryFormats[5][2] = { { 0, 0 }, { GL_R32F, GL_RED }, { GL_RG32F, GL_RG },
-  { 0, 0 }, { GL_RGBA32F, GL_RGBA } };
+// The geometry attachment's format for an encoding and a number of components.
+struct GeometryFormat
+{
+  unsigned int InternalFormat;
+  unsigned int Format;
+  int DataType; // VTK type of the allocation
+};
+GeometryFormat GetGeometryFormat(int encoding, int components)
+{
+  switch (encoding)
+  {
+    case vtkNPRGBufferPass::HALF:
+      return components == 1 ? GeometryFormat{ GL_R16F, GL_RED, VTK_FLOAT }
+                             : GeometryFormat{ GL_RGBA16F, GL_RGBA, VTK_FLOAT };
+    case vtkNPRGBufferPass::PACKED8:
+      return { GL_R8, GL_RED, VTK_UNSIGNED_CHAR };
+    case vtkNPRGBufferPass::PACKED16:
+      return { GL_R16, GL_RED, VTK_UNSIGNED_SHORT };
+    default:
+      return components == 1 ? GeometryFormat{ GL_R32F, GL_RED, VTK_FLOAT }
+        : components == 2    ? GeometryFormat{ GL_RG32F, GL_RG, VTK_FLOAT }
+                             : GeometryFormat{ GL_RGBA32F, GL_RGBA, VTK_FLOAT };
+  }
+}
 }
 
 void vtkNPRGBufferPass::AllocateBuffers(
-  vtkOpenGLRenderWindow* window, int width, int height, int components)
+  vtkOpenGLRenderWindow* window, int width, int height, int components, int encoding)
 {
   if (!this->Framebuffer)
   {
@@ -132,7 +154,10 @@ void vtkNPRGBufferPass::AllocateBuffers(
     this->DepthTexture = NewNearestTexture(window);
     this->DepthTexture->AllocateDepth(width, height, vtkTextureObject::Float32);
   }
-  if (this->GeometryTexture && this->GeometryTexture->GetComponents() != components)
+  const GeometryFormat format = GetGeometryFormat(encoding, components);
+  if (this->GeometryTexture &&
+    static_cast<unsigned int>(this->GeometryTexture->GetInternalFormat(
+      format.DataType, components, false)) != format.InternalFormat)
   {
     this->GeometryTexture->ReleaseGraphicsResources(window);
     this->GeometryTexture->Delete();
@@ -141,10 +166,10 @@ void vtkNPRGBufferPass::AllocateBuffers(
   if (!this->GeometryTexture)
   {
     this->GeometryTexture = NewNearestTexture(window);
-    this->GeometryTexture->SetInternalFormat(GeometryFormats[components][0]);
-    this->GeometryTexture->SetFormat(GeometryFormats[components][1]);
-    this->GeometryTexture->SetDataType(GL_FLOAT);
-    this->GeometryTexture->Allocate2D(width, height, components, VTK_FLOAT);
+    this->GeometryTexture->SetInternalFormat(format.InternalFormat);
+    this->GeometryTexture->SetFormat(format.Format);
+    this->GeometryTexture->Allocate2D(width, height,
+      format.Format == GL_RGBA ? 4 : (format.Format == GL_RG ? 2 : 1), format.DataType);
   }
   // Resize() does nothing when the size is unchanged.
   this->ColorTexture->Resize(width, height);
@@ -299,12 +324,16 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
     return;
   }
 
+  const int encoding = this->GeometryEncoding;
+  const bool packed = encoding == PACKED8 || encoding == PACKED16;
   const bool normals = this->NormalsRequested;
-  const bool ids = this->ObjectIdsRequested && opaqueProps > 1;
-  if (normals != this->WritesNormals || ids != this->WritesObjectIds)
+  const bool ids = this->ObjectIdsRequested && opaqueProps > 1 && !packed;
+  if (normals != this->WritesNormals || ids != this->WritesObjectIds ||
+    encoding != this->WrittenEncoding)
   {
     this->WritesNormals = normals;
     this->WritesObjectIds = ids;
+    this->WrittenEncoding = encoding;
     this->ShaderStageTime.Modified(); // the mappers rebuild their shaders with the new outputs
   }
 
@@ -332,7 +361,7 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   }
 
   const int components = ids ? 4 : (normals ? 2 : 1);
-  this->AllocateBuffers(window, width, height, components);
+  this->AllocateBuffers(window, width, height, components, encoding);
   this->Viewport[0] = 0.0f;
   this->Viewport[1] = 0.0f;
   this->Viewport[2] = 1.0f / width;
@@ -345,6 +374,9 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
     renderer, worldToView, normalMatrix, viewToDevice, worldToDevice);
   vtkMatrix4x4::Invert(viewToDevice, this->InverseProjection); // stays in GLSL's layout
   this->Perspective = !camera->GetParallelProjection();
+  const double* clippingRange = camera->GetClippingRange();
+  this->PackedDepthRange[0] = static_cast<float>(clippingRange[0]);
+  this->PackedDepthRange[1] = static_cast<float>(clippingRange[1]);
 
   this->ComputeContentRectangle(state, width, height);
   this->Internal->FrameProps.assign(
@@ -422,7 +454,8 @@ bool vtkNPRGBufferPass::PostReplaceShaderValues(
   std::string defines = std::string("#define NPR_WRITE_NORMALS ") +
     (this->WritesNormals ? "1" : "0") + "\n#define NPR_WRITE_OBJECT_IDS " +
     (this->WritesObjectIds ? "1" : "0") + "\n#define NPR_HAVE_MAPPER_NORMAL " +
-    (mapperNormal ? "1" : "0") + "\n#define NPR_HAVE_VERTEX_VC " + (vertexVC ? "1" : "0") + "\n";
+    (mapperNormal ? "1" : "0") + "\n#define NPR_HAVE_VERTEX_VC " + (vertexVC ? "1" : "0") +
+    "\n#define NPR_ENCODING " + std::to_string(this->WrittenEncoding) + "\n";
   vtkShaderProgram::Substitute(
     fragmentShader, "//NPR::GBuffer::Dec", defines + vtkNPRGBufferDecl, false);
   vtkShaderProgram::Substitute(fragmentShader, "//NPR::GBuffer::Impl", vtkNPRGBufferImpl, false);
@@ -454,6 +487,10 @@ bool vtkNPRGBufferPass::SetShaderParameters(
     if (program->IsUniformUsed("nprViewport"))
     {
       program->SetUniform4f("nprViewport", this->Viewport);
+    }
+    if (program->IsUniformUsed("nprDepthRange"))
+    {
+      program->SetUniform2f("nprDepthRange", this->PackedDepthRange);
     }
   }
   else
@@ -501,6 +538,7 @@ void vtkNPRGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";
   os << indent << "NormalsRequested: " << this->NormalsRequested << "\n";
   os << indent << "ObjectIdsRequested: " << this->ObjectIdsRequested << "\n";
+  os << indent << "GeometryEncoding: " << this->GeometryEncoding << "\n";
   os << indent << "ReuseUnchangedFrames: " << this->ReuseUnchangedFrames << "\n";
   os << indent << "WritesNormals: " << this->WritesNormals << "\n";
   os << indent << "WritesObjectIds: " << this->WritesObjectIds << "\n";

@@ -11,7 +11,18 @@
  *   float), b = the object id (1-based index of the prop in the frame).
  *
  * Only what the effects need is allocated and written: the geometry attachment is R32F when
- * neither normals nor ids are wanted, RG32F with normals, RGBA32F with ids. Ids are written only
+ * neither normals nor ids are wanted, RG32F with normals, RGBA32F with ids.
+ *
+ * GeometryEncoding chooses how the geometry attachment stores this (for measuring what
+ * precision the lines need; vtkNPREdgePass reads each):
+ * - FLOAT (default): as above, 32-bit float.
+ * - HALF: 16-bit float; r = view depth, g and b = the octahedral normal's two coordinates,
+ *   a = id (exact up to 2048 props): R16F with depth only, RGBA16F otherwise.
+ * - PACKED8 / PACKED16: the 1990s packed depth+normal buffer, one unsigned normalised channel
+ *   (R8 / R16): 1 + depth + nx + ny + nz, where the depth (view depth mapped from the camera's
+ *   clipping range onto 0..1) and each normal coordinate (mapped from -1..1) are quantised to
+ *   0..63 (8 bits: the sum is at most 253 of 255) or 0..16383 (16 bits). The normal terms are
+ *   packed only when normals are requested; ids never are. 0 is the background. Ids are written only
  * when asked for and more than one prop with opaque geometry is visible (with one, coverage says
  * the same). With no prop to draw, nothing is allocated or drawn.
  *
@@ -76,6 +87,22 @@ public:
   vtkBooleanMacro(ObjectIdsRequested, bool);
   ///@}
 
+  enum GeometryEncodings
+  {
+    FLOAT = 0,
+    HALF = 1,
+    PACKED8 = 2,
+    PACKED16 = 3
+  };
+
+  ///@{
+  /**
+   * How the geometry attachment stores depth, normal and id (default FLOAT; see above).
+   */
+  vtkSetClampMacro(GeometryEncoding, int, FLOAT, PACKED16);
+  vtkGetMacro(GeometryEncoding, int);
+  ///@}
+
   ///@{
   /**
    * Keep the last G-buffer when nothing that affects it changed (on by default).
@@ -93,6 +120,7 @@ public:
   bool GetHasContent() const { return this->HasContent; }
   bool GetWritesNormals() const { return this->WritesNormals; }
   bool GetWritesObjectIds() const { return this->WritesObjectIds; }
+  int GetWrittenEncoding() const { return this->WrittenEncoding; }
   vtkTextureObject* GetColorTexture() const { return this->HasContent ? this->ColorTexture : nullptr; }
   vtkTextureObject* GetGeometryTexture() const { return this->HasContent ? this->GeometryTexture : nullptr; }
   vtkTextureObject* GetDepthTexture() const { return this->HasContent ? this->DepthTexture : nullptr; }
@@ -108,6 +136,12 @@ public:
    * The camera's projection was perspective in the last frame.
    */
   bool GetPerspective() const { return this->Perspective; }
+
+  /**
+   * The view depths that the packed encodings map onto 0..1 in the last frame (the camera's
+   * clipping range).
+   */
+  const float* GetPackedDepthRange() const { return this->PackedDepthRange; }
 
   /**
    * The last Render() was a hardware-selection (picking) render: no G-buffer was made.
@@ -138,7 +172,8 @@ protected:
   vtkNPRGBufferPass();
   ~vtkNPRGBufferPass() override;
 
-  void AllocateBuffers(vtkOpenGLRenderWindow* window, int width, int height, int components);
+  void AllocateBuffers(vtkOpenGLRenderWindow* window, int width, int height, int components,
+    int encoding);
   bool SceneUnchanged(const vtkRenderState* state, int width, int height);
   vtkMTimeType GetSettingsTime();
   void ComputeContentRectangle(const vtkRenderState* state, int width, int height);
@@ -147,6 +182,7 @@ protected:
   bool NormalsRequested = false;
   bool ObjectIdsRequested = false;
   bool ReuseUnchangedFrames = true;
+  int GeometryEncoding = FLOAT;
 
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
   vtkTextureObject* ColorTexture = nullptr;
@@ -157,6 +193,8 @@ protected:
   bool HasContent = false;
   bool WritesNormals = false;
   bool WritesObjectIds = false;
+  int WrittenEncoding = FLOAT;
+  float PackedDepthRange[2] = { 0, 1 };
   bool Perspective = true;
   bool LastRenderWasSelection = false;
   int NumberOfGeometryDraws = 0;

@@ -3,6 +3,7 @@
 #include "vtkDualDepthPeelingPass.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
+#include "vtkNPRInkPass.h"
 #include "vtkNPRSketchPass.h"
 #include "vtkNPRToonPass.h"
 #include "vtkNew.h"
@@ -35,6 +36,8 @@ vtkNPRPass::vtkNPRPass()
   this->FlatPass->SetSpecular(false);
   this->SketchPass = vtkNPRSketchPass::New();
   this->SketchPass->SetEdgePass(this->EdgePass);
+  this->InkPass = vtkNPRInkPass::New();
+  this->InkPass->SetDelegatePass(this->OpaquePass);
   this->EdgesSequence = vtkSequencePass::New();
   vtkNew<vtkRenderPassCollection> passes;
   passes->AddItem(this->GBufferPass);
@@ -56,6 +59,7 @@ vtkNPRPass::~vtkNPRPass()
   this->EdgesSequence->Delete();
   this->SketchSequence->Delete();
   this->SketchPass->Delete();
+  this->InkPass->Delete();
   this->ToonPass->Delete();
   this->FlatPass->Delete();
   this->EdgePass->Delete();
@@ -79,6 +83,8 @@ const char* vtkNPRPass::GetStyleName(int style)
       return "toon+edges";
     case SKETCH:
       return "sketch";
+    case INKED:
+      return "inked";
     default:
       return "unknown";
   }
@@ -86,7 +92,7 @@ const char* vtkNPRPass::GetStyleName(int style)
 
 int vtkNPRPass::GetStyleFromName(const char* name)
 {
-  for (int style = SHADED; name && style <= SKETCH; ++style)
+  for (int style = SHADED; name && style <= INKED; ++style)
   {
     if (strcmp(name, GetStyleName(style)) == 0)
     {
@@ -101,6 +107,7 @@ void vtkNPRPass::Render(const vtkRenderState* state)
   vtkRenderer* renderer = state->GetRenderer();
   this->GBufferPass->SetNormalsRequested(this->EdgePass->GetCreases());
   this->GBufferPass->SetObjectIdsRequested(this->EdgePass->GetContours());
+  this->GBufferPass->SetGeometryEncoding(this->EdgePass->GetEncoding());
   switch (this->Style)
   {
     case SHADED:
@@ -108,6 +115,9 @@ void vtkNPRPass::Render(const vtkRenderState* state)
       break;
     case TOON:
       this->RenderStepsPass->SetOpaquePass(this->ToonPass);
+      break;
+    case INKED:
+      this->RenderStepsPass->SetOpaquePass(this->InkPass);
       break;
     case TOON_EDGES:
       this->GBufferPass->SetDelegatePass(this->ToonPass);
@@ -144,6 +154,7 @@ void vtkNPRPass::ReleaseGraphicsResources(vtkWindow* window)
   this->ToonPass->ReleaseGraphicsResources(window);
   this->FlatPass->ReleaseGraphicsResources(window);
   this->SketchPass->ReleaseGraphicsResources(window);
+  this->InkPass->ReleaseGraphicsResources(window);
   this->OpaquePass->ReleaseGraphicsResources(window);
   this->DepthPeelingPass->ReleaseGraphicsResources(window);
   this->TranslucentPass->ReleaseGraphicsResources(window);
@@ -162,4 +173,6 @@ void vtkNPRPass::PrintSelf(ostream& os, vtkIndent indent)
   this->ToonPass->PrintSelf(os, indent.GetNextIndent());
   os << indent << "SketchPass:\n";
   this->SketchPass->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "InkPass:\n";
+  this->InkPass->PrintSelf(os, indent.GetNextIndent());
 }

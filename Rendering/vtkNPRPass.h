@@ -12,6 +12,8 @@
  *       TOON_EDGES  vtkNPRGBufferPass (drawing the toon pass), then vtkNPREdgePass,
  *       SKETCH      vtkNPRGBufferPass (drawing flat colours: a one-band vtkNPRToonPass, or the
  *                   toon pass with SketchToonShading), then vtkNPRSketchPass,
+ *       INKED       vtkNPRInkPass (drawing a vtkOpaquePass twice: fat back-face wireframe,
+ *                   then the faces with polygon offset) straight into the window,
  *     translucent: vtkTranslucentPass, or vtkDualDepthPeelingPass when the renderer's
  *                  UseDepthPeeling is on (its MaximumNumberOfPeels and OcclusionRatio apply),
  *     volumes, overlay.
@@ -21,7 +23,8 @@
  * own chain. Translucent props are shaded as usual in every style.
  *
  * The effect passes are exposed for tuning (GetEdgePass(), GetToonPass(), GetSketchPass(),
- * GetGBufferPass()); the G-buffer channels follow what the enabled lines need. The sketch uses
+ * GetInkPass(), GetGBufferPass()); the G-buffer channels and encoding follow what the enabled
+ * lines need (the edge pass's line types and Encoding). The sketch uses
  * the edge pass's line settings (types, thresholds, width, colours).
  *
  * Renderer flags that VTK ignores once a pass is set (UseFXAA, UseSSAO, UseShadows) stay ignored;
@@ -38,6 +41,7 @@
 class vtkDualDepthPeelingPass;
 class vtkNPREdgePass;
 class vtkNPRGBufferPass;
+class vtkNPRInkPass;
 class vtkNPRSketchPass;
 class vtkNPRToonPass;
 class vtkOpaquePass;
@@ -61,20 +65,22 @@ public:
     EDGES = 1,
     TOON = 2,
     TOON_EDGES = 3,
-    SKETCH = 4
+    SKETCH = 4,
+    INKED = 5
   };
 
   ///@{
   /**
-   * The style (default EDGES). Names: shaded, edges, toon, toon+edges, sketch.
+   * The style (default EDGES). Names: shaded, edges, toon, toon+edges, sketch, inked.
    */
-  vtkSetClampMacro(Style, int, SHADED, SKETCH);
+  vtkSetClampMacro(Style, int, SHADED, INKED);
   vtkGetMacro(Style, int);
   void SetStyleToShaded() { this->SetStyle(SHADED); }
   void SetStyleToEdges() { this->SetStyle(EDGES); }
   void SetStyleToToon() { this->SetStyle(TOON); }
   void SetStyleToToonEdges() { this->SetStyle(TOON_EDGES); }
   void SetStyleToSketch() { this->SetStyle(SKETCH); }
+  void SetStyleToInked() { this->SetStyle(INKED); }
   static const char* GetStyleName(int style);
   /**
    * The style of a name (as GetStyleName() gives it), -1 for an unknown name.
@@ -99,6 +105,7 @@ public:
   vtkGetObjectMacro(EdgePass, vtkNPREdgePass);
   vtkGetObjectMacro(ToonPass, vtkNPRToonPass);
   vtkGetObjectMacro(SketchPass, vtkNPRSketchPass);
+  vtkGetObjectMacro(InkPass, vtkNPRInkPass);
   vtkGetObjectMacro(RenderStepsPass, vtkRenderStepsPass);
   ///@}
 
@@ -115,6 +122,7 @@ protected:
   vtkNPRToonPass* ToonPass;
   vtkNPRToonPass* FlatPass; // one band, no highlight: the flat colours a sketch fills with
   vtkNPRSketchPass* SketchPass;
+  vtkNPRInkPass* InkPass;
   vtkSequencePass* EdgesSequence;
   vtkSequencePass* SketchSequence;
   vtkTranslucentPass* TranslucentPass;

@@ -11,6 +11,7 @@
 #include "vtkImageExtractComponents.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
+#include "vtkNPRInkPass.h"
 #include "vtkNPRModelReader.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRSketchPass.h"
@@ -45,7 +46,7 @@
 
 namespace
 {
-const char* const Styles[] = { "shaded", "edges", "toon", "toon+edges", "sketch" };
+const char* const Styles[] = { "shaded", "edges", "toon", "toon+edges", "sketch", "inked" };
 
 struct UsageError : std::runtime_error
 {
@@ -123,6 +124,9 @@ struct Options
   double CreaseColor[3] = { 0.0, 0.0, 0.0 };
   double ContourColor[3] = { 0.0, 0.0, 0.0 };
   bool AntiAliasing = true;
+  std::string Encoding = "float";
+  double PackedThreshold = 0.1;
+  bool PackedBlur = false;
   std::string EdgeMask;
   std::vector<std::string> CompareStyles;
 
@@ -149,7 +153,7 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
 
   -o, --output FILE        PNG to write
   --size WxH               image size in pixels (default 1024x768)
-  --style NAME             shaded (default), edges, toon, toon+edges or sketch
+  --style NAME             shaded (default), edges, toon, toon+edges, sketch or inked
   --compare-style LIST     with --frames: also time these styles (comma separated), frames
                            interleaved with the main style's in the same window; print
                            each median and its ratio to the main style's
@@ -175,7 +179,17 @@ Lines (--style edges, toon+edges and sketch):
   --silhouette-color COLOR, --crease-color COLOR, --contour-color COLOR
   --no-antialias           lines without anti-aliasing
   --edge-mask FILE         also write the line coverage alone: white on black, 8-bit
-                           grey PNG of the render's size (edges, toon+edges)
+                           grey PNG of the render's size (edges, toon+edges, inked)
+  --encoding NAME          how the G-buffer stores depth and normals: float (default),
+                           half, packed8 or packed16 (the 1990s packed depth+normal
+                           value, lines from its Laplacian)
+  --packed-threshold X     packed encodings: Laplacian that makes a line, in units of one
+                           component's range, 0.001..4 (default 0.1)
+  --packed-blur            packed encodings: blur before the Laplacian (fatter lines)
+
+Inking (--style inked):
+  --line-width PX          ink line width in pixels, 0.5..16 (default 1.5)
+  --line-color COLOR       ink colour (default black)
 
 Toon shading (--style toon, toon+edges):
   --toon-bands N           number of equal light bands, 1..64 (default 3)
@@ -436,6 +450,23 @@ Options ParseOptions(int argc, char* argv[])
     {
       options.EdgeMask = value();
     }
+    else if (arg == "--encoding")
+    {
+      options.Encoding = value();
+      if (vtkNPREdgePass::GetEncodingFromName(options.Encoding.c_str()) < 0)
+      {
+        throw UsageError(
+          "--encoding expects float, half, packed8 or packed16, got '" + options.Encoding + "'");
+      }
+    }
+    else if (arg == "--packed-threshold")
+    {
+      options.PackedThreshold = ParseRange(arg, value(), 0.001, 4.0);
+    }
+    else if (arg == "--packed-blur")
+    {
+      options.PackedBlur = true;
+    }
     else if (arg == "--toon-bands")
     {
       options.ToonBands = ParseInteger(arg, value(), 1, 64);
@@ -492,9 +523,10 @@ Options ParseOptions(int argc, char* argv[])
   {
     throw UsageError("--compare-style needs --frames N");
   }
-  if (!options.EdgeMask.empty() && options.Style != "edges" && options.Style != "toon+edges")
+  if (!options.EdgeMask.empty() && options.Style != "edges" && options.Style != "toon+edges" &&
+    options.Style != "inked")
   {
-    throw UsageError("--edge-mask needs --style edges or toon+edges");
+    throw UsageError("--edge-mask needs --style edges, toon+edges or inked");
   }
   return options;
 }
@@ -564,6 +596,9 @@ vtkSmartPointer<vtkNPRPass> MakePass(const Options& options)
   edges->SetCreaseColor(options.CreaseColor);
   edges->SetContourColor(options.ContourColor);
   edges->SetAntiAliasing(options.AntiAliasing);
+  edges->SetEncoding(vtkNPREdgePass::GetEncodingFromName(options.Encoding.c_str()));
+  edges->SetPackedThreshold(options.PackedThreshold);
+  edges->SetPackedBlur(options.PackedBlur);
   vtkNPRToonPass* toon = pass->GetToonPass();
   toon->SetNumberOfBands(options.ToonBands);
   toon->SetPerVertex(options.ToonPerVertex);
@@ -574,6 +609,9 @@ vtkSmartPointer<vtkNPRPass> MakePass(const Options& options)
   sketch->SetPaper(options.Paper);
   sketch->SetPaperColor(options.PaperColor);
   pass->SetSketchToonShading(options.SketchToon);
+  vtkNPRInkPass* ink = pass->GetInkPass();
+  ink->SetLineWidth(options.LineWidth);
+  ink->SetInkColor(options.SilhouetteColor);
   return pass;
 }
 
@@ -748,7 +786,14 @@ int Run(const Options& options, nprQuietOutputWindow* messages)
   {
     WriteWindowPNG(window, options.Output, false);
   }
-  if (!options.EdgeMask.empty())
+  if (!options.EdgeMask.empty() && options.Style == "inked")
+  {
+    pass->GetInkPass()->CoverageOnlyOn();
+    window->Render();
+    WriteWindowPNG(window, options.EdgeMask, true);
+    pass->GetInkPass()->CoverageOnlyOff();
+  }
+  else if (!options.EdgeMask.empty())
   {
     pass->GetEdgePass()->CoverageOnlyOn();
     window->Render(); // the G-buffer and line image are reused: only the composite runs

@@ -2,23 +2,92 @@
 // vtkNPREdgePass, step 1: line pixels from the G-buffer's geometry attachment.
 // Output: r = silhouette, g = crease, b = object contour strength (0..1) on the pixels the line
 // belongs to. One texel fetch per tap, five taps (a cross): fetches are the cost on llvmpipe.
+// NPR_ENCODING says how the G-buffer stores the geometry (vtkNPRGBufferPass::GeometryEncoding):
+// 0 float (depth, 12-bit octahedral normal packed in one float, id), 1 half (depth / far,
+// octahedral normal in two channels, id), 2 and 3 the packed 8- and 16-bit depth+normal value.
 //NPR::Defines
 in vec2 texCoord;
-uniform sampler2D geometryTexture; // view depth (> 0, 0 = background), packed normal, id
+uniform sampler2D geometryTexture; // view depth (> 0, 0 = background), normal, id
 uniform float silhouetteThreshold; // relative depth step
 uniform float creaseAngle;         // radians
 uniform float creaseRamp;          // radians: soft ramp around the threshold
+uniform float packedThreshold;     // packed: Laplacian, in units of one component's range
+uniform float packedUnit;          // packed: a texel value in units of one component's range
 //VTK::Output::Dec
 
-vec3 nprUnpackNormal(float code)
+#if NPR_ENCODING >= 2
+// The packed buffer of the 1990s engines: one value mixes depth and normal, so one Laplacian
+// finds every line, of no particular type (reported as silhouettes). Its magnitude is taken, so a
+// step gives a line on both of its sides, as it did then. NPR_PACKED_BLUR smooths the value with
+// a 3x3 binomial kernel first (a 5x5 kernel in all): fatter lines, fewer from quantisation.
+float nprPackedAt(ivec2 q, ivec2 size)
 {
-  vec2 e = vec2(floor(code / 4096.0), mod(code, 4096.0)) / 4095.0 * 2.0 - 1.0;
+  return texelFetch(geometryTexture, clamp(q, ivec2(0), size - 1), 0).x;
+}
+
+void main()
+{
+  ivec2 size = textureSize(geometryTexture, 0);
+  ivec2 p = ivec2(texCoord * vec2(size));
+#if NPR_PACKED_BLUR
+  float v[25];
+  for (int j = 0; j < 5; ++j)
+  {
+    for (int i = 0; i < 5; ++i)
+    {
+      v[5 * j + i] = nprPackedAt(p + ivec2(i - 2, j - 2), size);
+    }
+  }
+  // Blurred value at the centre (c) and its four neighbours, from the 3x3 around each.
+  float blurred[5];
+  const ivec2 centres[5] = ivec2[5](ivec2(2, 2), ivec2(3, 2), ivec2(1, 2), ivec2(2, 3), ivec2(2, 1));
+  for (int k = 0; k < 5; ++k)
+  {
+    ivec2 c = centres[k];
+    float sum = 0.0;
+    for (int j = -1; j <= 1; ++j)
+    {
+      for (int i = -1; i <= 1; ++i)
+      {
+        float w = (i == 0 ? 2.0 : 1.0) * (j == 0 ? 2.0 : 1.0);
+        sum += w * v[5 * (c.y + j) + c.x + i];
+      }
+    }
+    blurred[k] = sum / 16.0;
+  }
+  float laplacian = 4.0 * blurred[0] - blurred[1] - blurred[2] - blurred[3] - blurred[4];
+#else
+  float laplacian = 4.0 * nprPackedAt(p, size) - nprPackedAt(p + ivec2(1, 0), size) -
+    nprPackedAt(p - ivec2(1, 0), size) - nprPackedAt(p + ivec2(0, 1), size) -
+    nprPackedAt(p - ivec2(0, 1), size);
+#endif
+  float response = abs(laplacian) * packedUnit;
+  float line = smoothstep(packedThreshold, 1.5 * packedThreshold, response);
+  gl_FragData[0] = vec4(line, 0.0, 0.0, 0.0);
+}
+#else
+
+#if NPR_ENCODING == 1
+#define NPR_NORMAL(g) nprUnpackOctahedral(g.yz)
+#define NPR_ID(g) g.w
+#else
+#define NPR_NORMAL(g) nprUnpackNormal(g.y)
+#define NPR_ID(g) g.z
+#endif
+
+vec3 nprUnpackOctahedral(vec2 e)
+{
   vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
   if (n.z < 0.0)
   {
     n.xy = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
   }
   return normalize(n);
+}
+
+vec3 nprUnpackNormal(float code)
+{
+  return nprUnpackOctahedral(vec2(floor(code / 4096.0), mod(code, 4096.0)) / 4095.0 * 2.0 - 1.0);
 }
 
 void main()
@@ -72,7 +141,7 @@ void main()
 #if NPR_CREASES
   if (covered0)
   {
-    vec3 n0 = nprUnpackNormal(g0.y);
+    vec3 n0 = NPR_NORMAL(g0);
     for (int k = 0; k < 4; ++k)
     {
       // Not across a depth step from the far side: that line is the nearer surface's silhouette.
@@ -80,11 +149,11 @@ void main()
       bool farSide = step2 < -silhouetteThreshold && g[k].x < g0.x * (1.0 - 4.0 * silhouetteThreshold);
       bool sameObject = g[k].x > 0.0 && !farSide;
 #if NPR_HAVE_OBJECT_IDS
-      sameObject = sameObject && g[k].z == g0.z;
+      sameObject = sameObject && NPR_ID(g[k]) == NPR_ID(g0);
 #endif
       if (sameObject)
       {
-        vec3 nk = nprUnpackNormal(g[k].y);
+        vec3 nk = NPR_NORMAL(g[k]);
         // One pixel per crease: the side that faces the viewer more (ties: right and up).
         if (n0.z > nk.z || (n0.z == nk.z && (k == 0 || k == 2)))
         {
@@ -101,7 +170,7 @@ void main()
   // Object contours: the id changes (or, with one object, coverage changes). The nearer side is
   // "inside" the object in front; background is farthest.
 #if NPR_HAVE_OBJECT_IDS
-  float id0 = covered0 ? g0.z : -1.0;
+  float id0 = covered0 ? NPR_ID(g0) : -1.0;
 #else
   float id0 = covered0 ? 1.0 : -1.0;
 #endif
@@ -109,7 +178,7 @@ void main()
   for (int k = 0; k < 4; ++k)
   {
 #if NPR_HAVE_OBJECT_IDS
-    float idk = g[k].x > 0.0 ? g[k].z : -1.0;
+    float idk = g[k].x > 0.0 ? NPR_ID(g[k]) : -1.0;
 #else
     float idk = g[k].x > 0.0 ? 1.0 : -1.0;
 #endif
@@ -132,3 +201,4 @@ void main()
 #endif
   gl_FragData[0] = vec4(silhouette, crease, contour, 0.0);
 }
+#endif

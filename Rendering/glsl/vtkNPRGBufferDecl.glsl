@@ -1,9 +1,11 @@
 // Declarations injected into a vtkOpenGLPolyDataMapper fragment shader while vtkNPRGBufferPass
-// draws. The pass defines NPR_WRITE_NORMALS, NPR_WRITE_OBJECT_IDS, NPR_HAVE_MAPPER_NORMAL and
-// NPR_HAVE_VERTEX_VC before this text.
+// draws. The pass defines NPR_WRITE_NORMALS, NPR_WRITE_OBJECT_IDS, NPR_HAVE_MAPPER_NORMAL,
+// NPR_HAVE_VERTEX_VC and NPR_ENCODING (0 float, 1 half, 2 packed 8-bit, 3 packed 16-bit) before
+// this text.
 uniform float nprObjectId;
 uniform mat4 nprInverseProjection;
 uniform vec4 nprViewport; // x, y, 1/width, 1/height of the G-buffer
+uniform vec2 nprDepthRange; // packed encodings: the view depths mapped onto 0 and 1
 
 // View-space position rebuilt from the window position and depth of this fragment.
 vec3 nprFragmentPositionVC()
@@ -14,9 +16,8 @@ vec3 nprFragmentPositionVC()
   return p.xyz / p.w;
 }
 
-// Octahedral encoding, each coordinate quantised to 12 bits and both packed into one float
-// (an integer below 2^24, exact in 32-bit float): about 0.05 degree resolution.
-float nprPackNormal(vec3 n)
+// Octahedral encoding of a unit vector: two coordinates in [-1, 1].
+vec2 nprOctahedral(vec3 n)
 {
   n /= abs(n.x) + abs(n.y) + abs(n.z);
   vec2 e = n.xy;
@@ -24,6 +25,13 @@ float nprPackNormal(vec3 n)
   {
     e = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
   }
-  e = floor((e * 0.5 + 0.5) * 4095.0 + 0.5);
+  return e;
+}
+
+// Both octahedral coordinates quantised to 12 bits and packed into one float (an integer below
+// 2^24, exact in 32-bit float): about 0.05 degree resolution.
+float nprPackNormal(vec3 n)
+{
+  vec2 e = floor((nprOctahedral(n) * 0.5 + 0.5) * 4095.0 + 0.5);
   return e.x * 4096.0 + e.y;
 }

@@ -1,11 +1,18 @@
-  // vtkNPRGBufferPass: geometry attachment = (view depth, packed normal, object id, 1).
+  // vtkNPRGBufferPass: geometry attachment = (view depth, packed normal, object id, 1), or
+  // another encoding of them (vtkNPRGBufferPass::GeometryEncoding).
   {
 #if NPR_HAVE_VERTEX_VC
     float nprDepth = -vertexVCVSOutput.z / vertexVCVSOutput.w;
 #else
     float nprDepth = -nprFragmentPositionVC().z;
 #endif
+#if NPR_ENCODING == 1
+    // Half: the depth over the far clipping distance, so that any scene's depths stay in half's
+    // range (the lines use depth ratios only). Still above 0, the background.
+    vec4 nprGeometry = vec4(max(nprDepth / nprDepthRange.y, 1e-7), 0.0, 0.0, 0.0);
+#else
     vec4 nprGeometry = vec4(max(nprDepth, 1e-30), 0.0, 0.0, 1.0);
+#endif
 #if NPR_WRITE_NORMALS
 #if NPR_HAVE_MAPPER_NORMAL
     vec3 nprNormal = normalVCVSOutput;
@@ -21,10 +28,36 @@
       nprNormal = dot(nprNormal, nprNormal) > 1e-30 ? nprNormal * sign(dot(nprNormal, -p) + 1e-30)
                                                       : vec3(0.0, 0.0, 1.0);
     }
-    nprGeometry.y = nprPackNormal(normalize(nprNormal));
+    nprNormal = normalize(nprNormal);
+#if NPR_ENCODING == 1
+    nprGeometry.yz = nprOctahedral(nprNormal);
+#else
+    nprGeometry.y = nprPackNormal(nprNormal);
+#endif
 #endif
 #if NPR_WRITE_OBJECT_IDS
+#if NPR_ENCODING == 1
+    nprGeometry.w = nprObjectId;
+#else
     nprGeometry.z = nprObjectId;
+#endif
+#endif
+#if NPR_ENCODING >= 2
+    // Packed: 1 + depth + nx + ny + nz, each quantised to 0..L, in one unsigned normalised value.
+#if NPR_ENCODING == 2
+    const float levels = 63.0;
+    const float scale = 255.0;
+#else
+    const float levels = 16383.0;
+    const float scale = 65535.0;
+#endif
+    float nprDepthUnit = clamp((nprDepth - nprDepthRange.x) / (nprDepthRange.y - nprDepthRange.x), 0.0, 1.0);
+    float nprPacked = 1.0 + floor(nprDepthUnit * levels + 0.5);
+#if NPR_WRITE_NORMALS
+    vec3 nprNormalUnit = floor((nprNormal * 0.5 + 0.5) * levels + 0.5);
+    nprPacked += nprNormalUnit.x + nprNormalUnit.y + nprNormalUnit.z;
+#endif
+    nprGeometry = vec4(nprPacked / scale, 0.0, 0.0, 1.0);
 #endif
     gl_FragData[1] = nprGeometry;
   }

@@ -144,6 +144,23 @@ for i, a in enumerate(names):
     for b in names[i + 1:]:
         check(styles[a] != styles[b], "%s and %s differ" % (a, b))
 
+# --style inked and --encoding: each renders a mask with lines; packed masks differ from float's;
+# the inked mask outlines the rotor.
+masks = {}
+for name, extra in (("inked", ["--style", "inked"]),
+                    ("float", ["--style", "edges", "--encoding", "float"]),
+                    ("half", ["--style", "edges", "--encoding", "half"]),
+                    ("packed8", ["--style", "edges", "--encoding", "packed8"]),
+                    ("packed16", ["--style", "edges", "--encoding", "packed16", "--packed-blur"])):
+    rc, _, err = run(rotor, "--size", "160x120", "--azimuth", "30", "--edge-mask", out("mask_%s.png" % name),
+                     "-o", out("image_%s.png" % name), *extra)
+    check(rc == 0, "%s renders with a mask (%s)" % (" ".join(extra), err.strip()))
+    masks[name] = read_png(out("mask_%s.png" % name))[3]
+    lit = sum(1 for v in masks[name] if v > 127)
+    check(100 < lit < 0.3 * 160 * 120, "the %s mask has lines (%d line pixels)" % (name, lit))
+check(masks["packed8"] != masks["float"] and masks["packed16"] != masks["packed8"],
+      "the packed encodings give their own lines")
+
 # Errors: one line on stderr that names the problem, non-zero exit, no crash.
 errors = [
     ([os.path.join(models, "missing.ply"), "-o", out("x.png")], "no such file"),
@@ -152,20 +169,22 @@ errors = [
     ([os.path.join(models, "bad_keyword.off"), "-o", out("x.png")], "is no OFF keyword"),
     ([os.path.join(models, "bad.gltf"), "-o", out("x.png")], "malformed or unreadable gltf"),
     ([os.path.join(models, "cube.xyz"), "-o", out("x.png")], "unknown model format"),
-    ([rotor, "--style", "watercolour", "-o", out("x.png")], "unknown style 'watercolour' (valid styles: shaded, edges, toon, toon+edges, sketch)"),
+    ([rotor, "--style", "watercolour", "-o", out("x.png")], "unknown style 'watercolour' (valid styles: shaded, edges, toon, toon+edges, sketch, inked)"),
     ([rotor, "--style", "toon", "--toon-bands", "0", "-o", out("x.png")], "--toon-bands expects an integer in 1..64"),
     ([rotor, "--style", "sketch", "--uncertainty", "40", "-o", out("x.png")], "--uncertainty expects a number in 0..32"),
     ([rotor, "--style", "sketch", "--noise-frequency", "0", "-o", out("x.png")], "--noise-frequency expects a number in 0.05..25"),
     ([rotor, "--style", "sketch", "--noise-seed", "-1", "-o", out("x.png")], "--noise-seed expects an integer in 0..2147483647"),
     ([rotor, "--style", "sketch", "--paper-color", "2,0,0", "-o", out("x.png")], "--paper-color"),
-    ([rotor, "--style", "sketch", "--edge-mask", out("m.png")], "--edge-mask needs --style edges or toon+edges"),
+    ([rotor, "--style", "sketch", "--edge-mask", out("m.png")], "--edge-mask needs --style edges, toon+edges or inked"),
     ([rotor, "--style", "edges", "--crease-angle", "500", "-o", out("x.png")], "--crease-angle expects a number in 1..179"),
     ([rotor, "--style", "edges", "--silhouette-threshold", "2", "-o", out("x.png")], "--silhouette-threshold expects a number in"),
     ([rotor, "--style", "edges", "--line-width", "0", "-o", out("x.png")], "--line-width expects a number in 0.5..16"),
     ([rotor, "--style", "edges", "--contour-side", "sideways", "-o", out("x.png")], "--contour-side expects inside, outside or both"),
     ([rotor, "--style", "edges", "--lines", "silhouettes,hatching", "-o", out("x.png")], "--lines expects silhouettes, creases, contours or none, got 'hatching'"),
     ([rotor, "--style", "edges", "--line-color", "2,0,0", "-o", out("x.png")], "--line-color expects r,g,b"),
-    ([rotor, "--edge-mask", out("m.png")], "--edge-mask needs --style edges or toon+edges"),
+    ([rotor, "--edge-mask", out("m.png")], "--edge-mask needs --style edges, toon+edges or inked"),
+    ([rotor, "--style", "edges", "--encoding", "packed4", "-o", out("x.png")], "--encoding expects float, half, packed8 or packed16, got 'packed4'"),
+    ([rotor, "--style", "edges", "--packed-threshold", "0", "-o", out("x.png")], "--packed-threshold expects a number in 0.001..4"),
     ([rotor, "--size", "100", "-o", out("x.png")], "--size expects WxH"),
     ([rotor, "--size", "0x100", "-o", out("x.png")], "--size width expects an integer in 1..16384"),
     ([rotor, "--zoom", "-2", "-o", out("x.png")], "--zoom expects a positive factor"),

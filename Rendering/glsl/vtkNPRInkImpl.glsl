@@ -1,0 +1,14 @@
+  // vtkNPRInkPass: one shader for both draws; the mode is a uniform, so no rebuild between them.
+  if (nprInkMode == 1)
+  {
+    // The wireframe of the back faces only; culling is the property's, so it is done here.
+    if (gl_FrontFacing)
+    {
+      discard;
+    }
+    gl_FragData[0] = vec4(nprInkColor, 1.0);
+  }
+  else if (nprInkMode == 2)
+  {
+    gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0);
+  }

@@ -1,0 +1,196 @@
+#include "vtkNPRInkPass.h"
+
+#include "vtkActor.h"
+#include "vtkNPRPassUtilities.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtk_glew.h"
+
+#include "vtkNPRInkDecl.h"
+#include "vtkNPRInkImpl.h"
+
+#include <algorithm>
+#include <vector>
+
+vtkStandardNewMacro(vtkNPRInkPass);
+vtkCxxSetObjectMacro(vtkNPRInkPass, DelegatePass, vtkRenderPass);
+
+vtkNPRInkPass::vtkNPRInkPass() = default;
+
+vtkNPRInkPass::~vtkNPRInkPass()
+{
+  this->SetDelegatePass(nullptr);
+}
+
+double vtkNPRInkPass::GetEffectiveLineWidth(vtkRenderer* renderer) const
+{
+  return std::min(std::max(this->LineWidth * vtkNPRWindowScale(renderer), 0.5), 32.0);
+}
+
+void vtkNPRInkPass::Render(const vtkRenderState* state)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro("no delegate pass: nothing drawn");
+    return;
+  }
+  if (vtkNPRRenderSelection(state, this->NumberOfRenderedProps))
+  {
+    return; // a picking render
+  }
+  vtkRenderer* renderer = state->GetRenderer();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  vtkOpenGLState* glState = window->GetState();
+
+  // Ink only for the props whose mapper calls this pass's shader hooks: any other prop would be
+  // drawn as a wireframe in its own colours.
+  std::vector<vtkProp*> inked;
+  for (int i = 0; i < state->GetPropArrayCount(); ++i)
+  {
+    vtkActor* actor = vtkActor::SafeDownCast(state->GetPropArray()[i]);
+    if (actor && vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()))
+    {
+      inked.push_back(actor);
+    }
+  }
+
+  // Half of the wireframe lies under the front faces: draw it twice the visible width.
+  const double visibleWidth = this->GetEffectiveLineWidth(renderer);
+  float widthRange[2] = { 1.0f, 1.0f };
+  glGetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, widthRange);
+  double drawnWidth = 2.0 * visibleWidth;
+  if (drawnWidth > widthRange[1])
+  {
+    if (!this->WarnedAboutWidth)
+    {
+      vtkWarningMacro("ink lines of " << drawnWidth << " pixels are drawn " << widthRange[1]
+                                      << " wide, the most this OpenGL draws");
+      this->WarnedAboutWidth = true;
+    }
+    drawnWidth = widthRange[1];
+  }
+
+  if (this->CoverageOnly)
+  {
+    // A mask: the background black too.
+    int width, height, x, y;
+    renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+    vtkOpenGLState::ScopedglClearColor clearColorSaver(glState);
+    vtkOpenGLState::ScopedglScissor scissorSaver(glState);
+    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
+    glState->vtkglEnable(GL_SCISSOR_TEST);
+    glState->vtkglScissor(x, y, width, height);
+    glState->vtkglClearColor(0.0, 0.0, 0.0, 1.0);
+    glState->vtkglClear(GL_COLOR_BUFFER_BIT);
+  }
+
+  this->PreRender(state); // the mappers now call this pass's shader hooks
+
+  // 1. The back faces' wireframe in ink.
+  if (!inked.empty())
+  {
+    vtkRenderState inkState(renderer);
+    inkState.SetPropArrayAndCount(inked.data(), static_cast<int>(inked.size()));
+    inkState.SetFrameBuffer(state->GetFrameBuffer());
+    inkState.SetRequiredKeys(state->GetRequiredKeys());
+    this->DrawMode = DrawInk;
+    glState->vtkglLineWidth(static_cast<float>(drawnWidth));
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    // Front faces culled underneath vtkOpenGLState's cache: each actor's property disables
+    // culling through the cache, which believes it is off and skips the call. A property that
+    // culls itself turns it back on through the cache, and the next one then off for real: its
+    // props are drawn unculled and the shader's discard keeps the result the same, slower.
+    glState->vtkglDisable(GL_CULL_FACE); // the cache must believe it is off
+    glCullFace(GL_FRONT);
+    glEnable(GL_CULL_FACE);
+    this->DelegatePass->Render(&inkState);
+    glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glState->ResetGLCullFaceState();
+    glState->vtkglEnable(GL_CULL_FACE); // the cache and OpenGL agree again: off
+    glState->vtkglDisable(GL_CULL_FACE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glState->vtkglLineWidth(1.0f);
+  }
+
+  // 2. Every face filled, pulled towards the viewer by the line width's worth of depth slope.
+  this->DrawMode = this->CoverageOnly ? DrawMaskFill : DrawShaded;
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(-static_cast<float>(visibleWidth), -1.0f);
+  this->DelegatePass->Render(state);
+  glPolygonOffset(0.0f, 0.0f);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  this->DrawMode = DrawShaded;
+
+  this->PostRender(state);
+  vtkOpenGLCheckErrorMacro("failed after vtkNPRInkPass::Render");
+}
+
+bool vtkNPRInkPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    // After texturing: the colour is final there.
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::TCoord::Impl",
+      "//VTK::TCoord::Impl\n  //NPR::Ink::Impl\n", false);
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
+      "//VTK::Output::Dec\n//NPR::Ink::Dec\n", false);
+  }
+  return true;
+}
+
+bool vtkNPRInkPass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  if (fragmentShader.find("//NPR::Ink::Impl") != std::string::npos)
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//NPR::Ink::Dec", vtkNPRInkDecl, false);
+    vtkShaderProgram::Substitute(fragmentShader, "//NPR::Ink::Impl", vtkNPRInkImpl, false);
+  }
+  return true;
+}
+
+bool vtkNPRInkPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  if (program->IsUniformUsed("nprInkMode"))
+  {
+    program->SetUniformi("nprInkMode", this->DrawMode);
+  }
+  if (program->IsUniformUsed("nprInkColor"))
+  {
+    const float white[3] = { 1.0f, 1.0f, 1.0f };
+    const float ink[3] = { static_cast<float>(this->InkColor[0]),
+      static_cast<float>(this->InkColor[1]), static_cast<float>(this->InkColor[2]) };
+    program->SetUniform3f("nprInkColor", this->CoverageOnly ? white : ink);
+  }
+  return true;
+}
+
+void vtkNPRInkPass::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(window);
+  }
+}
+
+void vtkNPRInkPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+  os << indent << "LineWidth: " << this->LineWidth << "\n";
+  os << indent << "InkColor: " << this->InkColor[0] << " " << this->InkColor[1] << " "
+     << this->InkColor[2] << "\n";
+  os << indent << "CoverageOnly: " << this->CoverageOnly << "\n";
+}
