@@ -19,7 +19,7 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
-#include "vtkStaticCellLocator.h"
+#include "vtkCellLocator.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
 
@@ -88,7 +88,10 @@ struct vtkNPRReferenceMask::Internals
 
   std::vector<ActorState> LocatorState; // what the locator was built from
   vtkSmartPointer<vtkPolyData> Triangles;
-  vtkSmartPointer<vtkStaticCellLocator> Locator;
+  // vtkCellLocator, not vtkStaticCellLocator: in VTK 9.1 the static locator clears a flag per
+  // cell on every IntersectWithLine (thread-safe, but O(cells) per ray: 3x slower at 1M
+  // triangles); the rays are cast one after another here.
+  vtkSmartPointer<vtkCellLocator> Locator;
   vtkIdType LocatorBuilds = 0;
 
   vtkNew<vtkImageData> Mask;
@@ -188,8 +191,11 @@ void vtkNPRReferenceMask::Internals::BuildLocator(const std::vector<ActorState>&
   this->Locator = nullptr;
   if (triangles->GetNumberOfCells() > 0)
   {
-    this->Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+    this->Locator = vtkSmartPointer<vtkCellLocator>::New();
     this->Locator->SetDataSet(this->Triangles);
+    // Few triangles per octant: rays are what costs, the tree is built once (measured: 3
+    // per node casts rays 2-3x faster than 25 on 75k and 1.2M triangles).
+    this->Locator->SetNumberOfCellsPerNode(3);
     this->Locator->BuildLocator();
   }
   this->LocatorState = actors;

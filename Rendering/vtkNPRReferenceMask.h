@@ -12,7 +12,7 @@
  * - which parts of them are visible: each line segment is clipped to the view frustum (near
  *   and far planes, the image) in homogeneous coordinates and sampled in the image at most
  *   SampleSpacing pixels apart (at least its two ends). Each sample is tested by casting a
- *   segment through a vtkStaticCellLocator of all the actors' triangles in world coordinates,
+ *   segment through a vtkCellLocator of all the actors' triangles in world coordinates,
  *   from the near plane (towards the eye for a perspective camera, along the direction of
  *   projection for a parallel one: what lies before the near plane is clipped when rendering)
  *   to the sample, stopped short of the sample by OcclusionEpsilon times its length, so that
