@@ -11,8 +11,11 @@
 #include "vtkLogger.h"
 #include "vtkMapper.h"
 #include "vtkNPREdgePass.h"
+#include "vtkNPRFeatureLines.h"
 #include "vtkNPRGBufferPass.h"
+#include "vtkNPRInkPass.h"
 #include "vtkNPRPass.h"
+#include "vtkNPRReferenceMask.h"
 #include "vtkNPRRenderWindowFactory.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -30,24 +33,6 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
-#if __has_include("vtkNPRFeatureLines.h")
-#include "vtkNPRFeatureLines.h"
-#define NPR_HAVE_FEATURE_LINES 1
-#else
-#define NPR_HAVE_FEATURE_LINES 0
-#endif
-#if __has_include("vtkNPRReferenceMask.h")
-#include "vtkNPRReferenceMask.h"
-#define NPR_HAVE_REFERENCE_MASK 1
-#else
-#define NPR_HAVE_REFERENCE_MASK 0
-#endif
-#if __has_include("vtkNPRInkPass.h")
-#include "vtkNPRInkPass.h"
-#define NPR_HAVE_INK_PASS 1
-#else
-#define NPR_HAVE_INK_PASS 0
-#endif
 
 #include <algorithm>
 #include <chrono>
@@ -125,45 +110,43 @@ struct MethodSpec
 {
   std::string Name;
   Family Kind = Family::Edges;
-  int Encoding = 0; // vtkNPREdgePass::Encodings: FLOAT, HALF, PACKED8, PACKED16
+  int Encoding = vtkNPREdgePass::FLOAT;
   double SilhouetteThreshold = 0.005;
   double CreaseAngle = 30.0;
-  double PackedThreshold = 0.0; // packed encodings; 0: the pass's default
+  double PackedThreshold = 0.1;
   std::string Settings;
 };
 
-const char* const EncodingNames[] = { "float", "half", "packed8", "packed16" };
-
-// TEMPORARY until vtkNPREdgePass::SetEncoding() lands on main: compiles with and without it.
-template <typename Pass>
-auto ApplyEncoding(Pass* pass, int encoding, int) -> decltype(pass->SetEncoding(encoding), bool())
-{
-  pass->SetEncoding(encoding);
-  return true;
-}
-template <typename Pass>
-bool ApplyEncoding(Pass*, int encoding, long)
-{
-  return encoding == 0; // only the float G-buffer exists
-}
-
 // Every method, in the order of the report. Two threshold settings per G-buffer encoding: the
-// pass's defaults and a sensitive one (smaller depth steps, smaller crease angles).
+// pass's defaults and a sensitive one (float, half: smaller depth steps and crease angles;
+// packed: half the Laplacian threshold; below that the quantisation noise draws lines).
 std::vector<MethodSpec> AllMethods()
 {
   std::vector<MethodSpec> methods;
-  for (int encoding = 0; encoding < 4; ++encoding)
+  for (int encoding : { vtkNPREdgePass::FLOAT, vtkNPREdgePass::HALF, vtkNPREdgePass::PACKED8,
+         vtkNPREdgePass::PACKED16 })
   {
+    const bool packed = encoding == vtkNPREdgePass::PACKED8 || encoding == vtkNPREdgePass::PACKED16;
     for (bool sensitive : { false, true })
     {
       MethodSpec method;
-      method.Name = std::string("edges-") + EncodingNames[encoding] + (sensitive ? "-sensitive" : "");
+      const std::string name = vtkNPREdgePass::GetEncodingName(encoding);
+      method.Name = "edges-" + name + (sensitive ? "-sensitive" : "");
       method.Encoding = encoding;
-      method.SilhouetteThreshold = sensitive ? 0.0025 : 0.005;
-      method.CreaseAngle = sensitive ? 25.0 : 30.0;
       std::ostringstream settings;
-      settings << EncodingNames[encoding] << " G-buffer, silhouette threshold "
-               << method.SilhouetteThreshold << ", crease angle " << method.CreaseAngle;
+      settings << name << " G-buffer, ";
+      if (packed)
+      {
+        method.PackedThreshold = sensitive ? 0.05 : 0.1;
+        settings << "packed threshold " << method.PackedThreshold;
+      }
+      else
+      {
+        method.SilhouetteThreshold = sensitive ? 0.0025 : 0.005;
+        method.CreaseAngle = sensitive ? 25.0 : 30.0;
+        settings << "silhouette threshold " << method.SilhouetteThreshold << ", crease angle "
+                 << method.CreaseAngle;
+      }
       method.Settings = settings.str();
       methods.push_back(method);
     }
@@ -171,38 +154,15 @@ std::vector<MethodSpec> AllMethods()
   MethodSpec inked;
   inked.Name = "inked";
   inked.Kind = Family::Inked;
-  inked.Settings = "vtkNPRInkPass (back-face wireframe with polygon offset)";
+  inked.Settings = "vtkNPRInkPass: fat back-face wireframe, filled fronts with polygon offset";
   methods.push_back(inked);
   MethodSpec lines;
   lines.Name = "objectlines";
   lines.Kind = Family::ObjectLines;
-  lines.Settings = "vtkNPRFeatureLines per frame, line actor over the shaded mesh";
+  lines.Settings = "vtkNPRFeatureLines for the camera every frame, line actor over the shaded "
+                   "mesh (coincident-topology polygon offset)";
   methods.push_back(lines);
   return methods;
-}
-
-bool MethodAvailable(const MethodSpec& method, std::string& why)
-{
-  switch (method.Kind)
-  {
-    case Family::Edges:
-    {
-      vtkNew<vtkNPREdgePass> probe;
-      if (!ApplyEncoding(probe.Get(), method.Encoding, 0))
-      {
-        why = "this build's vtkNPREdgePass has no G-buffer encodings";
-        return false;
-      }
-      return true;
-    }
-    case Family::Inked:
-      why = "this build has no vtkNPRInkPass";
-      return NPR_HAVE_INK_PASS != 0;
-    case Family::ObjectLines:
-      why = "this build has no vtkNPRFeatureLines";
-      return NPR_HAVE_FEATURE_LINES != 0;
-  }
-  return false;
 }
 
 // ---- Options -----------------------------------------------------------------------------------
@@ -460,21 +420,7 @@ std::vector<MethodSpec> SelectMethods(const Options& options)
         valid + ")");
     }
   }
-  // Methods this build cannot run are reported and left out.
-  std::vector<MethodSpec> available;
-  for (const MethodSpec& method : chosen)
-  {
-    std::string why;
-    if (MethodAvailable(method, why))
-    {
-      available.push_back(method);
-    }
-    else
-    {
-      std::cerr << "npr-benchmark: warning: method " << method.Name << " left out: " << why << "\n";
-    }
-  }
-  return available;
+  return chosen;
 }
 
 void MakeDirectory(const std::string& path)
@@ -552,12 +498,11 @@ struct Bench
   vtkNew<vtkPolyDataMapper> MeshMapper;
   vtkNew<vtkActor> MeshActor;
   double LineWidth = 1.5;
-#if NPR_HAVE_FEATURE_LINES
   vtkNew<vtkNPRFeatureLines> FeatureLines;
-#endif
   vtkNew<vtkPolyDataMapper> LineMapper;
   vtkNew<vtkActor> LineActor;
-  vtkSmartPointer<vtkNPRPass> ReferencePass; // TEMPORARY placeholder of vtkNPRReferenceMask
+  // Kept for the whole run: it builds each mesh's adjacency and occlusion structure once.
+  vtkNew<vtkNPRReferenceMask> Reference;
   int DefaultResolve = vtkMapper::GetResolveCoincidentTopology();
 
   explicit Bench(double lineWidth)
@@ -570,20 +515,18 @@ struct Bench
       throw std::runtime_error("no headless render window (see the message above)");
     }
     this->Window->AddRenderer(this->Renderer);
-    this->Renderer->SetBackground(1.0, 1.0, 1.0);
     this->MeshMapper->ScalarVisibilityOff();
     this->MeshActor->SetMapper(this->MeshMapper);
     this->Renderer->AddActor(this->MeshActor);
-    this->ShadeMesh();
-#if NPR_HAVE_FEATURE_LINES
     this->LineMapper->SetInputConnection(this->FeatureLines->GetOutputPort());
-#endif
     this->LineMapper->ScalarVisibilityOff();
     this->LineActor->SetMapper(this->LineMapper);
     this->LineActor->GetProperty()->SetLineWidth(static_cast<float>(lineWidth));
     this->LineActor->GetProperty()->LightingOff();
     this->LineActor->VisibilityOff();
     this->Renderer->AddActor(this->LineActor);
+    this->ShadeMesh();
+    this->Reference->SetRenderer(this->Renderer); // visible actors only: the mesh
   }
 
   void ShadeMesh()
@@ -597,14 +540,12 @@ struct Bench
     this->Renderer->SetBackground(1.0, 1.0, 1.0);
   }
 
+  // The mesh drawn, and the one whose feature lines the object-space method draws (the same
+  // surface; the raw one keeps the file's connectivity).
   void SetMesh(vtkPolyData* mesh, vtkPolyData* topology)
   {
     this->MeshMapper->SetInputData(mesh);
-#if NPR_HAVE_FEATURE_LINES
     this->FeatureLines->SetInputData(topology);
-#else
-    (void)topology;
-#endif
   }
 
   vtkCamera* Camera() { return this->Renderer->GetActiveCamera(); }
@@ -617,22 +558,21 @@ struct Bench
       return nullptr;
     }
     auto pass = vtkSmartPointer<vtkNPRPass>::New();
-    vtkNPREdgePass* edges = pass->GetEdgePass();
-    edges->SetLineWidth(this->LineWidth);
     if (method.Kind == Family::Edges)
     {
       pass->SetStyleToEdges();
-      ApplyEncoding(edges, method.Encoding, 0);
+      vtkNPREdgePass* edges = pass->GetEdgePass();
+      edges->SetLineWidth(this->LineWidth);
+      edges->SetEncoding(method.Encoding);
       edges->SetSilhouetteThreshold(method.SilhouetteThreshold);
       edges->SetCreaseAngle(method.CreaseAngle);
+      edges->SetPackedThreshold(method.PackedThreshold);
     }
-#if NPR_HAVE_INK_PASS
-    else if (method.Kind == Family::Inked)
+    else
     {
-      pass->SetStyle(vtkNPRPass::INKED);
+      pass->SetStyleToInked();
       pass->GetInkPass()->SetLineWidth(this->LineWidth);
     }
-#endif
     return pass;
   }
 
@@ -650,10 +590,8 @@ struct Bench
   // The object-space lines for the current camera (its values are copied: once per frame).
   void UpdateFeatureLines()
   {
-#if NPR_HAVE_FEATURE_LINES
     this->FeatureLines->SetCamera(this->Camera());
     this->FeatureLines->Modified(); // the extraction is part of every frame of the method
-#endif
   }
 
   // One timed frame: nothing may be reused, and the GPU has finished when it returns.
@@ -682,16 +620,14 @@ struct Bench
       mask = ReadMask(this->Window);
       pass->GetEdgePass()->CoverageOnlyOff();
     }
-#if NPR_HAVE_INK_PASS
     else if (method.Kind == Family::Inked)
     {
       this->Activate(pass, false);
-      pass->GetInkPass()->SetCoverageOnly(true);
+      pass->GetInkPass()->CoverageOnlyOn();
       this->Window->Render();
       mask = ReadMask(this->Window);
-      pass->GetInkPass()->SetCoverageOnly(false);
+      pass->GetInkPass()->CoverageOnlyOff();
     }
-#endif
     else
     {
       // The lines white over the mesh black on black: what the lines leave visible.
@@ -706,17 +642,20 @@ struct Bench
       mask = ReadMask(this->Window);
       this->ShadeMesh();
     }
+    this->Activate(nullptr, false);
     return mask;
   }
 
-  // The object-space ground truth for the current camera and size.
+  // The object-space ground truth for the current camera and size (vtkNPRReferenceMask:
+  // visible silhouettes, creases above 30 degrees, boundaries and non-manifold edges).
   Mask ReferenceMask()
   {
-#if NPR_HAVE_REFERENCE_MASK
-    vtkNew<vtkNPRReferenceMask> reference;
-    reference->SetRenderer(this->Renderer);
-    reference->Update();
-    vtkImageData* image = reference->GetOutput();
+    this->Activate(nullptr, false);
+    if (!this->Reference->Update())
+    {
+      throw std::runtime_error("vtkNPRReferenceMask failed (see the message above)");
+    }
+    vtkImageData* image = this->Reference->GetMask();
     Mask mask;
     const int* dims = image->GetDimensions();
     mask.Width = dims[0];
@@ -724,19 +663,6 @@ struct Bench
     const auto* pixels = static_cast<const unsigned char*>(image->GetScalarPointer());
     mask.Pixels.assign(pixels, pixels + static_cast<size_t>(dims[0]) * dims[1]);
     return mask;
-#else
-    // TEMPORARY placeholder until vtkNPRReferenceMask lands (branch feature-lines): the edge
-    // pass at its defaults with one-pixel aliased lines. Not a ground truth: figures measured
-    // with it only compare the methods with the float edge pass.
-    if (!this->ReferencePass)
-    {
-      this->ReferencePass = vtkSmartPointer<vtkNPRPass>::New();
-      this->ReferencePass->GetEdgePass()->SetLineWidth(1.0);
-      this->ReferencePass->GetEdgePass()->AntiAliasingOff();
-    }
-    MethodSpec method;
-    return this->MethodMask(method, this->ReferencePass);
-#endif
   }
 };
 
@@ -841,6 +767,7 @@ int RunBenchmark(const Options& options)
         const nprBenchmarkCamera& camera = nprBenchmarkCameras()[c];
         bench.Activate(nullptr, false);
         nprApplyBenchmarkCamera(bench.Renderer, camera);
+        bench.Window->Render(); // the camera as drawn, before the reference reads it
         ++view;
         std::cerr << "npr-benchmark: [" << view << "/" << views << "] " << scene.Name << " "
                   << camera.Name << " " << size.first << "x" << size.second << ": reference";
@@ -931,10 +858,8 @@ int RunBenchmark(const Options& options)
     info.Methods += "- " + method.Name + ": " + method.Settings + "\n";
   }
   info.Methods += "\nEvery method draws lines " + nprFormat(options.LineWidth) +
-    " px wide; reference: " +
-    (NPR_HAVE_REFERENCE_MASK ? std::string("vtkNPRReferenceMask (object space)")
-                             : std::string("TEMPORARY placeholder (float edge pass)")) +
-    ".\n";
+    " px wide. Reference: vtkNPRReferenceMask (visible silhouettes, creases above 30 degrees, "
+    "boundary and non-manifold edges, one pixel wide).\n";
   info.Seconds = Seconds(runStart);
 
   nprWriteBenchmarkCSV(options.Out + "/results.csv", rows);
@@ -1157,6 +1082,7 @@ int RunStress(const Options& options)
           bench.Camera()->SetClippingRange(range);
           row.Near = range[0];
           row.Far = range[1];
+          bench.Window->Render(); // the camera as drawn, before the reference reads it
 
           const Mask reference = bench.ReferenceMask();
           bench.Camera()->SetClippingRange(range); // as the user set it, whatever the reference did
