@@ -12,7 +12,7 @@
  * - which parts of them are visible: each line segment is clipped to the view frustum (near
  *   and far planes, the image) in homogeneous coordinates and sampled in the image at most
  *   SampleSpacing pixels apart (at least its two ends). Each sample is tested by casting a
- *   segment through a vtkCellLocator of all the actors' triangles in world coordinates,
+ *   segment through vtkStaticCellLocators of all the actors' triangles in world coordinates,
  *   from the near plane (towards the eye for a perspective camera, along the direction of
  *   projection for a parallel one: what lies before the near plane is clipped when rendering)
  *   to the sample, stopped short of the sample by OcclusionEpsilon times its length, so that
@@ -145,6 +145,18 @@ public:
   vtkBooleanMacro(GenerateVisibleLines, bool);
   ///@}
 
+  ///@{
+  /**
+   * The occlusion structure splits the triangles into groups of nearby ones (Morton order of
+   * their centroids) of at most this many (default 16384, at least 1), each with its own
+   * vtkStaticCellLocator; a ray tests only the groups whose box it crosses. This changes the
+   * speed, never the result: VTK 9.1's static locator clears a flag per cell of its data set on
+   * every ray, which dominates with one locator for a million triangles.
+   */
+  vtkSetClampMacro(TrianglesPerLocator, int, 1, VTK_INT_MAX);
+  vtkGetMacro(TrianglesPerLocator, int);
+  ///@}
+
   /**
    * Computes the mask (and the visible lines). False, with an error, when there is no renderer
    * or no size.
@@ -177,7 +189,8 @@ public:
   ///@}
 
   /**
-   * How many times the occlusion structure (all actors' triangles, located) has been built.
+   * How many times the occlusion structure (all actors' triangles, located) has been built:
+   * again only when an actor's mesh or matrix, the set of actors or TrianglesPerLocator changed.
    */
   vtkIdType GetNumberOfLocatorBuilds() const;
 
@@ -201,6 +214,7 @@ protected:
   double SampleSpacing = 0.25;
   double OcclusionEpsilon = 1e-6;
   bool GenerateVisibleLines = false;
+  int TrianglesPerLocator = 16384;
 
 private:
   vtkNPRReferenceMask(const vtkNPRReferenceMask&) = delete;

@@ -1043,6 +1043,47 @@ int MaskReuse()
   return nprTestResult();
 }
 
+// ---- The groups of triangles the occlusion structure is split into change nothing ----
+int MaskLocatorGroups()
+{
+  MaskScene scene(640, 480);
+  vtkNew<vtkNPRModelReader> reader;
+  reader->SetFileName((nprTestDataDir() + "/bunny.ply").c_str());
+  nprAddActor(scene.Renderer, reader->GetOutputPort());
+  scene.Renderer->ResetCamera();
+  scene.Camera()->Azimuth(30);
+  scene.Camera()->Elevation(20);
+  scene.Camera()->OrthogonalizeViewUp();
+  scene.Renderer->ResetCameraClippingRange();
+  vtkNPRReferenceMask* reference = scene.Reference;
+  reference->GenerateVisibleLinesOn(); // every sample's visibility counts, not only the pixels'
+  std::vector<unsigned char> first;
+  vtkIdType visible = -1;
+  for (int group : { VTK_INT_MAX, 16384, 1000, 7 })
+  {
+    reference->SetTrianglesPerLocator(group);
+    vtkImageData* mask = scene.Mask();
+    const unsigned char* p = static_cast<unsigned char*>(mask->GetScalarPointer());
+    const std::vector<unsigned char> pixels(p, p + scene.Width * scene.Height);
+    std::cout << "groups of " << group << " triangles: " << reference->GetNumberOfVisibleSamples()
+              << " of " << reference->GetNumberOfRayCasts() << " samples visible, "
+              << reference->GetNumberOfLinePixels() << " pixels, visibility "
+              << reference->GetVisibilityTime() << " s\n";
+    if (first.empty())
+    {
+      first = pixels;
+      visible = reference->GetNumberOfVisibleSamples();
+      NPR_CHECK(reference->GetNumberOfLinePixels() > 1000, "too few line pixels on the bunny");
+    }
+    NPR_CHECK(pixels == first && reference->GetNumberOfVisibleSamples() == visible,
+      "groups of " << group << " triangles changed the result");
+  }
+  NPR_CHECK(reference->GetNumberOfLocatorBuilds() == 4 && reference->GetNumberOfAdjacencyBuilds() == 1,
+    "builds: locator " << reference->GetNumberOfLocatorBuilds() << ", adjacency "
+                       << reference->GetNumberOfAdjacencyBuilds());
+  return nprTestResult();
+}
+
 // ---- The mask against vtkNPREdgePass's lines of the same camera: they line up ----
 int MaskAgainstEdgePass(const char* model)
 {
@@ -1133,6 +1174,7 @@ int main(int argc, char* argv[])
     { "mask-cube-parallel", [] { return MaskCube(true); } },
     { "mask-occlusion", MaskOcclusion },
     { "mask-reuse", MaskReuse },
+    { "mask-locator-groups", MaskLocatorGroups },
     { "mask-edge-pass-cube", [] { return MaskAgainstEdgePass(nullptr); } },
     { "mask-edge-pass-bunny", [] { return MaskAgainstEdgePass("bunny.ply"); } },
   };
