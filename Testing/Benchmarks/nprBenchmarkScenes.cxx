@@ -224,7 +224,6 @@ vtkSmartPointer<vtkPolyData> nprSliverMesh(vtkPolyData* raw)
   points->SetDataTypeToDouble();
   points->DeepCopy(raw->GetPoints());
   vtkNew<vtkCellArray> polys;
-  polys->DeepCopy(raw->GetPolys());
   auto cells = vtk::TakeSmartPointer(raw->GetPolys()->NewIterator());
   vtkIdType index = 0;
   for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++index)
@@ -234,28 +233,35 @@ vtkSmartPointer<vtkPolyData> nprSliverMesh(vtkPolyData* raw)
     cells->GetCurrentCell(size, ids);
     if (index % 5 != 0 || size != 3)
     {
+      polys->InsertNextCell(size, ids);
       continue;
     }
-    double a[3], b[3], c[3];
+    // Split (a, b, c) at a point p inside it, 1e-6 of the edge's length from the middle of
+    // a-b: (a, b, p) is a needle, (b, c, p) and (c, a, p) are ordinary. The mesh stays
+    // manifold (no T-junction) and covers the same surface.
+    double a[3], b[3], c[3], p[3];
     points->GetPoint(ids[0], a);
     points->GetPoint(ids[1], b);
     points->GetPoint(ids[2], c);
-    // The apex: the edge's midpoint moved towards the third point by 1e-6 of the edge's length,
-    // so the needle lies inside its triangle (no new visible geometry).
     const double length = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
-    double apex[3], towards[3];
+    double towards[3];
     for (int k = 0; k < 3; ++k)
     {
-      apex[k] = 0.5 * (a[k] + b[k]);
-      towards[k] = c[k] - apex[k];
+      p[k] = 0.5 * (a[k] + b[k]);
+      towards[k] = c[k] - p[k];
     }
     vtkMath::Normalize(towards);
     for (int k = 0; k < 3; ++k)
     {
-      apex[k] += 1e-6 * length * towards[k];
+      p[k] += 1e-6 * length * towards[k];
     }
-    const vtkIdType needle[3] = { ids[0], ids[1], points->InsertNextPoint(apex) };
+    const vtkIdType apex = points->InsertNextPoint(p);
+    const vtkIdType needle[3] = { ids[0], ids[1], apex };
+    const vtkIdType second[3] = { ids[1], ids[2], apex };
+    const vtkIdType third[3] = { ids[2], ids[0], apex };
     polys->InsertNextCell(3, needle);
+    polys->InsertNextCell(3, second);
+    polys->InsertNextCell(3, third);
   }
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->SetPoints(points);

@@ -49,8 +49,8 @@ void nprApplyBenchmarkCamera(vtkRenderer* renderer, const nprBenchmarkCamera& ca
 vtkSmartPointer<vtkPolyData> nprScaledMesh(vtkPolyData* raw, double factor);
 // The points moved by a distance along a fixed oblique direction.
 vtkSmartPointer<vtkPolyData> nprTranslatedMesh(vtkPolyData* raw, double distance);
-// Near-degenerate needle triangles lying in the surface: every fifth triangle gets a sliver over
-// its first edge, its apex 1e-6 of the edge's length off the edge's midpoint.
+// Near-degenerate needle triangles in a manifold mesh: every fifth triangle is split in three at
+// a point 1e-6 of its first edge's length off that edge's midpoint (one needle, two ordinary).
 vtkSmartPointer<vtkPolyData> nprSliverMesh(vtkPolyData* raw);
 // A triangle soup: every triangle has its own three points (duplicate vertices, as in STL).
 vtkSmartPointer<vtkPolyData> nprSoupMesh(vtkPolyData* raw);
