@@ -19,7 +19,6 @@
 #include "vtkNPRRenderWindowFactory.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLRenderWindow.h"
 #include "vtkOutputWindow.h"
 #include "vtkPNGWriter.h"
 #include "vtkPixelBufferObject.h"
@@ -30,11 +29,13 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
 
+#include <vtksys/SystemTools.hxx>
+
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -43,7 +44,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <sys/stat.h>
 #include <vector>
 
 namespace
@@ -425,17 +425,7 @@ std::vector<MethodSpec> SelectMethods(const Options& options)
 
 void MakeDirectory(const std::string& path)
 {
-  std::string partial;
-  for (size_t i = 0; i <= path.size(); ++i)
-  {
-    if (i == path.size() || (path[i] == '/' && i > 0))
-    {
-      partial = path.substr(0, i);
-      ::mkdir(partial.c_str(), 0777);
-    }
-  }
-  struct stat info;
-  if (::stat(path.c_str(), &info) != 0 || !S_ISDIR(info.st_mode))
+  if (!vtksys::SystemTools::MakeDirectory(path))
   {
     throw std::runtime_error(path + ": cannot create the folder");
   }
@@ -447,10 +437,6 @@ struct Mask
   int Width = 0;
   int Height = 0;
   std::vector<unsigned char> Pixels; // row 0 = bottom, non-zero = line
-  long long Count() const
-  {
-    return std::count_if(Pixels.begin(), Pixels.end(), [](unsigned char v) { return v != 0; });
-  }
 };
 
 // The window's first colour channel, thresholded: a line pixel where it is >= 128 (coverage at

@@ -302,7 +302,7 @@ void nprWritePlot(const std::string& path, const std::vector<nprPlotPoint>& poin
   {
     throw std::runtime_error(path + ": no render window for the plot");
   }
-  window->SetSize(1000, 700);
+  window->SetSize(1200, 700);
   vtkNew<vtkContextView> view;
   view->SetRenderWindow(window);
   view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
@@ -313,7 +313,9 @@ void nprWritePlot(const std::string& path, const std::vector<nprPlotPoint>& poin
   chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(timeTitle);
   chart->GetAxis(vtkAxis::LEFT)->SetTitle("mean F1 at 1 px");
   chart->SetShowLegend(true);
-  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
+  // Beside the plot, where no point can hide under it.
+  chart->GetLegend()->SetInline(false);
+  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::CENTER);
   chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
 
   auto table = [](const std::vector<nprPlotPoint>& series, const std::string& name) {
@@ -349,7 +351,7 @@ void nprWritePlot(const std::string& path, const std::vector<nprPlotPoint>& poin
   // Distinct colours and shapes: a qualitative palette, markers cycling through five shapes.
   static const unsigned char palette[][3] = { { 228, 26, 28 }, { 55, 126, 184 }, { 77, 175, 74 },
     { 152, 78, 163 }, { 255, 127, 0 }, { 166, 86, 40 }, { 247, 129, 191 }, { 0, 0, 0 },
-    { 23, 190, 207 }, { 188, 189, 34 }, { 31, 60, 120 }, { 120, 20, 60 } };
+    { 23, 190, 207 }, { 0, 128, 128 }, { 31, 60, 120 }, { 120, 20, 60 } };
   static const int shapes[] = { vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE,
     vtkPlotPoints::DIAMOND, vtkPlotPoints::CROSS, vtkPlotPoints::PLUS };
   for (size_t i = 0; i < points.size(); ++i)
