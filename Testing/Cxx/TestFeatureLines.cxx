@@ -40,6 +40,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <set>
 #include <string>
 #include <utility>
@@ -1051,6 +1052,80 @@ int MaskReuse()
   return nprTestResult();
 }
 
+// ---- Far from the origin and at any scale: the same lines and the same mask ----
+int Stability()
+{
+  // The filter on a double-precision box moved 1e7 away, the eye moved with it.
+  const double eye[3] = { 2.2, 1.7, 2.9 };
+  std::set<std::pair<vtkIdType, vtkIdType>> reference;
+  for (double offset : { 0.0, 1e7 })
+  {
+    vtkSmartPointer<vtkPolyData> box = Triangulated(MakeBox());
+    vtkNew<vtkPoints> moved;
+    moved->SetDataTypeToDouble();
+    for (vtkIdType i = 0; i < box->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      box->GetPoint(i, p);
+      moved->InsertNextPoint(p[0] + offset, p[1] - offset, p[2] + offset);
+    }
+    box->SetPoints(moved);
+    auto filter = MakeFilter(AllTypes);
+    filter->SetInputData(box);
+    filter->SetEyePosition(eye[0] + offset, eye[1] - offset, eye[2] + offset);
+    filter->Update();
+    std::set<std::pair<vtkIdType, vtkIdType>> lines;
+    auto* ids = vtkIdTypeArray::SafeDownCast(
+      filter->GetOutput()->GetCellData()->GetArray("InputPointIds"));
+    auto* types = vtkUnsignedCharArray::SafeDownCast(
+      filter->GetOutput()->GetCellData()->GetArray("FeatureType"));
+    for (vtkIdType i = 0; ids && types && i < ids->GetNumberOfTuples(); ++i)
+    {
+      lines.insert({ ids->GetTypedComponent(i, 0) * 16 + types->GetValue(i),
+        ids->GetTypedComponent(i, 1) });
+    }
+    if (offset == 0.0)
+    {
+      reference = lines;
+    }
+    NPR_CHECK(lines == reference && lines.size() == 12,
+      "offset " << offset << ": " << lines.size() << " lines, not those at the origin");
+  }
+
+  // The mask of a cube moved by an actor position and scaled, the camera with it.
+  std::vector<unsigned char> first;
+  const double cases[][2] = { { 0.0, 1.0 }, { 1e5, 1.0 }, { 1e7, 1.0 }, { 0.0, 1e-6 },
+    { 0.0, 1e6 }, { 1e7, 1e3 } };
+  for (const auto& c : cases)
+  {
+    const double offset = c[0], scale = c[1];
+    MaskScene scene(400, 300);
+    const double origin[3] = { 0, 0, 0 };
+    vtkSmartPointer<vtkActor> cube = AddCube(scene.Renderer, origin, scale);
+    cube->SetPosition(offset, offset, offset);
+    vtkCamera* camera = scene.Camera();
+    camera->SetPosition(offset + 2.2 * scale, offset + 1.7 * scale, offset + 2.9 * scale);
+    camera->SetFocalPoint(offset, offset, offset);
+    camera->SetViewUp(0, 1, 0);
+    camera->SetClippingRange(scale, 10 * scale);
+    vtkImageData* mask = scene.Mask();
+    const unsigned char* p = static_cast<unsigned char*>(mask->GetScalarPointer());
+    const std::vector<unsigned char> pixels(p, p + scene.Width * scene.Height);
+    if (first.empty())
+    {
+      first = pixels;
+    }
+    const long long differ = std::inner_product(pixels.begin(), pixels.end(), first.begin(), 0LL,
+      std::plus<long long>(), [](unsigned char a, unsigned char b) { return a != b ? 1LL : 0LL; });
+    std::cout << "offset " << offset << ", scale " << scale << ": "
+              << scene.Reference->GetNumberOfLinePixels() << " pixels, " << differ
+              << " differ from the unit cube at the origin\n";
+    NPR_CHECK(differ == 0 && scene.Reference->GetNumberOfLinePixels() > 900,
+      "offset " << offset << ", scale " << scale << ": " << differ << " pixels differ");
+  }
+  return nprTestResult();
+}
+
 // ---- The groups of triangles the occlusion structure is split into change nothing ----
 int MaskLocatorGroups()
 {
@@ -1184,6 +1259,7 @@ int main(int argc, char* argv[])
     { "mask-cube-parallel", [] { return MaskCube(true); } },
     { "mask-occlusion", MaskOcclusion },
     { "mask-reuse", MaskReuse },
+    { "mask-stability", Stability },
     { "mask-locator-groups", MaskLocatorGroups },
     { "mask-edge-pass-cube", [] { return MaskAgainstEdgePass(nullptr); } },
     { "mask-edge-pass-bunny", [] { return MaskAgainstEdgePass("bunny.ply"); } },
