@@ -14,6 +14,7 @@
 #include "vtkNPRInkPass.h"
 #include "vtkNPRModelReader.h"
 #include "vtkNPRPass.h"
+#include "vtkNPRReferenceMask.h"
 #include "vtkNPRSketchPass.h"
 #include "vtkNPRToonPass.h"
 #include "vtkNPRRenderWindowFactory.h"
@@ -128,6 +129,7 @@ struct Options
   double PackedThreshold = 0.1;
   bool PackedBlur = false;
   std::string EdgeMask;
+  std::string ReferenceMask;
   std::vector<std::string> CompareStyles;
 
   // --style toon, toon+edges (and sketch with --sketch-toon)
@@ -180,6 +182,9 @@ Lines (--style edges, toon+edges and sketch):
   --no-antialias           lines without anti-aliasing
   --edge-mask FILE         also write the line coverage alone: white on black, 8-bit
                            grey PNG of the render's size (edges, toon+edges, inked)
+  --reference-mask FILE    also write the ground truth of --lines and --crease-angle:
+                           the visible object-space lines, white on black, 8-bit grey
+                           PNG of the render's size (any style)
   --encoding NAME          how the G-buffer stores depth and normals: float (default),
                            half, packed8 or packed16 (the 1990s packed depth+normal
                            value, lines from its Laplacian)
@@ -467,6 +472,10 @@ Options ParseOptions(int argc, char* argv[])
     {
       options.PackedBlur = true;
     }
+    else if (arg == "--reference-mask")
+    {
+      options.ReferenceMask = value();
+    }
     else if (arg == "--toon-bands")
     {
       options.ToonBands = ParseInteger(arg, value(), 1, 64);
@@ -515,9 +524,10 @@ Options ParseOptions(int argc, char* argv[])
                      "combined with --camera-in");
   }
   if (options.Output.empty() && options.Frames == 0 && options.CameraOut.empty() &&
-    options.EdgeMask.empty())
+    options.EdgeMask.empty() && options.ReferenceMask.empty())
   {
-    throw UsageError("nothing to do: give -o FILE, --frames N, --edge-mask FILE or --camera-out FILE");
+    throw UsageError("nothing to do: give -o FILE, --frames N, --edge-mask FILE, "
+                     "--reference-mask FILE or --camera-out FILE");
   }
   if (!options.CompareStyles.empty() && options.Frames == 0)
   {
@@ -577,6 +587,33 @@ void WriteWindowPNG(vtkRenderWindow* window, const std::string& path, bool grey)
   if (writer->GetErrorCode() != 0)
   {
     throw std::runtime_error(path + ": cannot write the PNG");
+  }
+}
+
+// The visible object-space lines of what --lines asks for, as a white-on-black 8-bit grey PNG:
+// silhouettes and creases as named; contours (object outlines) are silhouettes and boundaries;
+// non-manifold edges, where surfaces meet at an angle, go with creases.
+void WriteReferenceMask(vtkRenderer* renderer, const Options& options, int width, int height)
+{
+  vtkNew<vtkNPRReferenceMask> reference;
+  reference->SetRenderer(renderer);
+  reference->SetSize(width, height);
+  reference->SetSilhouettes(options.Silhouettes || options.Contours);
+  reference->SetBoundaries(options.Contours);
+  reference->SetCreases(options.Creases);
+  reference->SetNonManifoldEdges(options.Creases);
+  reference->SetCreaseAngle(options.CreaseAngle);
+  if (!reference->Update())
+  {
+    throw std::runtime_error("cannot compute the reference mask");
+  }
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(options.ReferenceMask.c_str());
+  writer->SetInputData(reference->GetMask());
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    throw std::runtime_error(options.ReferenceMask + ": cannot write the PNG");
   }
 }
 
@@ -799,6 +836,10 @@ int Run(const Options& options, nprQuietOutputWindow* messages)
     window->Render(); // the G-buffer and line image are reused: only the composite runs
     WriteWindowPNG(window, options.EdgeMask, true);
     pass->GetEdgePass()->CoverageOnlyOff();
+  }
+  if (!options.ReferenceMask.empty())
+  {
+    WriteReferenceMask(renderer, options, width, height); // the camera of the render above
   }
   if (!options.CameraOut.empty())
   {

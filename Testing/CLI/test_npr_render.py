@@ -126,6 +126,40 @@ thin = sum(v for v in read_png(out("thin.png"))[3]) / 255.0
 check(rc == 0 and rc2 == 0 and 2.5 * thin < wide < 5.5 * thin,
       "--line-width 4 draws about 4 times the coverage of --line-width 1 (%.0f vs %.0f)" % (wide, thin))
 
+# --reference-mask: the visible object-space lines of --lines, white on black, for any style; the
+# same camera as the render, so it lines up with --edge-mask.
+def lit_pixels(values):
+    return sum(1 for v in values if v)
+
+
+rc, _, err = run(rotor, "--size", "160x120", "--azimuth", "30", "--reference-mask", out("ref.png"))
+check(rc == 0 and os.path.exists(out("ref.png")), "--reference-mask with the shaded style (%s)" % err.strip())
+dims, components, kind, reference = read_png(out("ref.png"))
+check(dims[:2] == (160, 120) and components == 1 and kind == "unsigned char",
+      "the reference mask is 8-bit grey at the render's size: %s %d %s" % (dims, components, kind))
+check(set(reference) <= {0, 255} and 300 < lit_pixels(reference) < 0.3 * 160 * 120,
+      "the reference mask has white lines on black (%d line pixels)" % lit_pixels(reference))
+rc, _, err = run(rotor, "--style", "edges", "--size", "160x120", "--azimuth", "30", "--line-width", "1",
+                 "--no-antialias", "--edge-mask", out("ref_edges.png"), "--reference-mask", out("ref_b.png"))
+check(rc == 0 and read_png(out("ref_b.png"))[3] == reference,
+      "the reference mask does not depend on the style (%s)" % err.strip())
+edge = read_png(out("ref_edges.png"))[3]
+near = sum(1 for i, v in enumerate(reference) if v and any(
+    edge[(i // 160 + dy) * 160 + i % 160 + dx] > 127
+    for dy in (-1, 0, 1) for dx in (-1, 0, 1) if 0 <= i // 160 + dy < 120 and 0 <= i % 160 + dx < 160))
+check(near >= 0.9 * lit_pixels(reference),
+      "the edge mask lines up with the reference: %d of %d reference pixels within 1 px" % (near, lit_pixels(reference)))
+counts = {}
+for name, model, extra in (("creases", rotor, ["--lines", "creases"]), ("none", rotor, ["--lines", "none"]),
+                           ("angle10", bunny, ["--lines", "creases", "--crease-angle", "10"]),
+                           ("angle60", bunny, ["--lines", "creases", "--crease-angle", "60"])):
+    rc, _, err = run(model, "--size", "160x120", "--azimuth", "30", "--reference-mask", out("ref_%s.png" % name), *extra)
+    check(rc == 0, "--reference-mask %s (%s)" % (" ".join(extra), err.strip()))
+    counts[name] = lit_pixels(read_png(out("ref_%s.png" % name))[3])
+check(counts["none"] == 0 and 0 < counts["creases"] < lit_pixels(reference),
+      "--lines selects the reference's lines: %s" % counts)
+check(counts["angle60"] < counts["angle10"], "--crease-angle: fewer bunny creases at 60 than at 10 degrees: %s" % counts)
+
 # --style toon, toon+edges and sketch: each renders and differs from the others; the sketch is the
 # same for the same seed and differs for another seed.
 styles = {}
@@ -200,6 +234,7 @@ errors = [
     ([rotor, "--camera-in", os.path.join(models, "missing.json"), "-o", out("x.png")], "cannot open the camera file"),
     ([rotor, "--camera-in", os.path.join(models, "bad.gltf"), "-o", out("x.png")], "not valid JSON"),
     ([rotor, "-o", os.path.join(args.out, "no", "such", "dir", "x.png")], "cannot write the PNG"),
+    ([rotor, "--reference-mask", os.path.join(args.out, "no", "such", "dir", "m.png")], "cannot write the PNG"),
     ([rotor, "--backend", "x", "-o", out("x.png")], "DISPLAY is not set"),
     ([rotor, "--camera-in", out("cam.json"), "--zoom", "2", "-o", out("x.png")], "cannot be combined with --camera-in"),
 ]

@@ -1,0 +1,491 @@
+#include "vtkNPRFeatureLines.h"
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <unordered_map>
+#include <vector>
+
+namespace
+{
+// A face whose normal is shorter than this, relative to its squared size, has no orientation:
+// its points are collinear or coincident up to rounding.
+constexpr double DegenerateNormal = 1e-12;
+
+// Exact coordinates as a hash key (-0 and +0 are the same coordinate).
+struct CoordinateKey
+{
+  std::uint64_t Bits[3];
+  bool operator==(const CoordinateKey& other) const
+  {
+    return this->Bits[0] == other.Bits[0] && this->Bits[1] == other.Bits[1] &&
+      this->Bits[2] == other.Bits[2];
+  }
+};
+
+struct CoordinateHash
+{
+  std::size_t operator()(const CoordinateKey& key) const
+  {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (std::uint64_t bits : key.Bits)
+    {
+      h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+    }
+    return static_cast<std::size_t>(h ^ (h >> 29));
+  }
+};
+
+CoordinateKey MakeCoordinateKey(const double x[3])
+{
+  CoordinateKey key;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double value = x[i] == 0.0 ? 0.0 : x[i];
+    std::memcpy(&key.Bits[i], &value, sizeof(double));
+  }
+  return key;
+}
+
+// Mixes the bits of an edge's two 32-bit point ids, so that neighbouring edges spread out.
+struct EdgeHash
+{
+  std::size_t operator()(std::uint64_t key) const
+  {
+    key ^= key >> 33;
+    key *= 0xff51afd7ed558ccdull;
+    key ^= key >> 33;
+    return static_cast<std::size_t>(key);
+  }
+};
+
+double Dot(const double a[3], const double b[3])
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+}
+
+// The mesh's edges with their faces, built once per mesh.
+struct vtkNPRFeatureLines::Adjacency
+{
+  struct Edge
+  {
+    vtkIdType A, B;     // point ids, A < B (representatives when merging)
+    vtkIdType Faces[2]; // the first two faces (indices into Normals / 3)
+    int Count;          // faces that use the edge
+    bool FirstForward;  // the first face goes from A to B
+    bool SameDirection; // the second face goes the same way as the first (winding differs)
+    double Angle;       // between the two faces' normals, degrees (Count == 2)
+  };
+
+  // What the table was built from.
+  vtkPolyData* Input = nullptr;
+  vtkPoints* Points = nullptr;
+  vtkCellArray* Polys = nullptr;
+  vtkCellArray* Strips = nullptr;
+  vtkMTimeType InputTime = 0, PointsTime = 0, PointsDataTime = 0, PolysTime = 0, StripsTime = 0;
+  bool Merged = true;
+  bool Valid = false;
+
+  std::vector<double> Coordinates; // of every input point, double
+  std::vector<double> Normals;     // unit normal of every oriented face
+  std::vector<Edge> Edges;
+  vtkIdType DegenerateFaces = 0;
+  vtkIdType NonFiniteFaces = 0;
+
+  bool IsCurrent(vtkPolyData* input, bool merge) const
+  {
+    vtkPoints* points = input->GetPoints();
+    return this->Valid && this->Input == input && this->InputTime == input->GetMTime() &&
+      this->Points == points && this->PointsTime == (points ? points->GetMTime() : 0) &&
+      this->PointsDataTime == (points ? points->GetData()->GetMTime() : 0) &&
+      this->Polys == input->GetPolys() && this->PolysTime == input->GetPolys()->GetMTime() &&
+      this->Strips == input->GetStrips() && this->StripsTime == input->GetStrips()->GetMTime() &&
+      this->Merged == merge;
+  }
+
+  void Build(vtkPolyData* input, bool merge, vtkNPRFeatureLines* self);
+};
+
+void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPRFeatureLines* self)
+{
+  vtkPoints* points = input->GetPoints();
+  this->Input = input;
+  this->Points = points;
+  this->Polys = input->GetPolys();
+  this->Strips = input->GetStrips();
+  this->InputTime = input->GetMTime();
+  this->PointsTime = points ? points->GetMTime() : 0;
+  this->PointsDataTime = points ? points->GetData()->GetMTime() : 0;
+  this->PolysTime = this->Polys->GetMTime();
+  this->StripsTime = this->Strips->GetMTime();
+  this->Merged = merge;
+  this->Valid = true;
+  this->Normals.clear();
+  this->Edges.clear();
+  this->DegenerateFaces = 0;
+  this->NonFiniteFaces = 0;
+
+  const vtkIdType numberOfPoints = points ? points->GetNumberOfPoints() : 0;
+  this->Coordinates.resize(3 * numberOfPoints);
+  std::vector<char> finite(numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    double* x = &this->Coordinates[3 * i];
+    points->GetPoint(i, x);
+    finite[i] = std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+  }
+  if (numberOfPoints > static_cast<vtkIdType>(std::numeric_limits<std::uint32_t>::max()))
+  {
+    vtkErrorWithObjectMacro(self, "more than 2^32 points: the edge keys cannot hold their ids");
+    return;
+  }
+
+  // Each point's representative: the first point at the same coordinates.
+  std::vector<vtkIdType> representative(numberOfPoints);
+  if (merge)
+  {
+    std::unordered_map<CoordinateKey, vtkIdType, CoordinateHash> first;
+    first.reserve(numberOfPoints);
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    {
+      representative[i] = finite[i]
+        ? first.emplace(MakeCoordinateKey(&this->Coordinates[3 * i]), i).first->second
+        : i;
+    }
+  }
+  else
+  {
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    {
+      representative[i] = i;
+    }
+  }
+
+  std::unordered_map<std::uint64_t, vtkIdType, EdgeHash> edgeIndex;
+  edgeIndex.reserve(static_cast<size_t>(
+    this->Polys->GetNumberOfConnectivityIds() + this->Strips->GetNumberOfConnectivityIds()));
+  const double* coordinates = this->Coordinates.data();
+
+  // Adds one face (point ids in its winding order) to the table.
+  auto addFace = [&](vtkIdType size, const vtkIdType* ids) {
+    if (size < 3)
+    {
+      ++this->DegenerateFaces;
+      return;
+    }
+    for (vtkIdType i = 0; i < size; ++i)
+    {
+      if (ids[i] < 0 || ids[i] >= numberOfPoints)
+      {
+        ++this->DegenerateFaces; // names no point: nothing to orient
+        return;
+      }
+    }
+    for (vtkIdType i = 0; i < size; ++i)
+    {
+      if (!finite[ids[i]])
+      {
+        ++this->NonFiniteFaces;
+        return;
+      }
+    }
+    // Newell's normal as the sum of a fan's cross products from the first point: the same
+    // vector, with coordinates relative to the face so that far-away meshes lose no digits.
+    double normal[3] = { 0.0, 0.0, 0.0 }, size2 = 0.0;
+    const double* origin = coordinates + 3 * ids[0];
+    for (vtkIdType i = 1; i + 1 < size; ++i)
+    {
+      const double* p = coordinates + 3 * ids[i];
+      const double* q = coordinates + 3 * ids[i + 1];
+      const double a[3] = { p[0] - origin[0], p[1] - origin[1], p[2] - origin[2] };
+      const double b[3] = { q[0] - origin[0], q[1] - origin[1], q[2] - origin[2] };
+      normal[0] += a[1] * b[2] - a[2] * b[1];
+      normal[1] += a[2] * b[0] - a[0] * b[2];
+      normal[2] += a[0] * b[1] - a[1] * b[0];
+      size2 = std::max(size2, std::max(Dot(a, a), Dot(b, b)));
+    }
+    const double length = std::sqrt(Dot(normal, normal));
+    if (!(length > DegenerateNormal * size2) || !std::isfinite(length))
+    {
+      ++this->DegenerateFaces;
+      return;
+    }
+    const vtkIdType face = static_cast<vtkIdType>(this->Normals.size() / 3);
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Normals.push_back(normal[k] / length);
+    }
+    for (vtkIdType i = 0; i < size; ++i)
+    {
+      vtkIdType a = representative[ids[i]];
+      vtkIdType b = representative[ids[(i + 1) % size]];
+      const double* pa = coordinates + 3 * a;
+      const double* pb = coordinates + 3 * b;
+      if (a == b || (pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2]))
+      {
+        continue; // no edge: one point twice
+      }
+      const bool forward = a < b;
+      if (!forward)
+      {
+        std::swap(a, b);
+      }
+      const std::uint64_t key =
+        (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
+      const auto inserted = edgeIndex.emplace(key, static_cast<vtkIdType>(this->Edges.size()));
+      if (inserted.second)
+      {
+        this->Edges.push_back(Edge{ a, b, { face, -1 }, 1, forward, false, 0.0 });
+        continue;
+      }
+      Edge& edge = this->Edges[inserted.first->second];
+      if (edge.Count == 1)
+      {
+        edge.Faces[1] = face;
+        edge.SameDirection = forward == edge.FirstForward;
+      }
+      ++edge.Count;
+    }
+  };
+
+  auto iterator = vtk::TakeSmartPointer(this->Polys->NewIterator());
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    iterator->GetCurrentCell(size, ids);
+    addFace(size, ids);
+  }
+  // Strips: triangle k is (k, k+1, k+2), every other one reversed to keep the winding.
+  iterator = vtk::TakeSmartPointer(this->Strips->NewIterator());
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    iterator->GetCurrentCell(size, ids);
+    for (vtkIdType k = 0; k + 2 < size; ++k)
+    {
+      const vtkIdType triangle[3] = { ids[k + (k & 1)], ids[k + 1 - (k & 1)], ids[k + 2] };
+      addFace(3, triangle);
+    }
+  }
+
+  // Dihedral angles: the second normal flipped where the two faces' windings disagree.
+  for (Edge& edge : this->Edges)
+  {
+    if (edge.Count != 2)
+    {
+      continue;
+    }
+    const double* n0 = &this->Normals[3 * edge.Faces[0]];
+    double n1[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      n1[k] = edge.SameDirection ? -this->Normals[3 * edge.Faces[1] + k]
+                                 : this->Normals[3 * edge.Faces[1] + k];
+    }
+    double cross[3];
+    vtkMath::Cross(n0, n1, cross);
+    // atan2 keeps small angles exact where acos of the dot product would lose them.
+    edge.Angle = vtkMath::DegreesFromRadians(std::atan2(vtkMath::Norm(cross), Dot(n0, n1)));
+  }
+
+  if (this->NonFiniteFaces > 0)
+  {
+    vtkWarningWithObjectMacro(
+      self, << this->NonFiniteFaces << " faces with NaN or infinite coordinates skipped");
+  }
+}
+
+vtkStandardNewMacro(vtkNPRFeatureLines);
+
+vtkNPRFeatureLines::vtkNPRFeatureLines()
+  : Internal(new Adjacency)
+{
+}
+
+vtkNPRFeatureLines::~vtkNPRFeatureLines() = default;
+
+vtkIdType vtkNPRFeatureLines::GetNumberOfEdges() const
+{
+  return static_cast<vtkIdType>(this->Internal->Edges.size());
+}
+
+vtkIdType vtkNPRFeatureLines::GetNumberOfDegenerateFaces() const
+{
+  return this->Internal->DegenerateFaces;
+}
+
+vtkIdType vtkNPRFeatureLines::GetNumberOfNonFiniteFaces() const
+{
+  return this->Internal->NonFiniteFaces;
+}
+
+void vtkNPRFeatureLines::SetCamera(vtkCamera* camera, vtkMatrix4x4* modelMatrix)
+{
+  if (!camera)
+  {
+    vtkErrorMacro("SetCamera: no camera");
+    return;
+  }
+  double eye[4] = { 0.0, 0.0, 0.0, 1.0 };
+  double direction[4] = { 0.0, 0.0, 0.0, 0.0 };
+  camera->GetPosition(eye);
+  camera->GetDirectionOfProjection(direction);
+  if (modelMatrix)
+  {
+    const double determinant = modelMatrix->Determinant();
+    if (determinant == 0.0 || !std::isfinite(determinant))
+    {
+      vtkErrorMacro("SetCamera: the model matrix is singular");
+      return;
+    }
+    vtkNew<vtkMatrix4x4> inverse;
+    vtkMatrix4x4::Invert(modelMatrix, inverse);
+    inverse->MultiplyPoint(eye, eye);
+    inverse->MultiplyPoint(direction, direction); // w = 0: a direction, no translation
+    for (int i = 0; i < 3; ++i)
+    {
+      eye[i] /= eye[3];
+    }
+  }
+  this->SetEyePosition(eye);
+  this->SetDirectionOfProjection(direction);
+  this->SetParallelProjection(camera->GetParallelProjection() != 0);
+}
+
+int vtkNPRFeatureLines::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  Adjacency& adjacency = *this->Internal;
+  if (!adjacency.IsCurrent(input, this->MergeCoincidentPoints))
+  {
+    adjacency.Build(input, this->MergeCoincidentPoints, this);
+    ++this->NumberOfAdjacencyBuilds;
+  }
+
+  // One pass over the edges for this viewpoint.
+  const double* coordinates = adjacency.Coordinates.data();
+  const double* normals = adjacency.Normals.data();
+  std::vector<vtkIdType> outputId(adjacency.Coordinates.size() / 3, -1);
+  vtkNew<vtkPoints> outputPoints;
+  outputPoints->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkUnsignedCharArray> types;
+  types->SetName("FeatureType");
+  vtkNew<vtkIdTypeArray> inputIds;
+  inputIds->SetName("InputPointIds");
+  inputIds->SetNumberOfComponents(2);
+  auto outputPoint = [&](vtkIdType id) {
+    if (outputId[id] < 0)
+    {
+      outputId[id] = outputPoints->InsertNextPoint(coordinates + 3 * id);
+    }
+    return outputId[id];
+  };
+
+  for (const Adjacency::Edge& edge : adjacency.Edges)
+  {
+    unsigned char type = 0;
+    if (edge.Count == 1)
+    {
+      type = this->Boundaries ? BOUNDARY : 0;
+    }
+    else if (edge.Count > 2)
+    {
+      type = this->NonManifoldEdges ? NON_MANIFOLD : 0;
+    }
+    else
+    {
+      if (this->Creases && edge.Angle > this->FeatureAngle)
+      {
+        type |= CREASE;
+      }
+      if (this->Silhouettes)
+      {
+        const double* n0 = normals + 3 * edge.Faces[0];
+        const double* n1 = normals + 3 * edge.Faces[1];
+        double f0, f1;
+        if (this->ParallelProjection)
+        {
+          f0 = Dot(n0, this->DirectionOfProjection);
+          f1 = Dot(n1, this->DirectionOfProjection);
+        }
+        else
+        {
+          // The same point of the edge for both faces: each term is exactly the side of that
+          // face's plane the eye is on.
+          const double* p = coordinates + 3 * edge.A;
+          const double toPoint[3] = { p[0] - this->EyePosition[0], p[1] - this->EyePosition[1],
+            p[2] - this->EyePosition[2] };
+          f0 = Dot(n0, toPoint);
+          f1 = Dot(n1, toPoint);
+        }
+        if (edge.SameDirection)
+        {
+          f1 = -f1;
+        }
+        // Facing the eye: a negative term; edge-on (0) counts as facing away.
+        if ((f0 < 0.0) != (f1 < 0.0))
+        {
+          type |= SILHOUETTE;
+        }
+      }
+    }
+    if (type)
+    {
+      const vtkIdType ends[2] = { outputPoint(edge.A), outputPoint(edge.B) };
+      lines->InsertNextCell(2, ends);
+      types->InsertNextValue(type);
+      const vtkIdType ids[2] = { edge.A, edge.B };
+      inputIds->InsertNextTypedTuple(ids);
+    }
+  }
+  output->SetPoints(outputPoints);
+  output->SetLines(lines);
+  output->GetCellData()->AddArray(types);
+  output->GetCellData()->AddArray(inputIds);
+  return 1;
+}
+
+void vtkNPRFeatureLines::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "EyePosition: " << this->EyePosition[0] << ", " << this->EyePosition[1] << ", "
+     << this->EyePosition[2] << "\n";
+  os << indent << "ParallelProjection: " << this->ParallelProjection << "\n";
+  os << indent << "DirectionOfProjection: " << this->DirectionOfProjection[0] << ", "
+     << this->DirectionOfProjection[1] << ", " << this->DirectionOfProjection[2] << "\n";
+  os << indent << "Silhouettes: " << this->Silhouettes << "\n";
+  os << indent << "Creases: " << this->Creases << "\n";
+  os << indent << "Boundaries: " << this->Boundaries << "\n";
+  os << indent << "NonManifoldEdges: " << this->NonManifoldEdges << "\n";
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "MergeCoincidentPoints: " << this->MergeCoincidentPoints << "\n";
+  os << indent << "NumberOfAdjacencyBuilds: " << this->NumberOfAdjacencyBuilds << "\n";
+  os << indent << "NumberOfEdges: " << this->GetNumberOfEdges() << "\n";
+}

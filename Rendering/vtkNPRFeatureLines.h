@@ -1,0 +1,205 @@
+/**
+ * @class   vtkNPRFeatureLines
+ * @brief   Silhouette, crease, boundary and non-manifold edges of a mesh, for a viewpoint.
+ *
+ * Takes the polygons and triangle strips of the input (vertices and lines are ignored) and
+ * outputs the mesh edges that are feature lines, as two-point line cells, with a cell-data
+ * array "FeatureType" (vtkUnsignedCharArray) of bit flags; an edge may carry several:
+ * - SILHOUETTE (1): of the edge's two faces, one faces the eye and the other faces away. Each
+ *   face's signed facing term is n . (p - eye) for a perspective view, with n the face's normal
+ *   and p the edge's first point (the same point for both faces, so the test is exact: it is
+ *   the side of each face's plane the eye lies on), or n . d for a parallel view, with d the
+ *   direction of projection. A face faces the eye where the term is negative; a face seen
+ *   exactly edge-on (term 0) counts as facing away, so an axis-aligned box seen along an axis
+ *   has the four edges of its front face as silhouettes.
+ * - CREASE (2): the angle between the two faces' normals exceeds FeatureAngle (degrees).
+ * - BOUNDARY (4): the edge belongs to one face only.
+ * - NON_MANIFOLD (8): the edge belongs to more than two faces. Such edges get no silhouette or
+ *   crease test (which pair of faces would it be?).
+ * The output points are those used by the edges, in double precision, at the input's
+ * coordinates; a second cell-data array "InputPointIds" (vtkIdTypeArray, 2 components) holds the
+ * input ids of each edge's two points (with MergeCoincidentPoints, the first input point at
+ * those coordinates), smaller id first. Edges come in the order the faces first use them.
+ *
+ * The viewpoint is given in the input's coordinates: SetEyePosition(), SetParallelProjection()
+ * and SetDirectionOfProjection(), or SetCamera() with the camera and the actor's matrix, which
+ * takes the camera into the input's coordinates with the inverse of that matrix. The facing
+ * test is a side-of-plane test, which any invertible affine map preserves, so silhouettes are
+ * exact under any actor matrix. The angle between normals is not preserved by non-uniform
+ * scaling or shear: creases are measured in the input's coordinates, not in the world's.
+ *
+ * Cost: the edge-adjacency table (each edge's faces, found with a hash of its two point ids in
+ * one linear pass) and the faces' unit normals (Newell's method, in double, relative to the
+ * face's first point) are built once per mesh and reused while the input, its points and its
+ * cells are unchanged (their modification times and identities). Changing the viewpoint, the
+ * switches or FeatureAngle costs one linear pass over the edges. GetNumberOfAdjacencyBuilds()
+ * counts the builds.
+ *
+ * Points with exactly equal coordinates are one point for the adjacency when
+ * MergeCoincidentPoints is on (the default): vtkPolyDataNormals with splitting duplicates the
+ * points along sharp edges, and those edges must stay creases, not become boundaries.
+ *
+ * Degenerate input never stops the filter:
+ * - a face with fewer than three points, a point id out of range, or a zero Newell normal
+ *   (zero area: all points collinear or coincident; "zero" is below 1e-12 of the face's squared
+ *   size, where rounding decides the direction) has no orientation: it is left out of the
+ *   adjacency altogether,
+ *   so its edges count only through the other faces that use them (a zero-area sliver filling
+ *   a T-junction therefore leaves boundary edges: the mesh is open there);
+ * - an edge whose two points are the same point (same id, or equal coordinates) is skipped;
+ * - two faces that traverse their shared edge in the same direction (inconsistent winding):
+ *   one normal is flipped for that edge's crease and silhouette tests, so the result is that
+ *   of a consistently oriented mesh;
+ * - a face with a NaN or infinite coordinate is skipped, with one warning per build giving
+ *   the count (GetNumberOfNonFiniteFaces());
+ * - an empty input gives an empty output, without error.
+ * GetNumberOfDegenerateFaces() counts the faces left out for having no orientation.
+ *
+ * Everything is computed in double precision, whatever the input points' type.
+ *
+ * @sa vtkNPRReferenceMask vtkFeatureEdges
+ */
+#ifndef vtkNPRFeatureLines_h
+#define vtkNPRFeatureLines_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkRenderingNPRModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkCamera;
+class vtkMatrix4x4;
+
+class VTKRENDERINGNPR_EXPORT vtkNPRFeatureLines : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkNPRFeatureLines* New();
+  vtkTypeMacro(vtkNPRFeatureLines, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Bits of the "FeatureType" cell array.
+   */
+  enum FeatureTypes
+  {
+    SILHOUETTE = 1,
+    CREASE = 2,
+    BOUNDARY = 4,
+    NON_MANIFOLD = 8
+  };
+
+  ///@{
+  /**
+   * The eye of a perspective view, in the input's coordinates (default 0, 0, 0).
+   */
+  vtkSetVector3Macro(EyePosition, double);
+  vtkGetVector3Macro(EyePosition, double);
+  ///@}
+
+  ///@{
+  /**
+   * Parallel projection (off by default): silhouettes use DirectionOfProjection, not the eye.
+   */
+  vtkSetMacro(ParallelProjection, bool);
+  vtkGetMacro(ParallelProjection, bool);
+  vtkBooleanMacro(ParallelProjection, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The direction of projection of a parallel view, in the input's coordinates (default
+   * 0, 0, -1: VTK's default camera). Its length does not matter.
+   */
+  vtkSetVector3Macro(DirectionOfProjection, double);
+  vtkGetVector3Macro(DirectionOfProjection, double);
+  ///@}
+
+  /**
+   * Sets EyePosition, ParallelProjection and DirectionOfProjection from the camera, taken into
+   * the input's coordinates by the inverse of modelMatrix (an actor's GetMatrix(); none: the
+   * identity). The values are copied: call again after the camera moves. A singular matrix
+   * leaves the viewpoint unchanged, with an error.
+   */
+  void SetCamera(vtkCamera* camera, vtkMatrix4x4* modelMatrix = nullptr);
+
+  ///@{
+  /**
+   * The line types output (all on by default).
+   */
+  vtkSetMacro(Silhouettes, bool);
+  vtkGetMacro(Silhouettes, bool);
+  vtkBooleanMacro(Silhouettes, bool);
+  vtkSetMacro(Creases, bool);
+  vtkGetMacro(Creases, bool);
+  vtkBooleanMacro(Creases, bool);
+  vtkSetMacro(Boundaries, bool);
+  vtkGetMacro(Boundaries, bool);
+  vtkBooleanMacro(Boundaries, bool);
+  vtkSetMacro(NonManifoldEdges, bool);
+  vtkGetMacro(NonManifoldEdges, bool);
+  vtkBooleanMacro(NonManifoldEdges, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The angle between face normals, in degrees, above which an edge is a crease (default 30,
+   * clamped to [0, 180]).
+   */
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Treat points with exactly equal coordinates as one point when finding the faces of each
+   * edge (on by default). Changing it rebuilds the adjacency.
+   */
+  vtkSetMacro(MergeCoincidentPoints, bool);
+  vtkGetMacro(MergeCoincidentPoints, bool);
+  vtkBooleanMacro(MergeCoincidentPoints, bool);
+  ///@}
+
+  /**
+   * How many times the edge-adjacency table has been built (once per mesh while it does not
+   * change).
+   */
+  vtkIdType GetNumberOfAdjacencyBuilds() const { return this->NumberOfAdjacencyBuilds; }
+
+  ///@{
+  /**
+   * What the last adjacency build found: the mesh's distinct edges (after merging), the faces
+   * left out for having no orientation (zero area, fewer than three points), and the faces
+   * skipped for a NaN or infinite coordinate.
+   */
+  vtkIdType GetNumberOfEdges() const;
+  vtkIdType GetNumberOfDegenerateFaces() const;
+  vtkIdType GetNumberOfNonFiniteFaces() const;
+  ///@}
+
+protected:
+  vtkNPRFeatureLines();
+  ~vtkNPRFeatureLines() override;
+
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  double EyePosition[3] = { 0.0, 0.0, 0.0 };
+  bool ParallelProjection = false;
+  double DirectionOfProjection[3] = { 0.0, 0.0, -1.0 };
+  bool Silhouettes = true;
+  bool Creases = true;
+  bool Boundaries = true;
+  bool NonManifoldEdges = true;
+  double FeatureAngle = 30.0;
+  bool MergeCoincidentPoints = true;
+  vtkIdType NumberOfAdjacencyBuilds = 0;
+
+private:
+  vtkNPRFeatureLines(const vtkNPRFeatureLines&) = delete;
+  void operator=(const vtkNPRFeatureLines&) = delete;
+
+  struct Adjacency;
+  std::unique_ptr<Adjacency> Internal;
+};
+
+#endif

@@ -1,0 +1,227 @@
+/**
+ * @class   vtkNPRReferenceMask
+ * @brief   The ground truth of a line drawing: a renderer's visible feature lines, as a pixel mask.
+ *
+ * For a renderer (its active camera and its visible, opaque vtkActors drawn by a
+ * vtkPolyDataMapper, with their actor matrices) and an image size, Update() computes on the CPU,
+ * in double precision and without OpenGL:
+ * - the feature lines of each actor's mesh, with a vtkNPRFeatureLines per actor (kept between
+ *   updates, so each mesh's adjacency is built once): silhouettes for the camera taken into the
+ *   actor's coordinates, creases above CreaseAngle, boundaries and non-manifold edges, each
+ *   switched on its own; then put into world coordinates with the actor's matrix;
+ * - which parts of them are visible: each line segment is clipped to the view frustum (near
+ *   and far planes, the image) in homogeneous coordinates and sampled in the image at most
+ *   SampleSpacing pixels apart (at least its two ends). Each sample is tested by casting a
+ *   segment through vtkStaticCellLocators of all the actors' triangles in world coordinates,
+ *   from the near plane (towards the eye for a perspective camera, along the direction of
+ *   projection for a parallel one: what lies before the near plane is clipped when rendering)
+ *   to the sample, stopped short of the sample by OcclusionEpsilon times its length, so that
+ *   the faces that contain the line do not hide it. A sample that nothing hides marks the
+ *   pixel that contains it.
+ *
+ * The projection is the camera's composite projection matrix
+ * (vtkCamera::GetCompositeProjectionTransformMatrix with the image's aspect ratio, near -1, far
+ * 1), as VTK renders with it, and pixel (i, j) covers [i, i+1) x [j, j+1) of the window
+ * coordinates ((ndc + 1) / 2 x size), so the mask lines up with an image rendered from the same
+ * camera at the same size.
+ *
+ * Output: GetMask(), a vtkImageData of Size, one unsigned char component, 255 on line pixels and
+ * 0 elsewhere, row 0 at the bottom (as vtkWindowToImageFilter gives a window's image); with
+ * GenerateVisibleLines on, GetVisibleLines(): the visible runs of samples as polylines in world
+ * coordinates, with the cell array "FeatureType" of their edges (vtkNPRFeatureLines's bits).
+ * The counts of the last update tell what was done: feature edges, samples in the view, rays
+ * cast (a sample whose pixel is already marked needs none unless visible lines are asked for),
+ * visible samples, line pixels; and the seconds spent on lines, locator and visibility.
+ *
+ * Accuracy: visibility is exact up to OcclusionEpsilon (default 1e-6 of the distance from the
+ * near plane: an occluder closer than that to the line does not count) and the rounding of
+ * double precision; positions are rounded to the pixel that contains the sample (a line pixel
+ * lies within half a pixel diagonal, 0.71 px, of the exact visible line); a visible piece
+ * shorter than SampleSpacing between two samples can be missed, and a line crossing a pixel's
+ * corner by less than that can be missed in that pixel. Not included: intersection curves
+ * between interpenetrating objects (they are edges of no mesh), lines of translucent actors (and
+ * translucent actors do not hide lines, as they do not in vtkNPREdgePass's G-buffer), props
+ * that are not vtkActors with a vtkPolyDataMapper (volumes, images, glyph mappers), mapper
+ * clipping planes, and parts of actors in assemblies. Polygons are split into triangle fans
+ * for the visibility test (exact for convex planar polygons).
+ *
+ * The occlusion structure is rebuilt only when an actor's geometry, its matrix or the set of
+ * actors changed (GetNumberOfLocatorBuilds()). Cost, measured on a 2-core machine (see
+ * Documentation/feature-lines.md): a fraction of a second for a 75k-triangle mesh at
+ * 1920x1080, a few seconds for 1.2M triangles.
+ *
+ * Call Update() after the camera is final (after a Render() if the renderer resets its
+ * clipping range): the camera is read as it is.
+ *
+ * @sa vtkNPRFeatureLines vtkNPREdgePass
+ */
+#ifndef vtkNPRReferenceMask_h
+#define vtkNPRReferenceMask_h
+
+#include "vtkObject.h"
+#include "vtkRenderingNPRModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkImageData;
+class vtkPolyData;
+class vtkRenderer;
+
+class VTKRENDERINGNPR_EXPORT vtkNPRReferenceMask : public vtkObject
+{
+public:
+  static vtkNPRReferenceMask* New();
+  vtkTypeMacro(vtkNPRReferenceMask, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The renderer whose camera and actors are used.
+   */
+  virtual void SetRenderer(vtkRenderer* renderer);
+  vtkGetObjectMacro(Renderer, vtkRenderer);
+  ///@}
+
+  ///@{
+  /**
+   * The mask's size in pixels; 0, 0 (the default): the renderer's size in its window.
+   */
+  vtkSetVector2Macro(Size, int);
+  vtkGetVector2Macro(Size, int);
+  ///@}
+
+  ///@{
+  /**
+   * The line types (all on by default), as in vtkNPRFeatureLines.
+   */
+  vtkSetMacro(Silhouettes, bool);
+  vtkGetMacro(Silhouettes, bool);
+  vtkBooleanMacro(Silhouettes, bool);
+  vtkSetMacro(Creases, bool);
+  vtkGetMacro(Creases, bool);
+  vtkBooleanMacro(Creases, bool);
+  vtkSetMacro(Boundaries, bool);
+  vtkGetMacro(Boundaries, bool);
+  vtkBooleanMacro(Boundaries, bool);
+  vtkSetMacro(NonManifoldEdges, bool);
+  vtkGetMacro(NonManifoldEdges, bool);
+  vtkBooleanMacro(NonManifoldEdges, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The angle between face normals, in degrees, above which an edge is a crease (default 30,
+   * vtkNPREdgePass's default; clamped to [0, 180]).
+   */
+  vtkSetClampMacro(CreaseAngle, double, 0.0, 180.0);
+  vtkGetMacro(CreaseAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * The largest distance in pixels between the samples of a line (default 0.25, clamped to
+   * [0.01, 0.25]).
+   */
+  vtkSetClampMacro(SampleSpacing, double, 0.01, 0.25);
+  vtkGetMacro(SampleSpacing, double);
+  ///@}
+
+  ///@{
+  /**
+   * How much of the segment from the near plane to a sample is left untested at the sample's
+   * end, relative to its length (default 1e-6, clamped to [0, 0.01]).
+   */
+  vtkSetClampMacro(OcclusionEpsilon, double, 0.0, 0.01);
+  vtkGetMacro(OcclusionEpsilon, double);
+  ///@}
+
+  ///@{
+  /**
+   * Also output the visible parts of the lines as polylines (off by default; costs a ray for
+   * every sample).
+   */
+  vtkSetMacro(GenerateVisibleLines, bool);
+  vtkGetMacro(GenerateVisibleLines, bool);
+  vtkBooleanMacro(GenerateVisibleLines, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The occlusion structure splits the triangles into groups of nearby ones (Morton order of
+   * their centroids) of at most this many (default 16384, at least 1), each with its own
+   * vtkStaticCellLocator; a ray tests only the groups whose box it crosses. This changes the
+   * speed, never the result: VTK 9.1's static locator clears a flag per cell of its data set on
+   * every ray, which dominates with one locator for a million triangles.
+   */
+  vtkSetClampMacro(TrianglesPerLocator, int, 1, VTK_INT_MAX);
+  vtkGetMacro(TrianglesPerLocator, int);
+  ///@}
+
+  /**
+   * Computes the mask (and the visible lines). False, with an error, when there is no renderer
+   * or no size.
+   */
+  bool Update();
+
+  /**
+   * The mask of the last Update(): Size, unsigned char, 255 on lines, row 0 at the bottom.
+   */
+  vtkImageData* GetMask();
+
+  /**
+   * The visible lines of the last Update() in world coordinates (empty unless
+   * GenerateVisibleLines is on).
+   */
+  vtkPolyData* GetVisibleLines();
+
+  ///@{
+  /**
+   * What the last Update() did.
+   */
+  vtkIdType GetNumberOfFeatureEdges() const;   // line segments of all actors
+  vtkIdType GetNumberOfSamples() const;        // samples inside the view
+  vtkIdType GetNumberOfRayCasts() const;       // samples tested by a ray
+  vtkIdType GetNumberOfVisibleSamples() const; // tested samples that nothing hides
+  vtkIdType GetNumberOfLinePixels() const;     // pixels set in the mask
+  double GetLinesTime() const;                 // seconds finding the feature lines
+  double GetLocatorTime() const;               // seconds building the occlusion structure
+  double GetVisibilityTime() const;            // seconds sampling and casting rays
+  ///@}
+
+  /**
+   * How many times the occlusion structure (all actors' triangles, located) has been built:
+   * again only when an actor's mesh or matrix, the set of actors or TrianglesPerLocator changed.
+   */
+  vtkIdType GetNumberOfLocatorBuilds() const;
+
+  /**
+   * The sum of the adjacency builds of the actors' vtkNPRFeatureLines (each mesh once while it
+   * does not change).
+   */
+  vtkIdType GetNumberOfAdjacencyBuilds() const;
+
+protected:
+  vtkNPRReferenceMask();
+  ~vtkNPRReferenceMask() override;
+
+  vtkRenderer* Renderer = nullptr;
+  int Size[2] = { 0, 0 };
+  bool Silhouettes = true;
+  bool Creases = true;
+  bool Boundaries = true;
+  bool NonManifoldEdges = true;
+  double CreaseAngle = 30.0;
+  double SampleSpacing = 0.25;
+  double OcclusionEpsilon = 1e-6;
+  bool GenerateVisibleLines = false;
+  int TrianglesPerLocator = 16384;
+
+private:
+  vtkNPRReferenceMask(const vtkNPRReferenceMask&) = delete;
+  void operator=(const vtkNPRReferenceMask&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif
