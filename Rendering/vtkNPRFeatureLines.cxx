@@ -87,12 +87,12 @@ struct vtkNPRFeatureLines::Adjacency
 {
   struct Edge
   {
-    vtkIdType A, B;         // point ids, A < B (representatives when merging)
-    vtkIdType Faces[2];     // the first two faces (indices into Normals / 3)
-    int Count;              // faces that use the edge
-    bool FirstForward;      // the first face goes from A to B
-    bool SameDirection;     // the second face goes the same way as the first (winding differs)
-    double Angle;           // between the two faces' normals, degrees (Count == 2)
+    vtkIdType A, B;     // point ids, A < B (representatives when merging)
+    vtkIdType Faces[2]; // the first two faces (indices into Normals / 3)
+    int Count;          // faces that use the edge
+    bool FirstForward;  // the first face goes from A to B
+    bool SameDirection; // the second face goes the same way as the first (winding differs)
+    double Angle;       // between the two faces' normals, degrees (Count == 2)
   };
 
   // What the table was built from.
@@ -248,7 +248,8 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
       {
         std::swap(a, b);
       }
-      const std::uint64_t key = (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
+      const std::uint64_t key =
+        (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
       const auto inserted = edgeIndex.emplace(key, static_cast<vtkIdType>(this->Edges.size()));
       if (inserted.second)
       {
@@ -298,7 +299,8 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
     double n1[3];
     for (int k = 0; k < 3; ++k)
     {
-      n1[k] = edge.SameDirection ? -this->Normals[3 * edge.Faces[1] + k] : this->Normals[3 * edge.Faces[1] + k];
+      n1[k] = edge.SameDirection ? -this->Normals[3 * edge.Faces[1] + k]
+                                 : this->Normals[3 * edge.Faces[1] + k];
     }
     double cross[3];
     vtkMath::Cross(n0, n1, cross);
@@ -308,8 +310,8 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
 
   if (this->NonFiniteFaces > 0)
   {
-    vtkWarningWithObjectMacro(self, << this->NonFiniteFaces
-                                    << " faces with NaN or infinite coordinates skipped");
+    vtkWarningWithObjectMacro(
+      self, << this->NonFiniteFaces << " faces with NaN or infinite coordinates skipped");
   }
 }
 

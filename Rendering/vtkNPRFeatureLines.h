@@ -1,6 +1,6 @@
 /**
  * @class   vtkNPRFeatureLines
- * @brief   Silhouette, crease, boundary and non-manifold edges of a polygonal mesh, for a viewpoint.
+ * @brief   Silhouette, crease, boundary and non-manifold edges of a mesh, for a viewpoint.
  *
  * Takes the polygons and triangle strips of the input (vertices and lines are ignored) and
  * outputs the mesh edges that are feature lines, as two-point line cells, with a cell-data

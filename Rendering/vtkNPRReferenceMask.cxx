@@ -210,9 +210,9 @@ void vtkNPRReferenceMask::Internals::BuildLocator(
       std::uint32_t key = 0;
       for (int k = 0; k < 3; ++k)
       {
-        const double centroid = (points[3 * triangles[3 * i] + k] +
-                                  points[3 * triangles[3 * i + 1] + k] +
-                                  points[3 * triangles[3 * i + 2] + k]) /
+        const double centroid =
+          (points[3 * triangles[3 * i] + k] + points[3 * triangles[3 * i + 1] + k] +
+            points[3 * triangles[3 * i + 2] + k]) /
           3.0;
         const double extent = high[k] - low[k];
         const std::uint32_t cell = extent > 0.0

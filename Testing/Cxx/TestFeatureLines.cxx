@@ -40,6 +40,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <set>
 #include <string>
 #include <utility>
@@ -63,7 +64,8 @@ std::string Describe(const Edge& edge)
   std::string text;
   for (const Point& p : { edge.first, edge.second })
   {
-    text += "(" + std::to_string(p[0]) + "," + std::to_string(p[1]) + "," + std::to_string(p[2]) + ")";
+    text +=
+      "(" + std::to_string(p[0]) + "," + std::to_string(p[1]) + "," + std::to_string(p[2]) + ")";
   }
   return text;
 }
@@ -76,7 +78,8 @@ std::map<Edge, int> Lines(vtkNPRFeatureLines* filter)
   std::map<Edge, int> lines;
   auto iterator = vtk::TakeSmartPointer(output->GetLines()->NewIterator());
   vtkIdType cell = 0;
-  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell(), ++cell)
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal();
+       iterator->GoToNextCell(), ++cell)
   {
     vtkIdType size;
     const vtkIdType* ids;
@@ -290,8 +293,8 @@ int CubeCreases()
     }
     vtkPolyData* output = filter->GetOutput();
     NPR_CHECK(output->GetPoints()->GetDataType() == VTK_DOUBLE, "output points are not double");
-    NPR_CHECK(output->GetNumberOfPoints() == 8, name << ": " << output->GetNumberOfPoints()
-                                                     << " output points, only the 8 used expected");
+    NPR_CHECK(output->GetNumberOfPoints() == 8,
+      name << ": " << output->GetNumberOfPoints() << " output points, only the 8 used expected");
     auto* ids = vtkIdTypeArray::SafeDownCast(output->GetCellData()->GetArray("InputPointIds"));
     NPR_CHECK(ids && ids->GetNumberOfComponents() == 2 && ids->GetNumberOfTuples() == 12,
       "InputPointIds missing");
@@ -324,8 +327,8 @@ int CubeCreases()
     separate->Update();
     const long long boundaries = CountCells(separate, vtkNPRFeatureLines::BOUNDARY);
     NPR_CHECK(separate->GetOutput()->GetNumberOfCells() == 24 && boundaries == 24,
-      name << " unmerged: " << separate->GetOutput()->GetNumberOfCells() << " lines, "
-           << boundaries << " boundaries; 24 expected (each face's own)");
+      name << " unmerged: " << separate->GetOutput()->GetNumberOfCells() << " lines, " << boundaries
+           << " boundaries; 24 expected (each face's own)");
   }
   return nprTestResult();
 }
@@ -378,8 +381,8 @@ int CubeSilhouettes()
       SetView(filter, view);
       filter->Update();
       const std::set<Edge> expected = BoxSilhouettes(view.Parallel, view.Vector);
-      NPR_CHECK(expected.size() == view.Count, view.Name << ": the analytic outline has "
-                                                         << expected.size() << " edges");
+      NPR_CHECK(expected.size() == view.Count,
+        view.Name << ": the analytic outline has " << expected.size() << " edges");
       const auto lines = Lines(filter);
       CheckEdges(EdgesOf(lines, AllTypes), expected,
         std::string(view.Name) + (triangulate ? " (triangles)" : ""));
@@ -393,8 +396,8 @@ int CubeSilhouettes()
   both->Update();
   const auto lines = Lines(both);
   CheckEdges(EdgesOf(lines, AllTypes), AllBoxEdges(), "silhouettes and creases");
-  CheckEdges(EdgesOf(lines, vtkNPRFeatureLines::SILHOUETTE),
-    BoxSilhouettes(false, Views[0].Vector), "silhouette bits of the union");
+  CheckEdges(EdgesOf(lines, vtkNPRFeatureLines::SILHOUETTE), BoxSilhouettes(false, Views[0].Vector),
+    "silhouette bits of the union");
   CheckEdges(EdgesOf(lines, vtkNPRFeatureLines::CREASE), AllBoxEdges(), "crease bits of the union");
 
   // SetCamera with an actor matrix (rotation, non-uniform scale, translation): the silhouettes
@@ -433,8 +436,9 @@ int CubeSilhouettes()
       return pairs;
     };
     const auto inModel = ids(model), inWorld = ids(world);
-    std::cout << (parallel ? "parallel" : "perspective") << " camera through a matrix: "
-              << inModel.size() << " silhouette edges in model coordinates, " << inWorld.size()
+    std::cout << (parallel ? "parallel" : "perspective")
+              << " camera through a matrix: " << inModel.size()
+              << " silhouette edges in model coordinates, " << inWorld.size()
               << " in world coordinates\n";
     NPR_CHECK(inModel.size() == 6 && inModel == inWorld,
       "SetCamera with a matrix finds other silhouettes than the transformed mesh");
@@ -511,8 +515,8 @@ int Reuse()
   filter->SetEyePosition(2.2, 1.7, 2.9);
   filter->Update();
   NPR_CHECK(filter->GetNumberOfAdjacencyBuilds() == 1, "first update");
-  NPR_CHECK(filter->GetNumberOfEdges() == 18, "a triangulated cube has 18 edges, got "
-                                                << filter->GetNumberOfEdges());
+  NPR_CHECK(filter->GetNumberOfEdges() == 18,
+    "a triangulated cube has 18 edges, got " << filter->GetNumberOfEdges());
   const auto before = Lines(filter);
 
   filter->SetEyePosition(-2.0, 3.0, -1.5);
@@ -540,8 +544,8 @@ int Reuse()
   mesh->GetPoints()->Modified();
   filter->Modified();
   filter->Update();
-  NPR_CHECK(filter->GetNumberOfAdjacencyBuilds() == 2, "modified points did not rebuild: "
-                                                         << filter->GetNumberOfAdjacencyBuilds());
+  NPR_CHECK(filter->GetNumberOfAdjacencyBuilds() == 2,
+    "modified points did not rebuild: " << filter->GetNumberOfAdjacencyBuilds());
   // A new mesh upstream: rebuilt.
   source->SetXLength(2.0);
   filter->Update();
@@ -585,7 +589,8 @@ int Degenerate()
     CheckEdges(EdgesOf(lines, vtkNPRFeatureLines::CREASE), twelve, "creases with zero-area faces");
     CheckEdges(EdgesOf(lines, vtkNPRFeatureLines::SILHOUETTE), BoxSilhouettes(false, eye),
       "silhouettes with zero-area faces");
-    NPR_CHECK(EdgesOf(lines, vtkNPRFeatureLines::BOUNDARY | vtkNPRFeatureLines::NON_MANIFOLD).empty(),
+    NPR_CHECK(
+      EdgesOf(lines, vtkNPRFeatureLines::BOUNDARY | vtkNPRFeatureLines::NON_MANIFOLD).empty(),
       "zero-area faces made boundary or non-manifold edges");
     NPR_CHECK(filter->GetNumberOfDegenerateFaces() == 6,
       "degenerate faces counted: " << filter->GetNumberOfDegenerateFaces());
@@ -654,8 +659,8 @@ int Degenerate()
     mesh->DeepCopy(Triangulated(MakeBox()));
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const vtkIdType bad = mesh->GetPoints()->InsertNextPoint(nan, 0.0, 0.0);
-    const vtkIdType far = mesh->GetPoints()->InsertNextPoint(
-      0.0, std::numeric_limits<double>::infinity(), 0.0);
+    const vtkIdType far =
+      mesh->GetPoints()->InsertNextPoint(0.0, std::numeric_limits<double>::infinity(), 0.0);
     const vtkIdType onEdge[3] = { 0, 1, bad }, other[3] = { far, 2, 3 };
     mesh->GetPolys()->InsertNextCell(3, onEdge);
     mesh->GetPolys()->InsertNextCell(3, other);
@@ -668,8 +673,8 @@ int Degenerate()
     filter->Update();
     NPR_CHECK(messages && messages->Warnings == warnings + 1,
       "one warning expected, got " << (messages ? messages->Warnings - warnings : -1));
-    NPR_CHECK(filter->GetNumberOfNonFiniteFaces() == 2, "non-finite faces counted: "
-                                                          << filter->GetNumberOfNonFiniteFaces());
+    NPR_CHECK(filter->GetNumberOfNonFiniteFaces() == 2,
+      "non-finite faces counted: " << filter->GetNumberOfNonFiniteFaces());
     const auto lines = Lines(filter);
     CheckEdges(EdgesOf(lines, AllTypes), twelve, "cube with NaN faces");
     CheckEdges(EdgesOf(lines, vtkNPRFeatureLines::CREASE), twelve, "creases with NaN faces");
@@ -684,8 +689,8 @@ int Degenerate()
     auto filter = MakeFilter(AllTypes);
     filter->SetInputData(empty);
     filter->Update();
-    NPR_CHECK(filter->GetOutput()->GetNumberOfCells() == 0 &&
-        filter->GetOutput()->GetNumberOfPoints() == 0,
+    NPR_CHECK(
+      filter->GetOutput()->GetNumberOfCells() == 0 && filter->GetOutput()->GetNumberOfPoints() == 0,
       "empty input gave lines");
     vtkNew<vtkPolyData> cloud;
     vtkNew<vtkPoints> points;
@@ -793,8 +798,8 @@ int MaskCube(bool parallel)
   std::vector<std::array<double, 4>> visible, hidden;
   for (const BoxEdge& edge : BoxEdges())
   {
-    const bool seen = BoxFaceFront(edge.Faces[0][0], edge.Faces[0][1], parallel,
-                        parallel ? toward : eye) ||
+    const bool seen =
+      BoxFaceFront(edge.Faces[0][0], edge.Faces[0][1], parallel, parallel ? toward : eye) ||
       BoxFaceFront(edge.Faces[1][0], edge.Faces[1][1], parallel, parallel ? toward : eye);
     const auto a = scene.Project(edge.Ends.first), b = scene.Project(edge.Ends.second);
     (seen ? visible : hidden).push_back({ a[0], a[1], b[0], b[1] });
@@ -858,17 +863,17 @@ int MaskCube(bool parallel)
   }
   vtkNPRReferenceMask* reference = scene.Reference;
   std::cout << (parallel ? "parallel" : "perspective") << ": " << pixels
-            << " mask pixels, farthest centre " << worst << " px from a visible edge, "
-            << onHidden << " on hidden edges, " << found << "/" << samples
-            << " edge points found; " << reference->GetNumberOfFeatureEdges() << " edges, "
-            << reference->GetNumberOfSamples() << " samples, " << reference->GetNumberOfRayCasts()
-            << " rays, " << reference->GetNumberOfVisibleSamples() << " visible\n";
+            << " mask pixels, farthest centre " << worst << " px from a visible edge, " << onHidden
+            << " on hidden edges, " << found << "/" << samples << " edge points found; "
+            << reference->GetNumberOfFeatureEdges() << " edges, " << reference->GetNumberOfSamples()
+            << " samples, " << reference->GetNumberOfRayCasts() << " rays, "
+            << reference->GetNumberOfVisibleSamples() << " visible\n";
   NPR_CHECK(pixels > 900, "too few mask pixels: " << pixels);
   NPR_CHECK(pixels == reference->GetNumberOfLinePixels(), "GetNumberOfLinePixels is wrong");
   NPR_CHECK(worst <= std::sqrt(0.5) + 1e-6, "a mask pixel lies " << worst << " px from the edges");
   NPR_CHECK(onHidden == 0, onHidden << " mask pixels on hidden edges");
-  NPR_CHECK(found == samples, "visible edges missed at " << samples - found << " of " << samples
-                                                         << " points");
+  NPR_CHECK(found == samples,
+    "visible edges missed at " << samples - found << " of " << samples << " points");
   NPR_CHECK(reference->GetNumberOfFeatureEdges() == 12, "the cube's 12 edges are feature lines");
 
   // The visible lines: the same mask with them on, and every visible point in a mask pixel.
@@ -890,9 +895,9 @@ int MaskCube(bool parallel)
     Point p;
     lines->GetPoint(i, p.data());
     const auto d = scene.Project(p);
-    outside += nprPixel(mask, static_cast<int>(std::floor(d[0])), static_cast<int>(std::floor(d[1])))
-      ? 0
-      : 1;
+    outside +=
+      nprPixel(mask, static_cast<int>(std::floor(d[0])), static_cast<int>(std::floor(d[1]))) ? 0
+                                                                                             : 1;
   }
   NPR_CHECK(outside <= 2, outside << " visible-line points outside the mask's pixels");
   return nprTestResult();
@@ -956,8 +961,9 @@ int MaskOcclusion()
   {
     smallPixels += v ? 1 : 0;
   }
-  std::cout << "small cube alone: " << smallPixels << " pixels; behind the big one: "
-            << (both == bigOnly ? "hidden" : "visible in part") << "\n";
+  std::cout << "small cube alone: " << smallPixels
+            << " pixels; behind the big one: " << (both == bigOnly ? "hidden" : "visible in part")
+            << "\n";
   NPR_CHECK(smallPixels > 100, "the small cube alone has no lines");
   NPR_CHECK(both == bigOnly, "the hidden cube changed the mask");
 
@@ -989,8 +995,8 @@ int MaskOcclusion()
         const auto& a = hull[k];
         const auto& b = hull[(k + 1) % hull.size()];
         const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
-        depth = std::min(depth,
-          ((b[0] - a[0]) * (y + 0.5 - a[1]) - (b[1] - a[1]) * (x + 0.5 - a[0])) / length);
+        depth = std::min(
+          depth, ((b[0] - a[0]) * (y + 0.5 - a[1]) - (b[1] - a[1]) * (x + 0.5 - a[0])) / length);
       }
       inside += depth > 1.0 ? 1 : 0;
     }
@@ -1016,18 +1022,21 @@ int MaskReuse()
   const long long first = CountSet(scene.Mask());
   camera->Azimuth(20);
   const long long turned = CountSet(scene.Mask());
-  NPR_CHECK(reference->GetNumberOfAdjacencyBuilds() == 1 && reference->GetNumberOfLocatorBuilds() == 1,
+  NPR_CHECK(
+    reference->GetNumberOfAdjacencyBuilds() == 1 && reference->GetNumberOfLocatorBuilds() == 1,
     "a camera move rebuilt: adjacency " << reference->GetNumberOfAdjacencyBuilds() << ", locator "
                                         << reference->GetNumberOfLocatorBuilds());
   NPR_CHECK(first > 100 && turned > 100, "no lines");
   actor->SetPosition(0.2, 0, 0);
   scene.Mask();
-  NPR_CHECK(reference->GetNumberOfAdjacencyBuilds() == 1 && reference->GetNumberOfLocatorBuilds() == 2,
+  NPR_CHECK(
+    reference->GetNumberOfAdjacencyBuilds() == 1 && reference->GetNumberOfLocatorBuilds() == 2,
     "an actor move: adjacency " << reference->GetNumberOfAdjacencyBuilds() << ", locator "
                                 << reference->GetNumberOfLocatorBuilds());
   cube->SetXLength(1.5);
   scene.Mask();
-  NPR_CHECK(reference->GetNumberOfAdjacencyBuilds() == 2 && reference->GetNumberOfLocatorBuilds() == 3,
+  NPR_CHECK(
+    reference->GetNumberOfAdjacencyBuilds() == 2 && reference->GetNumberOfLocatorBuilds() == 3,
     "a new mesh: adjacency " << reference->GetNumberOfAdjacencyBuilds() << ", locator "
                              << reference->GetNumberOfLocatorBuilds());
   // Translucent actors neither draw lines nor hide them; the explicit size wins.
@@ -1040,6 +1049,80 @@ int MaskReuse()
   reference->CreasesOff();
   reference->SilhouettesOff();
   NPR_CHECK(CountSet(scene.Mask()) == 0, "no line types, still lines");
+  return nprTestResult();
+}
+
+// ---- Far from the origin and at any scale: the same lines and the same mask ----
+int Stability()
+{
+  // The filter on a double-precision box moved 1e7 away, the eye moved with it.
+  const double eye[3] = { 2.2, 1.7, 2.9 };
+  std::set<std::pair<vtkIdType, vtkIdType>> reference;
+  for (double offset : { 0.0, 1e7 })
+  {
+    vtkSmartPointer<vtkPolyData> box = Triangulated(MakeBox());
+    vtkNew<vtkPoints> moved;
+    moved->SetDataTypeToDouble();
+    for (vtkIdType i = 0; i < box->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      box->GetPoint(i, p);
+      moved->InsertNextPoint(p[0] + offset, p[1] - offset, p[2] + offset);
+    }
+    box->SetPoints(moved);
+    auto filter = MakeFilter(AllTypes);
+    filter->SetInputData(box);
+    filter->SetEyePosition(eye[0] + offset, eye[1] - offset, eye[2] + offset);
+    filter->Update();
+    std::set<std::pair<vtkIdType, vtkIdType>> lines;
+    auto* ids = vtkIdTypeArray::SafeDownCast(
+      filter->GetOutput()->GetCellData()->GetArray("InputPointIds"));
+    auto* types = vtkUnsignedCharArray::SafeDownCast(
+      filter->GetOutput()->GetCellData()->GetArray("FeatureType"));
+    for (vtkIdType i = 0; ids && types && i < ids->GetNumberOfTuples(); ++i)
+    {
+      lines.insert({ ids->GetTypedComponent(i, 0) * 16 + types->GetValue(i),
+        ids->GetTypedComponent(i, 1) });
+    }
+    if (offset == 0.0)
+    {
+      reference = lines;
+    }
+    NPR_CHECK(lines == reference && lines.size() == 12,
+      "offset " << offset << ": " << lines.size() << " lines, not those at the origin");
+  }
+
+  // The mask of a cube moved by an actor position and scaled, the camera with it.
+  std::vector<unsigned char> first;
+  const double cases[][2] = { { 0.0, 1.0 }, { 1e5, 1.0 }, { 1e7, 1.0 }, { 0.0, 1e-6 },
+    { 0.0, 1e6 }, { 1e7, 1e3 } };
+  for (const auto& c : cases)
+  {
+    const double offset = c[0], scale = c[1];
+    MaskScene scene(400, 300);
+    const double origin[3] = { 0, 0, 0 };
+    vtkSmartPointer<vtkActor> cube = AddCube(scene.Renderer, origin, scale);
+    cube->SetPosition(offset, offset, offset);
+    vtkCamera* camera = scene.Camera();
+    camera->SetPosition(offset + 2.2 * scale, offset + 1.7 * scale, offset + 2.9 * scale);
+    camera->SetFocalPoint(offset, offset, offset);
+    camera->SetViewUp(0, 1, 0);
+    camera->SetClippingRange(scale, 10 * scale);
+    vtkImageData* mask = scene.Mask();
+    const unsigned char* p = static_cast<unsigned char*>(mask->GetScalarPointer());
+    const std::vector<unsigned char> pixels(p, p + scene.Width * scene.Height);
+    if (first.empty())
+    {
+      first = pixels;
+    }
+    const long long differ = std::inner_product(pixels.begin(), pixels.end(), first.begin(), 0LL,
+      std::plus<long long>(), [](unsigned char a, unsigned char b) { return a != b ? 1LL : 0LL; });
+    std::cout << "offset " << offset << ", scale " << scale << ": "
+              << scene.Reference->GetNumberOfLinePixels() << " pixels, " << differ
+              << " differ from the unit cube at the origin\n";
+    NPR_CHECK(differ == 0 && scene.Reference->GetNumberOfLinePixels() > 900,
+      "offset " << offset << ", scale " << scale << ": " << differ << " pixels differ");
+  }
   return nprTestResult();
 }
 
@@ -1078,7 +1161,8 @@ int MaskLocatorGroups()
     NPR_CHECK(pixels == first && reference->GetNumberOfVisibleSamples() == visible,
       "groups of " << group << " triangles changed the result");
   }
-  NPR_CHECK(reference->GetNumberOfLocatorBuilds() == 4 && reference->GetNumberOfAdjacencyBuilds() == 1,
+  NPR_CHECK(
+    reference->GetNumberOfLocatorBuilds() == 4 && reference->GetNumberOfAdjacencyBuilds() == 1,
     "builds: locator " << reference->GetNumberOfLocatorBuilds() << ", adjacency "
                        << reference->GetNumberOfAdjacencyBuilds());
   return nprTestResult();
@@ -1157,7 +1241,8 @@ int MaskAgainstEdgePass(const char* model)
             << "\n";
   NPR_CHECK(truth > 500 && drawn > 500, "too few line pixels");
   NPR_CHECK(recall >= (model ? 0.95 : 0.97), "the edge pass misses the reference: " << recall);
-  NPR_CHECK(precision >= (model ? 0.85 : 0.97), "the edge pass is off the reference: " << precision);
+  NPR_CHECK(
+    precision >= (model ? 0.85 : 0.97), "the edge pass is off the reference: " << precision);
   return nprTestResult();
 }
 }
@@ -1174,6 +1259,7 @@ int main(int argc, char* argv[])
     { "mask-cube-parallel", [] { return MaskCube(true); } },
     { "mask-occlusion", MaskOcclusion },
     { "mask-reuse", MaskReuse },
+    { "mask-stability", Stability },
     { "mask-locator-groups", MaskLocatorGroups },
     { "mask-edge-pass-cube", [] { return MaskAgainstEdgePass(nullptr); } },
     { "mask-edge-pass-bunny", [] { return MaskAgainstEdgePass("bunny.ply"); } },
