@@ -1123,8 +1123,11 @@ int RunStress(const Options& options)
                     << nprFormat(row.F1Own, 3) << " (unit reference " << nprFormat(row.F1Unit, 3)
                     << "), stray " << row.StrayPixels << ", non-finite " << row.NonFinitePixels
                     << ", bad depth " << row.BadDepthPixels << " ("
-                    << nprFormat(Seconds(caseStart), 2) << " s, reference "
-                    << nprFormat(referenceSeconds, 2) << " s)\n";
+                    << nprFormat(Seconds(caseStart), 2) << " s; reference "
+                    << nprFormat(referenceSeconds, 2) << " s: lines "
+                    << nprFormat(bench.Reference->GetLinesTime(), 2) << ", locator "
+                    << nprFormat(bench.Reference->GetLocatorTime(), 2) << ", rays "
+                    << nprFormat(bench.Reference->GetVisibilityTime(), 2) << ")\n";
         }
       }
     }
