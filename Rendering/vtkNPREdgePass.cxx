@@ -18,6 +18,7 @@
 #include "vtkNPREdgeCompositeFS.h"
 #include "vtkNPREdgeDetectFS.h"
 #include "vtkNPRLineColor.h"
+#include "vtkNPRWindowDepth.h"
 
 #include <algorithm>
 #include <cmath>
@@ -299,11 +300,13 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
   std::ostringstream defines;
   defines << "#define NPR_LINES " << (lines ? 1 : 0) << "\n#define NPR_TAPS " << taps
           << "\n#define NPR_RADIUS " << internal.Filter.Radius + 1 << "\n#define NPR_ANTIALIAS "
-          << (this->AntiAliasing ? 1 : 0) << "\n#define NPR_OUTPUT " << output << "\n";
+          << (this->AntiAliasing ? 1 : 0) << "\n#define NPR_OUTPUT " << output
+          << "\n#define NPR_REMAPPED_DEPTH " << (gbuffer->GetDepthRemapped() ? 1 : 0) << "\n";
   if (internal.CompositeSource.empty())
   {
     internal.CompositeSource = vtkNPREdgeCompositeFS;
     vtkShaderProgram::Substitute(internal.CompositeSource, "//NPR::LineColor", vtkNPRLineColor);
+    vtkShaderProgram::Substitute(internal.CompositeSource, "//NPR::WindowDepth", vtkNPRWindowDepth);
   }
   vtkNPRQuadProgram& composite = output == OutputLineCoverage ? internal.Coverage : internal.Composite;
   vtkShaderProgram* program =
@@ -338,6 +341,10 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
     vtkNPRViewportOrigin(state, origin);
   }
   program->SetUniform2i("viewportOrigin", origin);
+  if (gbuffer->GetDepthRemapped())
+  {
+    program->SetUniform2f("nprDepthRemap", gbuffer->GetDepthRemap());
+  }
 
   vtkNPRCompositeState compositeState(glState);
   compositeState.Apply();

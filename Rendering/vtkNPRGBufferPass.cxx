@@ -110,6 +110,9 @@ vtkTextureObject* NewNearestTexture(vtkOpenGLRenderWindow* window)
   return texture;
 }
 
+// Above this far/near ratio the depth attachment holds log depth (see GetDepthRemapped()).
+constexpr double MaximumPlainDepthRatio = 1e4;
+
 // The geometry attachment's format for an encoding and a number of components.
 struct GeometryFormat
 {
@@ -377,6 +380,15 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   const double* clippingRange = camera->GetClippingRange();
   this->PackedDepthRange[0] = static_cast<float>(clippingRange[0]);
   this->PackedDepthRange[1] = static_cast<float>(clippingRange[1]);
+  const bool remap = this->Perspective && clippingRange[0] > 0.0 &&
+    clippingRange[1] > MaximumPlainDepthRatio * clippingRange[0];
+  if (remap != this->DepthRemapped)
+  {
+    this->DepthRemapped = remap;
+    this->ShaderStageTime.Modified();
+  }
+  this->DepthRemap[0] = static_cast<float>(clippingRange[0]);
+  this->DepthRemap[1] = static_cast<float>(std::log(clippingRange[1] / clippingRange[0]));
 
   this->ComputeContentRectangle(state, width, height);
   this->Internal->FrameProps.assign(
@@ -455,7 +467,8 @@ bool vtkNPRGBufferPass::PostReplaceShaderValues(
     (this->WritesNormals ? "1" : "0") + "\n#define NPR_WRITE_OBJECT_IDS " +
     (this->WritesObjectIds ? "1" : "0") + "\n#define NPR_HAVE_MAPPER_NORMAL " +
     (mapperNormal ? "1" : "0") + "\n#define NPR_HAVE_VERTEX_VC " + (vertexVC ? "1" : "0") +
-    "\n#define NPR_ENCODING " + std::to_string(this->WrittenEncoding) + "\n";
+    "\n#define NPR_ENCODING " + std::to_string(this->WrittenEncoding) +
+    "\n#define NPR_REMAPPED_DEPTH " + (this->DepthRemapped ? "1" : "0") + "\n";
   vtkShaderProgram::Substitute(
     fragmentShader, "//NPR::GBuffer::Dec", defines + vtkNPRGBufferDecl, false);
   vtkShaderProgram::Substitute(fragmentShader, "//NPR::GBuffer::Impl", vtkNPRGBufferImpl, false);
@@ -491,6 +504,10 @@ bool vtkNPRGBufferPass::SetShaderParameters(
     if (program->IsUniformUsed("nprDepthRange"))
     {
       program->SetUniform2f("nprDepthRange", this->PackedDepthRange);
+    }
+    if (program->IsUniformUsed("nprDepthRemap"))
+    {
+      program->SetUniform2f("nprDepthRemap", this->DepthRemap);
     }
   }
   else

@@ -144,6 +144,18 @@ public:
   const float* GetPackedDepthRange() const { return this->PackedDepthRange; }
 
   /**
+   * The depth attachment holds log(z / near) / log(far / near) of the view depth z instead of
+   * OpenGL's perspective depth. This happens for perspective cameras whose far/near clipping
+   * ratio exceeds 1e4: the perspective depth of a 32-bit float attachment then no longer orders
+   * nearby surfaces far from the near plane (at a ratio of 1e6 a bunny's back showed through its
+   * front), while the logarithm keeps the same relative precision at every distance. The
+   * effects convert it back when they write their depth sprite. GetDepthRemap() gives near and
+   * log(far / near).
+   */
+  bool GetDepthRemapped() const { return this->DepthRemapped; }
+  const float* GetDepthRemap() const { return this->DepthRemap; }
+
+  /**
    * The last Render() was a hardware-selection (picking) render: no G-buffer was made.
    */
   bool GetLastRenderWasSelection() const { return this->LastRenderWasSelection; }
@@ -195,6 +207,8 @@ protected:
   bool WritesObjectIds = false;
   int WrittenEncoding = FLOAT;
   float PackedDepthRange[2] = { 0, 1 };
+  bool DepthRemapped = false;
+  float DepthRemap[2] = { 0, 1 };
   bool Perspective = true;
   bool LastRenderWasSelection = false;
   int NumberOfGeometryDraws = 0;

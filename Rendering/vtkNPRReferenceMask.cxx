@@ -88,6 +88,8 @@ struct vtkNPRReferenceMask::Internals
   std::map<vtkActor*, LinesEntry> Lines;
 
   std::vector<ActorState> LocatorState; // what the locators were built from
+  double FrameCenter[3] = { 0.0, 0.0, 0.0 }; // the locators' frame: (world - centre) x scale
+  double FrameScale = 1.0;
   int LocatorTrianglesPerLocator = 0;
   // vtkStaticCellLocator, not vtkCellLocator: VTK 9.1's vtkCellLocator::IntersectWithLine
   // misses some triangles (rays through a cube's faces at 2 of 297 points in a test). The
@@ -182,6 +184,35 @@ void vtkNPRReferenceMask::Internals::BuildLocator(
         addTriangle(ids[k], ids[k + 1], ids[k + 2]);
       }
     }
+  }
+
+  // The locators work in a frame centred on the scene and scaled to its size: VTK's static
+  // locator bins with absolute tolerances, so a scene at 1e-6 took 300 times longer to bin than
+  // the same scene at 1 (the rays are moved into that frame too; intersections do not change).
+  double sceneLow[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double sceneHigh[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (vtkIdType id : triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      sceneLow[k] = std::min(sceneLow[k], points[3 * id + k]);
+      sceneHigh[k] = std::max(sceneHigh[k], points[3 * id + k]);
+    }
+  }
+  this->FrameScale = 1.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    this->FrameCenter[k] = triangles.empty() ? 0.0 : 0.5 * (sceneLow[k] + sceneHigh[k]);
+  }
+  if (!triangles.empty())
+  {
+    const double extent = std::max(
+      { sceneHigh[0] - sceneLow[0], sceneHigh[1] - sceneLow[1], sceneHigh[2] - sceneLow[2] });
+    this->FrameScale = extent > 0.0 ? 1.0 / extent : 1.0;
+  }
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    points[i] = (points[i] - this->FrameCenter[i % 3]) * this->FrameScale;
   }
 
   // Large scenes: groups of nearby triangles (in Morton order of their centroids), one locator
@@ -283,8 +314,14 @@ void vtkNPRReferenceMask::Internals::BuildLocator(
 }
 
 bool vtkNPRReferenceMask::Internals::Hidden(
-  const double from[3], const double to[3], vtkGenericCell* cell)
+  const double fromWorld[3], const double toWorld[3], vtkGenericCell* cell)
 {
+  double from[3], to[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    from[k] = (fromWorld[k] - this->FrameCenter[k]) * this->FrameScale;
+    to[k] = (toWorld[k] - this->FrameCenter[k]) * this->FrameScale;
+  }
   for (const Group& group : this->Groups)
   {
     // Slab test of the segment against the group's box.

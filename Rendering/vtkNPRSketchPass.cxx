@@ -21,6 +21,7 @@
 #include "vtk_glew.h"
 
 #include "vtkNPRLineColor.h"
+#include "vtkNPRWindowDepth.h"
 #include "vtkNPRSketchFS.h"
 
 #include <algorithm>
@@ -312,11 +313,13 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
 
   // ---- The sketch into the current framebuffer ----
   std::ostringstream defines;
-  defines << "#define NPR_PAPER " << (this->Paper ? 1 : 0) << "\n";
+  defines << "#define NPR_PAPER " << (this->Paper ? 1 : 0) << "\n#define NPR_REMAPPED_DEPTH "
+          << (gbuffer->GetDepthRemapped() ? 1 : 0) << "\n";
   if (internal.Source.empty())
   {
     internal.Source = vtkNPRSketchFS;
     vtkShaderProgram::Substitute(internal.Source, "//NPR::LineColor", vtkNPRLineColor);
+    vtkShaderProgram::Substitute(internal.Source, "//NPR::WindowDepth", vtkNPRWindowDepth);
   }
   vtkShaderProgram* program = internal.Sketch.Ready(window, internal.Source, defines.str());
   if (!program)
@@ -352,6 +355,10 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
   int origin[2];
   vtkNPRViewportOrigin(state, origin);
   program->SetUniform2i("viewportOrigin", origin);
+  if (gbuffer->GetDepthRemapped())
+  {
+    program->SetUniform2f("nprDepthRemap", gbuffer->GetDepthRemap());
+  }
 
   vtkNPRCompositeState compositeState(glState);
   compositeState.Apply();

@@ -15,6 +15,7 @@
 #include "vtkNPRModelReader.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRReferenceMask.h"
+#include "vtkNPRShadingNormals.h"
 #include "vtkNPRSketchPass.h"
 #include "vtkNPRToonPass.h"
 #include "vtkNPRRenderWindowFactory.h"
@@ -25,7 +26,6 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
-#include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -681,21 +681,12 @@ int Run(const Options& options, nprQuietOutputWindow* messages)
     triangles += CountTriangles(model);
 
     vtkNew<vtkPolyDataMapper> mapper;
-    if (model->GetPointData()->GetNormals() || model->GetNumberOfPolys() + model->GetNumberOfStrips() == 0)
-    {
-      mapper->SetInputData(model);
-    }
-    else
-    {
-      // Smooth shading that keeps sharp (> 30 degree) edges sharp, as CAD users expect.
-      vtkNew<vtkPolyDataNormals> normals;
-      normals->SetInputData(model);
-      normals->SetFeatureAngle(30.0);
-      normals->SplittingOn();
-      normals->ConsistencyOff();
-      normals->Update();
-      mapper->SetInputData(normals->GetOutput());
-    }
+    // The file's normals when they are all usable; otherwise smooth shading that keeps sharp
+    // (> 30 degree) edges sharp, as CAD users expect, over merged duplicate points.
+    vtkNew<vtkNPRShadingNormals> normals;
+    normals->SetInputData(model);
+    normals->Update();
+    mapper->SetInputData(normals->GetOutput());
     // Colours stored in the file (PLY, OFF, VTK) are shown as they are; other arrays are not.
     vtkDataArray* colors = model->GetPointData()->GetScalars()
       ? model->GetPointData()->GetScalars()

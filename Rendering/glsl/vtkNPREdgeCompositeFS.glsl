@@ -21,6 +21,7 @@ uniform ivec2 viewportOrigin; // of the renderer in the window
 uniform float coverageLevel;    // P(w/2)
 uniform float coverageSlope;    // |P'(w/2)|
 //NPR::LineColor
+//NPR::WindowDepth
 //VTK::Output::Dec
 
 // Lines reaching past a surface onto the background belong to the nearest surface around.
@@ -64,7 +65,7 @@ void main()
   bool onLine = max(coverage.r, max(coverage.g, coverage.b)) > 0.0;
 #if NPR_OUTPUT == 1
   gl_FragData[0] = vec4(vec3(max(coverage.r, max(coverage.g, coverage.b))), 1.0);
-  gl_FragDepth = depth;
+  gl_FragDepth = nprWindowDepth(depth);
 #elif NPR_OUTPUT == 2
   gl_FragData[0] = vec4(coverage, depth < 1.0 || !onLine ? depth : nprNearestDepth(p));
 #else
@@ -72,7 +73,7 @@ void main()
   {
     // On a surface.
     gl_FragData[0] = vec4(nprLinesOver(texelFetch(colorTexture, p, 0).rgb, coverage), 1.0);
-    gl_FragDepth = depth;
+    gl_FragDepth = nprWindowDepth(depth);
   }
   else
   {
@@ -83,7 +84,7 @@ void main()
       discard;
     }
     gl_FragData[0] = nprLinesAlone(coverage);
-    gl_FragDepth = nprNearestDepth(p);
+    gl_FragDepth = nprWindowDepth(nprNearestDepth(p));
   }
 #endif
 }

@@ -6,6 +6,7 @@ uniform float nprObjectId;
 uniform mat4 nprInverseProjection;
 uniform vec4 nprViewport; // x, y, 1/width, 1/height of the G-buffer
 uniform vec2 nprDepthRange; // packed encodings: the view depths mapped onto 0 and 1
+uniform vec2 nprDepthRemap; // NPR_REMAPPED_DEPTH: near, log(far / near)
 
 // View-space position rebuilt from the window position and depth of this fragment.
 vec3 nprFragmentPositionVC()

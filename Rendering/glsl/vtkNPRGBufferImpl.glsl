@@ -60,4 +60,8 @@
     nprGeometry = vec4(nprPacked / scale, 0.0, 0.0, 1.0);
 #endif
     gl_FragData[1] = nprGeometry;
+#if NPR_REMAPPED_DEPTH
+    // Log depth: the same relative precision at every distance (vtkNPRGBufferPass).
+    gl_FragDepth = clamp(log(max(nprDepth, 1e-30) / nprDepthRemap.x) / nprDepthRemap.y, 0.0, 1.0);
+#endif
   }

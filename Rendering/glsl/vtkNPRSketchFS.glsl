@@ -15,6 +15,7 @@ uniform vec4 edgeDisplacement;     // uncertainty x edge matrix, row major
 uniform vec4 surfaceDisplacement;  // uncertainty x surface matrix, row major
 uniform vec3 paperColor;
 //NPR::LineColor
+//NPR::WindowDepth
 //VTK::Output::Dec
 
 vec2 nprNoise(vec2 pixel)
@@ -105,5 +106,5 @@ void main()
     }
 #endif
   }
-  gl_FragDepth = depth;
+  gl_FragDepth = nprWindowDepth(depth);
 }

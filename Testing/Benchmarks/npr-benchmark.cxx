@@ -180,6 +180,8 @@ struct Options
   double LineWidth = 1.5;
   bool Quick = false;
   bool Stress = false;
+  std::vector<std::string> StressCases; // name parts; empty: every case
+  double MaxDrift = -1.0;               // < 0: report only
   bool SaveMasks = false;
 };
 
@@ -205,6 +207,10 @@ each scene, against the unit case; writes OUT/stress.csv and OUT/stress.md.
   --cameras N        the first N of the 3 cameras (default 3; --stress: 1)
   --line-width PX    line width of every method (default 1.5)
   --quick            one small scene (cad), one camera, 320x240, 2 frames, every method
+  --stress-cases LIST  --stress: only the cases whose name contains one of these (comma
+                     separated; the unit case always runs), e.g. scale,translate
+  --max-drift X      --stress: exit 1 when a case's F1@1 moves more than X from the unit
+                     case or a G-buffer pixel is non-finite or out of [near, far]
   --save-masks       also write each reference and method mask as OUT/masks/*.png
   -h, --help         this text
 )";
@@ -331,6 +337,25 @@ Options ParseOptions(int argc, char* argv[])
     else if (arg == "--stress")
     {
       options.Stress = true;
+    }
+    else if (arg == "--stress-cases")
+    {
+      std::stringstream parts(value());
+      std::string part;
+      while (std::getline(parts, part, ','))
+      {
+        options.StressCases.push_back(part);
+      }
+    }
+    else if (arg == "--max-drift")
+    {
+      char* end = nullptr;
+      const std::string text = value();
+      options.MaxDrift = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end || !(options.MaxDrift >= 0.0 && options.MaxDrift <= 1.0))
+      {
+        throw UsageError("--max-drift expects a number in 0..1, got '" + text + "'");
+      }
     }
     else if (arg == "--save-masks")
     {
@@ -982,7 +1007,20 @@ int RunStress(const Options& options)
   vtkSmartPointer<vtkNPRPass> pass = bench.MakePass(method);
 
   std::vector<nprStressRow> rows;
-  const std::vector<StressCase> cases = StressCases();
+  std::vector<StressCase> cases;
+  for (const StressCase& stress : StressCases())
+  {
+    bool wanted = stress.Kind == StressCase::Unit || options.StressCases.empty();
+    for (const std::string& part : options.StressCases)
+    {
+      wanted = wanted || stress.Name.find(part) != std::string::npos;
+    }
+    if (wanted)
+    {
+      cases.push_back(stress);
+    }
+  }
+  int failures = 0;
   for (const nprBenchmarkScene& scene : scenes)
   {
     const double modelSize = nprModelSize(scene.Raw);
@@ -1036,8 +1074,9 @@ int RunStress(const Options& options)
                      << " NaN points, each in one added triangle";
               break;
             case StressCase::ZeroNormals:
-              mesh = nprZeroNormalsMesh(scene.Mesh);
-              detail << "every 7th point normal (0,0,0)";
+              // As a file with such normals reaches the mapper through npr-render's preparation.
+              mesh = nprPrepareMesh(nprZeroNormalsMesh(scene.Mesh));
+              detail << "every 7th point normal (0,0,0), through vtkNPRShadingNormals";
               break;
             default:
               break;
@@ -1119,6 +1158,16 @@ int RunStress(const Options& options)
           row.NonFinitePixels = buffer.NonFinite;
           row.BadDepthPixels = buffer.BadDepth;
           rows.push_back(row);
+          if (options.MaxDrift >= 0.0 &&
+            (std::abs(row.Drift) > options.MaxDrift || row.NonFinitePixels > 0 ||
+              row.BadDepthPixels > 0))
+          {
+            std::cerr << "npr-benchmark: FAILED: " << scene.Name << " " << row.Case << ": F1@1 drift "
+                      << nprFormat(row.Drift, 4) << " (allowed " << options.MaxDrift << "), "
+                      << row.NonFinitePixels << " non-finite, " << row.BadDepthPixels
+                      << " bad-depth pixels\n";
+            ++failures;
+          }
           std::cerr << "npr-benchmark: stress " << scene.Name << " " << row.Case << ": F1@1 "
                     << nprFormat(row.F1Own, 3) << " (unit reference " << nprFormat(row.F1Unit, 3)
                     << "), stray " << row.StrayPixels << ", non-finite " << row.NonFinitePixels
@@ -1143,7 +1192,12 @@ int RunStress(const Options& options)
   nprWriteStressMarkdown(options.Out + "/stress.md", rows, info);
   std::cerr << "npr-benchmark: wrote " << options.Out << "/stress.{csv,md} in "
             << nprFormat(info.Seconds, 4) << " s\n";
-  return 0;
+  if (options.MaxDrift >= 0.0)
+  {
+    std::cerr << "npr-benchmark: " << failures << " of " << rows.size()
+              << " stress rows outside the allowed drift\n";
+  }
+  return failures ? 1 : 0;
 }
 }
 

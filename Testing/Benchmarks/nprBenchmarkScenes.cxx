@@ -12,7 +12,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataNormals.h"
+#include "vtkNPRShadingNormals.h"
 #include "vtkRTAnalyticSource.h"
 #include "vtkRenderer.h"
 #include "vtkTriangleFilter.h"
@@ -133,15 +133,8 @@ nprBenchmarkScene nprLoadBenchmarkScene(
 
 vtkSmartPointer<vtkPolyData> nprPrepareMesh(vtkPolyData* raw)
 {
-  if (raw->GetPointData()->GetNormals())
-  {
-    return raw;
-  }
-  vtkNew<vtkPolyDataNormals> normals;
+  vtkNew<vtkNPRShadingNormals> normals;
   normals->SetInputData(raw);
-  normals->SetFeatureAngle(30.0);
-  normals->SplittingOn();
-  normals->ConsistencyOff();
   normals->Update();
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->ShallowCopy(normals->GetOutput());

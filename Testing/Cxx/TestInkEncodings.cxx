@@ -367,6 +367,51 @@ int PackedQuantisation()
   return nprTestResult();
 }
 
+// ---- Log depth for extreme near/far ratios ----
+// A perspective camera with near = far / 1e6: the G-buffer holds log depth (the usual depth
+// would let back faces through), and the depth sprite written from it equals, within the
+// window's 24-bit depth, the depth VTK's own drawing writes; at a ratio of 1e3 nothing changes.
+int DepthRemap()
+{
+  const int size = 160;
+  Scene scene(size, size);
+  AddCubeSeenFromCorner(scene, false);
+  const double distance = scene.Camera()->GetDistance();
+  for (double ratio : { 1e3, 1e6 })
+  {
+    scene.Camera()->SetClippingRange(2.0 * distance / ratio, 2.0 * distance);
+    std::vector<float> depth[2];
+    for (int style : { vtkNPRPass::SHADED, vtkNPRPass::EDGES })
+    {
+      scene.Pass->SetStyle(style);
+      scene.Window->Render();
+      std::vector<float>& values = depth[style == vtkNPRPass::EDGES];
+      values.resize(static_cast<size_t>(size) * size);
+      scene.Window->GetZbufferData(0, 0, size - 1, size - 1, values.data());
+    }
+    const bool remapped = scene.Pass->GetGBufferPass()->GetDepthRemapped();
+    NPR_CHECK(remapped == (ratio > 1e4), "ratio " << ratio << ": remapped " << remapped);
+    long long covered = 0, differing = 0;
+    double largest = 0.0;
+    for (size_t i = 0; i < depth[0].size(); ++i)
+    {
+      if (depth[0][i] < 1.0f && depth[1][i] < 1.0f)
+      {
+        ++covered;
+        const double difference = std::abs(static_cast<double>(depth[0][i]) - depth[1][i]);
+        largest = std::max(largest, difference);
+        differing += difference > 4.0 / (1 << 24) ? 1 : 0;
+      }
+    }
+    std::cout << "ratio " << ratio << ": " << covered << " covered pixels, " << differing
+              << " with depths more than 4 steps of 2^-24 apart, largest difference " << largest
+              << "\n";
+    NPR_CHECK(covered > 5000, "the cube covers the image");
+    NPR_CHECK(differing <= covered / 200, differing << " sprite depths differ from VTK's");
+  }
+  return nprTestResult();
+}
+
 // ---- Windows: inked and packed in two windows at once, resized, released ----
 int Windows()
 {
@@ -429,6 +474,7 @@ int main(int argc, char* argv[])
     { "encodings-cube", EncodingsCube },
     { "encoding-storage", EncodingStorage },
     { "packed-quantisation", PackedQuantisation },
+    { "depth-remap", DepthRemap },
     { "windows", Windows },
     { "baseline-inked-bunny",
       [] { return Baseline("bunny.ply", "inked_bunny", vtkNPRPass::INKED, vtkNPREdgePass::FLOAT); } },
