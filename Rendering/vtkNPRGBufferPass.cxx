@@ -21,8 +21,11 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include "vtkNPRCopyFS.h"
+#include "vtkNPRDepthGeometryFS.h"
 #include "vtkNPRGBufferDecl.h"
 #include "vtkNPRGBufferImpl.h"
+#include "vtkNPRQuadProgram.h"
 
 #include <algorithm>
 #include <cmath>
@@ -68,6 +71,9 @@ struct vtkNPRGBufferPass::Internals
   bool Valid = false;
   // The props of this frame; an object id is the 1-based index of its prop here.
   std::vector<vtkProp*> FrameProps;
+  // Depth-only mode: geometry from depth, and the copy back into the caller's framebuffer.
+  vtkNPRQuadProgram DepthGeometry;
+  vtkNPRQuadProgram Copy;
 };
 
 vtkStandardNewMacro(vtkNPRGBufferPass);
@@ -314,6 +320,22 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
     return; // a picking render: no G-buffer
   }
 
+  if (this->DepthOnly)
+  {
+    int width = 0, height = 0;
+    if (state->GetFrameBuffer())
+    {
+      state->GetFrameBuffer()->GetLastSize(width, height);
+    }
+    else
+    {
+      int x, y;
+      renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+    }
+    this->RenderDepthOnly(state, width, height);
+    return;
+  }
+
   int opaqueProps = 0;
   for (int i = 0; i < state->GetPropArrayCount(); ++i)
   {
@@ -438,6 +460,120 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   vtkOpenGLCheckErrorMacro("failed after vtkNPRGBufferPass::Render");
 }
 
+void vtkNPRGBufferPass::RenderDepthOnly(const vtkRenderState* state, int width, int height)
+{
+  this->Internal->Valid = false; // a depth-only frame is never reused, nor a later one from it
+  if (width < 1 || height < 1)
+  {
+    this->HasContent = false;
+    return;
+  }
+  vtkRenderer* renderer = state->GetRenderer();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  if (this->WritesNormals != true || this->WritesObjectIds || this->WrittenEncoding != FLOAT)
+  {
+    this->WritesNormals = true;
+    this->WritesObjectIds = false;
+    this->WrittenEncoding = FLOAT;
+    this->ShaderStageTime.Modified();
+  }
+  this->AllocateBuffers(window, width, height, 2, FLOAT);
+  this->Viewport[0] = 0.0f;
+  this->Viewport[1] = 0.0f;
+  this->Viewport[2] = 1.0f / width;
+  this->Viewport[3] = 1.0f / height;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  this->Perspective = !camera->GetParallelProjection();
+  const double* clippingRange = camera->GetClippingRange();
+  this->PackedDepthRange[0] = static_cast<float>(clippingRange[0]);
+  this->PackedDepthRange[1] = static_cast<float>(clippingRange[1]);
+  this->DepthRemapped = false; // the delegate writes the usual depth
+  this->ContentRectangle[0] = this->ContentRectangle[1] = 0;
+  this->ContentRectangle[2] = width - 1;
+  this->ContentRectangle[3] = height - 1;
+  this->Internal->FrameProps.clear();
+
+  vtkOpenGLState* glState = window->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(glState);
+  vtkOpenGLState::ScopedglScissor scissorSaver(glState);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(glState);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(glState);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(glState, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(glState, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
+
+  // 1. The delegate draws colour and depth (no shader hooks).
+  glState->PushFramebufferBindings();
+  this->Framebuffer->Bind();
+  this->Framebuffer->AddColorAttachment(0, this->ColorTexture);
+  this->Framebuffer->AddDepthAttachment(this->DepthTexture);
+  this->Framebuffer->ActivateDrawBuffers(1);
+  this->Framebuffer->StartNonOrtho(width, height);
+  glState->vtkglViewport(0, 0, width, height);
+  glState->vtkglScissor(0, 0, width, height);
+  glState->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  glState->vtkglDepthMask(GL_TRUE);
+  glState->vtkglClearDepth(1.0);
+  glState->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  this->DelegatePass->Render(state);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  this->Framebuffer->RemoveDepthAttachment();
+
+  // The delegate set the camera: the projection it drew with.
+  vtkMatrix4x4 *worldToView, *viewToDevice, *worldToDevice;
+  vtkMatrix3x3* normalMatrix;
+  static_cast<vtkOpenGLCamera*>(camera)->GetKeyMatrices(
+    renderer, worldToView, normalMatrix, viewToDevice, worldToDevice);
+  vtkMatrix4x4::Invert(viewToDevice, this->InverseProjection); // stays in GLSL's layout
+
+  // 2. The geometry attachment from the depth texture.
+  this->Framebuffer->AddColorAttachment(0, this->GeometryTexture);
+  this->Framebuffer->ActivateDrawBuffers(1);
+  glState->vtkglDisable(GL_DEPTH_TEST);
+  glState->vtkglDepthMask(GL_FALSE);
+  glState->vtkglDisable(GL_BLEND);
+  glState->vtkglDisable(GL_SCISSOR_TEST);
+  vtkShaderProgram* program = this->Internal->DepthGeometry.Ready(window, vtkNPRDepthGeometryFS, "");
+  if (program)
+  {
+    this->DepthTexture->Activate();
+    program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+    program->SetUniformMatrix("inverseProjection", this->InverseProjection);
+    this->Internal->DepthGeometry.Render();
+    this->DepthTexture->Deactivate();
+  }
+  else
+  {
+    vtkErrorMacro("the depth-only geometry shader did not compile");
+  }
+  this->Framebuffer->RemoveColorAttachments(1);
+  glState->PopFramebufferBindings();
+
+  // 3. The captured image back into the caller's framebuffer.
+  vtkShaderProgram* copy = this->Internal->Copy.Ready(window, vtkNPRCopyFS, "");
+  if (copy)
+  {
+    int origin[2];
+    vtkNPRViewportOrigin(state, origin);
+    vtkNPRCompositeState compositeState(glState);
+    compositeState.Apply();
+    glState->vtkglDisable(GL_BLEND);
+    glState->vtkglViewport(origin[0], origin[1], width, height);
+    this->ColorTexture->Activate();
+    this->DepthTexture->Activate();
+    copy->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
+    copy->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+    this->Internal->Copy.Render();
+    this->ColorTexture->Deactivate();
+    this->DepthTexture->Deactivate();
+  }
+
+  this->HasContent = true;
+  ++this->NumberOfGeometryDraws;
+  ++this->ContentVersion;
+  vtkOpenGLCheckErrorMacro("failed after vtkNPRGBufferPass::RenderDepthOnly");
+}
+
 bool vtkNPRGBufferPass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
 {
@@ -545,6 +681,8 @@ void vtkNPRGBufferPass::ReleaseGraphicsResources(vtkWindow* window)
     this->Framebuffer->Delete();
     this->Framebuffer = nullptr;
   }
+  this->Internal->DepthGeometry.Release(window);
+  this->Internal->Copy.Release(window);
   this->HasContent = false;
   this->Internal->Valid = false;
 }
@@ -556,6 +694,7 @@ void vtkNPRGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalsRequested: " << this->NormalsRequested << "\n";
   os << indent << "ObjectIdsRequested: " << this->ObjectIdsRequested << "\n";
   os << indent << "GeometryEncoding: " << this->GeometryEncoding << "\n";
+  os << indent << "DepthOnly: " << this->DepthOnly << "\n";
   os << indent << "ReuseUnchangedFrames: " << this->ReuseUnchangedFrames << "\n";
   os << indent << "WritesNormals: " << this->WritesNormals << "\n";
   os << indent << "WritesObjectIds: " << this->WritesObjectIds << "\n";

@@ -37,6 +37,19 @@
  * its delegate changed since the last frame, the geometry is not drawn again and the last G-buffer is kept
  * (ReuseUnchangedFrames, on by default). GetNumberOfGeometryDraws() counts the draws.
  *
+ * Depth-only mode (DepthOnly, off by default): the delegate is any pass that leaves colour and
+ * depth in the framebuffer (a whole vtkRenderStepsPass, a compositing pass of a parallel
+ * renderer such as ParaView's IceT pass); no shader is changed. The geometry attachment is
+ * derived from the depth buffer alone: view depth, and the normal of the surface rebuilt from the
+ * depths of neighbouring pixels (vtkNPRDepthGeometryFS: face normals, within the precision of
+ * the depth buffer). It is always in the FLOAT encoding with normals and without ids, so
+ * silhouettes work as usual, creases follow the rebuilt normals (the facets of a tessellated
+ * surface, and curved surfaces seen at grazing angles, may give creases the mapper's smooth
+ * normals would not), and object contours fall back to coverage (the outline against the
+ * background). The captured colour and depth are copied back into the framebuffer the pass was
+ * called with, so that what the effects leave alone (the background, translucent geometry the
+ * delegate drew) is kept. Frames are never reused in this mode and the content rectangle is the
+ * whole buffer.
  * Picking: VTK 9.1 does not call the hardware selector once a renderer has a pass, so during a
  * selection render this pass runs the selector itself (vtkPropPicker, vtkHardwareSelector) and
  * makes no G-buffer.
@@ -101,6 +114,15 @@ public:
    */
   vtkSetClampMacro(GeometryEncoding, int, FLOAT, PACKED16);
   vtkGetMacro(GeometryEncoding, int);
+  ///@}
+
+  ///@{
+  /**
+   * Derive the G-buffer from the delegate's depth only (off by default; see above).
+   */
+  vtkSetMacro(DepthOnly, bool);
+  vtkGetMacro(DepthOnly, bool);
+  vtkBooleanMacro(DepthOnly, bool);
   ///@}
 
   ///@{
@@ -189,11 +211,13 @@ protected:
   bool SceneUnchanged(const vtkRenderState* state, int width, int height);
   vtkMTimeType GetSettingsTime();
   void ComputeContentRectangle(const vtkRenderState* state, int width, int height);
+  void RenderDepthOnly(const vtkRenderState* state, int width, int height);
 
   vtkRenderPass* DelegatePass = nullptr;
   bool NormalsRequested = false;
   bool ObjectIdsRequested = false;
   bool ReuseUnchangedFrames = true;
+  bool DepthOnly = false;
   int GeometryEncoding = FLOAT;
 
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;

@@ -7,6 +7,11 @@
 #
 # Installs only the Debian packages that are missing (apt-get; through sudo when not root), so a
 # second run goes straight to the (incremental) build. NPR_BUILD_DIR overrides the build folder.
+#
+# `test` then builds and tests the ParaView plugin in a Debian 12 chroot with ParaView 5.11
+# (Utilities/paraview-chroot.sh: created once in /var/cache/vtknpr/paraview-chroot and kept, so a
+# second run installs nothing), in $NPR_BUILD_DIR/paraview-plugin. NPR_PARAVIEW_PLUGIN=OFF skips
+# that stage (default ON).
 set -euo pipefail
 
 task=${1:-}
@@ -51,4 +56,18 @@ if [[ $task == examples ]]; then
   ls -1 "$build_dir"/examples/*.png
 else
   ctest --test-dir "$build_dir" --output-on-failure -j 2
+  if [[ ${NPR_PARAVIEW_PLUGIN:-ON} != OFF ]]; then
+    start=$SECONDS
+    mkdir -p "$build_dir/paraview-plugin"
+    # Xvfb: Debian's ParaView is GLX-only.
+    NPR_PLUGIN_BUILD_DIR=$build_dir/paraview-plugin \
+      bash "$source_dir/Utilities/paraview-chroot.sh" run '
+        set -e
+        if [ ! -f /build/CMakeCache.txt ]; then
+          cmake -S /src -B /build -G Ninja -DCMAKE_BUILD_TYPE=Release -DNPR_BUILD_PARAVIEW_PLUGIN=ON
+        fi
+        cmake --build /build -j 2
+        cd /build && xvfb-run -a -s "-screen 0 1280x1024x24" ctest --output-on-failure'
+    echo "bootstrap: ParaView plugin stage took $((SECONDS - start)) s"
+  fi
 fi

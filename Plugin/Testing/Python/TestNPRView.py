@@ -1,0 +1,160 @@
+"""pvbatch test of the NPR plugin: load it, create "Render View (NPR)", show CAD-like sources and
+a contour of the Wavelet source, render every style, check pixels numerically and compare with
+the committed baselines. Fails by exception (pvbatch then exits non-zero).
+
+  pvbatch TestNPRView.py --plugin NPRView.so --output-dir DIR [--baseline-dir DIR] [--mpi]
+
+Serial: each style with the full G-buffer (baseline <style>.png), and the line styles with
+ForceDepthOnly (baseline <style>-depth.png). With --mpi (mpiexec -n 2): the images come from IceT's
+composited depth and must match the serial depth-only baselines within MPI_TOLERANCE.
+"""
+import argparse
+import os
+
+from paraview.simple import *  # noqa: F401,F403
+from paraview import servermanager
+from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+ap = argparse.ArgumentParser()
+ap.add_argument("--plugin", required=True)
+ap.add_argument("--output-dir", required=True)
+ap.add_argument("--baseline-dir")
+ap.add_argument("--mpi", action="store_true")
+ap.add_argument("--make-baselines", action="store_true")
+args = ap.parse_args()
+os.makedirs(args.output_dir, exist_ok=True)
+
+SIZE = [400, 300]
+# Regression threshold of vtkTesting (as VTK's image tests) for baselines made on Mesa llvmpipe.
+THRESHOLD = 10
+# The parallel images against the serial depth-only ones: at most this fraction of pixels may
+# differ by more than 48 (of 255) in a channel. IceT's composited depth equals the serial depth
+# except for rounding, so only a few line pixels along grazing surfaces may flip.
+MPI_TOLERANCE = 0.002
+
+LoadPlugin(args.plugin, ns=globals())
+pm = servermanager.vtkProcessModule.GetProcessModule()
+ranks = pm.GetNumberOfLocalPartitions()
+if args.mpi and ranks < 2:
+    raise RuntimeError("--mpi given but running on %d rank(s)" % ranks)
+
+view = CreateView("NPRRenderView")
+view.ViewSize = SIZE
+view.OrientationAxesVisibility = 0
+if hasattr(view, "UseColorPaletteForBackground"):
+    view.UseColorPaletteForBackground = 0
+view.Background = [1.0, 1.0, 1.0]
+
+# CAD-like parts and a scientific dataset (split between ranks under MPI).
+box = Box(XLength=26, YLength=2, ZLength=22, Center=[0, -12, 0])
+cylinder = Cylinder(Resolution=48, Radius=2.5, Height=12, Center=[-14, -5, 6])
+wavelet = Wavelet()
+contour = Contour(Input=wavelet, ContourBy=["POINTS", "RTData"], Isosurfaces=[157.0])
+for source, colour in ((box, [0.8, 0.8, 0.85]), (cylinder, [0.9, 0.7, 0.4]), (contour, [0.5, 0.7, 0.9])):
+    display = Show(source, view)
+    ColorBy(display, ("POINTS", None))
+    display.DiffuseColor = colour
+    display.AmbientColor = colour
+view.CameraPosition = [18, 14, 30]
+view.CameraFocalPoint = [-1, -1, 0]
+view.CameraViewUp = [0, 1, 0]
+view.CameraViewAngle = 30
+view.ResetCamera()
+
+STYLES = ["Shaded", "Edges", "Toon", "Toon+Edges", "Sketch", "Inked"]
+LINE_STYLES = ["Edges", "Toon+Edges", "Sketch"]
+
+
+def read_png(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    w, h, _ = image.GetDimensions()
+    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[..., :3].astype(int)
+
+
+def render(style, depth_only):
+    view.Style = STYLES.index(style)
+    view.ForceDepthOnly = 1 if depth_only else 0
+    Render(view)
+    name = style.lower().replace("+", "-") + ("-depth" if depth_only else "")
+    path = os.path.join(args.output_dir, name + ".png")
+    SaveScreenshot(path, view, ImageResolution=SIZE)
+    return name, path, read_png(path)
+
+
+failures = []
+
+
+def check(condition, message):
+    print(("ok    " if condition else "FAIL  ") + message)
+    if not condition:
+        failures.append(message)
+
+
+def compare_baseline(name, path):
+    if not args.baseline_dir:
+        return
+    base = os.path.join(args.baseline_dir, name + ".png")
+    if not os.path.exists(base):
+        check(args.make_baselines, "baseline %s exists" % base)
+        return
+    from vtkmodules.vtkTestingRendering import vtkTesting
+    testing = vtkTesting()
+    for a in ("-V", base, "-T", args.output_dir):
+        testing.AddArgument(a)
+    check(testing.RegressionTest(path, THRESHOLD) == vtkTesting.PASSED,
+          "%s matches its baseline" % name)
+
+
+def dark(img):
+    return int((img.sum(axis=2) < 150).sum())
+
+
+if not args.mpi:
+    images = {}
+    for style in STYLES:
+        name, path, img = render(style, False)
+        images[style] = img
+        compare_baseline(name, path)
+    shaded = images["Shaded"]
+    covered = int((shaded.sum(axis=2) < 760).sum())
+    print("covered pixels", covered, "dark pixels:", {s: dark(i) for s, i in images.items()})
+    check(covered > 20000, "the scene covers the view")
+    check(dark(images["Edges"]) > dark(shaded) + 3000, "edges draws lines")
+    check(dark(images["Toon+Edges"]) > dark(images["Toon"]) + 1500, "toon+edges draws lines")
+    check(dark(images["Inked"]) > dark(shaded) + 1500, "inked draws outlines")
+    check(dark(images["Sketch"]) > dark(shaded) + 1500, "sketch draws lines")
+    mask = shaded.sum(axis=2) < 760
+
+    def levels(img):
+        return len(set(map(tuple, img[mask].reshape(-1, 3) // 4)))
+    check(levels(images["Toon"]) < 0.7 * levels(shaded),
+          "toon has fewer shades than shaded (%d < %d)" % (levels(images["Toon"]), levels(shaded)))
+    check(int((abs(images["Sketch"] - images["Edges"]).sum(axis=2) > 60).sum()) > 2000,
+          "sketch differs from edges")
+    # Lines from depth only (what MPI gives): silhouettes and creases remain.
+    for style in LINE_STYLES:
+        name, path, img = render(style, True)
+        compare_baseline(name, path)
+        if style == "Edges":
+            check(dark(img) > dark(shaded) + 2000, "depth-only edges draws lines")
+else:
+    for style in LINE_STYLES:
+        name, path, img = render(style, False)
+        if pm.GetPartitionId() != 0:
+            continue
+        base = os.path.join(args.baseline_dir, name + "-depth.png")
+        ref = read_png(base)
+        differing = float((abs(img - ref).max(axis=2) > 48).mean())
+        print("%s: %.5f of the pixels differ from the serial depth-only image (dark %d vs %d)"
+              % (style, differing, dark(img), dark(ref)))
+        check(differing <= MPI_TOLERANCE, "%s under MPI matches the serial depth-only image" % style)
+    for style in ("Shaded", "Toon", "Inked"):
+        render(style, False)
+
+if failures:
+    raise RuntimeError("FAIL: " + "; ".join(failures))
+print("PASS")

@@ -1,0 +1,77 @@
+/**
+ * @class   vtkNPRViewPass
+ * @brief   The vtkNPR styles in the image-processing slot of a ParaView render view.
+ *
+ * vtkPVSynchronizedRenderer puts this pass where it puts image-processing passes
+ * (SetImageProcessingPass()): the renderer's pass is this one (after FXAA when that is on) and
+ * the delegate it is given renders the scene:
+ * - in one process (builtin session, pvbatch or pvserver on one rank) the delegate is a
+ *   vtkCameraPass drawing through vtkPVDefaultPass. This pass then renders the scene itself
+ *   through its vtkNPRPass, which draws the full G-buffer (colour, depth, normals, object ids).
+ * - under MPI with IceT the delegate is IceT's composite pass, which renders each rank's piece,
+ *   composites and pastes the composited premultiplied colour and depth into the framebuffer.
+ *   No normals or ids exist for the composited image, so the vtkNPRPass's G-buffer pass is put
+ *   in depth-only mode (vtkNPRGBufferPass::SetDepthOnly): it draws the delegate and derives
+ *   view depth and normals from the depth buffer. Silhouettes come from depth as before,
+ *   creases from the reconstructed normals, contours (object ids) fall back to coverage, and
+ *   toon bands and the inked wireframe cannot be applied to an image: TOON shows the shaded
+ *   image, INKED its silhouettes, SKETCH sketches the shaded image.
+ *   Since the composited image has no seams, no line appears where ranks' pieces meet.
+ *
+ * Composited input is detected from the delegate (anything but a vtkCameraPass) unless
+ * ForceDepthOnly is on.
+ *
+ * @sa vtkPVNPRView vtkNPRPass vtkNPRGBufferPass
+ */
+#ifndef vtkNPRViewPass_h
+#define vtkNPRViewPass_h
+
+#include "vtkImageProcessingPass.h"
+#include "vtkNPRViewsModule.h" // for export macro
+
+class vtkNPRPass;
+
+class VTKNPRVIEWS_EXPORT vtkNPRViewPass : public vtkImageProcessingPass
+{
+public:
+  static vtkNPRViewPass* New();
+  vtkTypeMacro(vtkNPRViewPass, vtkImageProcessingPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  void Render(const vtkRenderState* state) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+  /**
+   * The façade whose style and passes this pass renders with.
+   */
+  vtkGetObjectMacro(NPRPass, vtkNPRPass);
+
+  ///@{
+  /**
+   * Derive the lines from the delegate's depth even in one process (off by default), to see
+   * what a parallel render gives.
+   */
+  vtkSetMacro(ForceDepthOnly, bool);
+  vtkGetMacro(ForceDepthOnly, bool);
+  vtkBooleanMacro(ForceDepthOnly, bool);
+  ///@}
+
+  /**
+   * The last frame used the depth-only mode.
+   */
+  bool GetLastRenderWasDepthOnly() const { return this->LastRenderWasDepthOnly; }
+
+protected:
+  vtkNPRViewPass();
+  ~vtkNPRViewPass() override;
+
+  vtkNPRPass* NPRPass;
+  bool ForceDepthOnly = false;
+  bool LastRenderWasDepthOnly = false;
+
+private:
+  vtkNPRViewPass(const vtkNPRViewPass&) = delete;
+  void operator=(const vtkNPRViewPass&) = delete;
+};
+
+#endif

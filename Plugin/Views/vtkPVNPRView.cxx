@@ -1,0 +1,87 @@
+#include "vtkPVNPRView.h"
+
+#include "vtkNPREdgePass.h"
+#include "vtkNPRInkPass.h"
+#include "vtkNPRPass.h"
+#include "vtkNPRSketchPass.h"
+#include "vtkNPRToonPass.h"
+#include "vtkNPRViewPass.h"
+#include "vtkObjectFactory.h"
+#include "vtkPVSynchronizedRenderer.h"
+
+vtkStandardNewMacro(vtkPVNPRView);
+
+vtkPVNPRView::vtkPVNPRView()
+{
+  // vtkPVSynchronizedRenderer::SetupPasses(): [FXAA ->] NPRViewPass -> camera -> default pass
+  // in one process; under IceT the composite pass is the delegate.
+  this->SynchronizedRenderers->SetImageProcessingPass(this->NPRViewPass);
+  this->SynchronizedRenderers->SetUseDepthBuffer(true); // IceT pastes depth back too
+}
+
+vtkPVNPRView::~vtkPVNPRView() = default;
+
+vtkNPRViewPass* vtkPVNPRView::GetNPRViewPass()
+{
+  return this->NPRViewPass;
+}
+
+// Forwarders: one property, one setter of a pass.
+#define vtkPVNPRViewForward(name, type, pass, setter)                                             \
+  void vtkPVNPRView::Set##name(type value)                                                        \
+  {                                                                                                \
+    this->NPRViewPass->GetNPRPass()->pass->setter(value);                                         \
+  }
+#define vtkPVNPRViewForwardColor(name, pass, setter)                                              \
+  void vtkPVNPRView::Set##name(double r, double g, double b)                                      \
+  {                                                                                                \
+    this->NPRViewPass->GetNPRPass()->pass->setter(r, g, b);                                       \
+  }
+
+void vtkPVNPRView::SetStyle(int style)
+{
+  this->NPRViewPass->GetNPRPass()->SetStyle(style);
+}
+void vtkPVNPRView::SetSketchToonShading(bool on)
+{
+  this->NPRViewPass->GetNPRPass()->SetSketchToonShading(on);
+}
+vtkPVNPRViewForward(Silhouettes, bool, GetEdgePass(), SetSilhouettes)
+vtkPVNPRViewForward(SilhouetteThreshold, double, GetEdgePass(), SetSilhouetteThreshold)
+vtkPVNPRViewForwardColor(SilhouetteColor, GetEdgePass(), SetSilhouetteColor)
+vtkPVNPRViewForward(Creases, bool, GetEdgePass(), SetCreases)
+vtkPVNPRViewForward(CreaseAngle, double, GetEdgePass(), SetCreaseAngle)
+vtkPVNPRViewForwardColor(CreaseColor, GetEdgePass(), SetCreaseColor)
+vtkPVNPRViewForward(Contours, bool, GetEdgePass(), SetContours)
+vtkPVNPRViewForward(ContourSide, int, GetEdgePass(), SetContourSide)
+vtkPVNPRViewForwardColor(ContourColor, GetEdgePass(), SetContourColor)
+vtkPVNPRViewForward(LineWidth, double, GetEdgePass(), SetLineWidth)
+vtkPVNPRViewForward(LineAntiAliasing, bool, GetEdgePass(), SetAntiAliasing)
+vtkPVNPRViewForward(LineEncoding, int, GetEdgePass(), SetEncoding)
+vtkPVNPRViewForward(PackedThreshold, double, GetEdgePass(), SetPackedThreshold)
+vtkPVNPRViewForward(ToonBands, int, GetToonPass(), SetNumberOfBands)
+vtkPVNPRViewForward(ToonSpecular, bool, GetToonPass(), SetSpecular)
+vtkPVNPRViewForward(SketchUncertainty, double, GetSketchPass(), SetUncertainty)
+vtkPVNPRViewForward(SketchNoiseFrequency, double, GetSketchPass(), SetNoiseFrequency)
+vtkPVNPRViewForward(SketchPaper, bool, GetSketchPass(), SetPaper)
+vtkPVNPRViewForwardColor(SketchPaperColor, GetSketchPass(), SetPaperColor)
+vtkPVNPRViewForward(InkLineWidth, double, GetInkPass(), SetLineWidth)
+vtkPVNPRViewForwardColor(InkColor, GetInkPass(), SetInkColor)
+
+void vtkPVNPRView::SetSketchNoiseSeed(int seed)
+{
+  this->NPRViewPass->GetNPRPass()->GetSketchPass()->SetNoiseSeed(
+    static_cast<unsigned int>(seed < 0 ? 0 : seed));
+}
+
+void vtkPVNPRView::SetForceDepthOnly(bool on)
+{
+  this->NPRViewPass->SetForceDepthOnly(on);
+}
+
+void vtkPVNPRView::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NPRViewPass:\n";
+  this->NPRViewPass->PrintSelf(os, indent.GetNextIndent());
+}
