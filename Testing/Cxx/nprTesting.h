@@ -53,6 +53,11 @@ int nprRunTestCase(
 vtkSmartPointer<vtkActor> nprAddActor(
   vtkRenderer* renderer, vtkAlgorithmOutput* port, const double color[3] = nullptr);
 
+// The baseline scenes' model: Testing/Data/<model> read by vtkNPRModelReader, prepared by
+// vtkNPRShadingNormals as npr-render prepares it, in a warm grey with a little specular, added
+// to the renderer; the camera reset, then turned 30 degrees in azimuth and elevation.
+vtkSmartPointer<vtkActor> nprAddBaselineModel(vtkRenderer* renderer, const std::string& model);
+
 // A channel (0..255) of an unsigned char image's pixel; 0 outside the image.
 int nprPixel(vtkImageData* image, int x, int y, int component = 0);
 
