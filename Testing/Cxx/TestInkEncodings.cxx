@@ -33,31 +33,7 @@
 
 namespace
 {
-struct Scene
-{
-  vtkSmartPointer<vtkRenderWindow> Window;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkNPRPass> Pass;
-  int Width, Height;
-
-  Scene(int width, int height)
-    : Width(width)
-    , Height(height)
-  {
-    this->Window = nprCreateTestWindow(width, height, nullptr);
-    this->Renderer->SetBackground(1.0, 1.0, 1.0);
-    this->Renderer->SetPass(this->Pass);
-    this->Window->AddRenderer(this->Renderer);
-  }
-  vtkNPREdgePass* Edges() { return this->Pass->GetEdgePass(); }
-  vtkNPRInkPass* Ink() { return this->Pass->GetInkPass(); }
-  vtkCamera* Camera() { return this->Renderer->GetActiveCamera(); }
-  vtkSmartPointer<vtkImageData> Render()
-  {
-    this->Window->Render();
-    return nprCaptureImage(this->Window);
-  }
-};
+using Scene = nprPassScene;
 
 // A unit cube seen from a corner direction: a hexagonal outline and three visible creases.
 vtkSmartPointer<vtkActor> AddCubeSeenFromCorner(Scene& scene, bool parallel)

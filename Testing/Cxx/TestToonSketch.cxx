@@ -41,37 +41,15 @@
 
 namespace
 {
-struct Scene
+struct Scene : nprPassScene
 {
-  vtkSmartPointer<vtkRenderWindow> Window;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkNPRPass> Pass;
-  int Width, Height;
-
-  Scene(int width, int height)
-    : Width(width)
-    , Height(height)
-  {
-    this->Window = nprCreateTestWindow(width, height, nullptr);
-    this->Renderer->SetBackground(1.0, 1.0, 1.0);
-    this->Renderer->SetPass(this->Pass);
-    this->Window->AddRenderer(this->Renderer);
-  }
-  vtkNPREdgePass* Edges() { return this->Pass->GetEdgePass(); }
-  vtkNPRToonPass* Toon() { return this->Pass->GetToonPass(); }
-  vtkNPRSketchPass* Sketch() { return this->Pass->GetSketchPass(); }
-  vtkCamera* Camera() { return this->Renderer->GetActiveCamera(); }
+  using nprPassScene::nprPassScene;
   void LookAtOrigin(double distance)
   {
     this->Camera()->SetPosition(0, 0, distance);
     this->Camera()->SetFocalPoint(0, 0, 0);
     this->Camera()->SetViewUp(0, 1, 0);
     this->Camera()->SetClippingRange(1, 10);
-  }
-  vtkSmartPointer<vtkImageData> Render()
-  {
-    this->Window->Render();
-    return nprCaptureImage(this->Window);
   }
   std::vector<float> Depth()
   {

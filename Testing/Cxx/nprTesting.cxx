@@ -89,6 +89,22 @@ vtkSmartPointer<vtkActor> nprAddActor(
   return actor;
 }
 
+nprPassScene::nprPassScene(int width, int height)
+  : Width(width)
+  , Height(height)
+{
+  this->Window = nprCreateTestWindow(width, height, nullptr);
+  this->Renderer->SetBackground(1.0, 1.0, 1.0);
+  this->Renderer->SetPass(this->Pass);
+  this->Window->AddRenderer(this->Renderer);
+}
+
+vtkSmartPointer<vtkImageData> nprPassScene::Render()
+{
+  this->Window->Render();
+  return nprCaptureImage(this->Window);
+}
+
 vtkSmartPointer<vtkActor> nprAddBaselineModel(vtkRenderer* renderer, const std::string& model)
 {
   vtkNew<vtkNPRModelReader> reader;
