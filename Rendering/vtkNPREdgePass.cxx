@@ -166,7 +166,7 @@ int vtkNPREdgePass::GetEncodingFromName(const char* name)
 
 double vtkNPREdgePass::GetEffectiveLineWidth(vtkRenderer* renderer) const
 {
-  return std::min(std::max(this->LineWidth * vtkNPRWindowScale(renderer), 0.5), 32.0);
+  return vtkNPREffectiveLineWidth(renderer, this->LineWidth);
 }
 
 void vtkNPREdgePass::Render(const vtkRenderState* state)

@@ -398,7 +398,11 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   static_cast<vtkOpenGLCamera*>(camera)->GetKeyMatrices(
     renderer, worldToView, normalMatrix, viewToDevice, worldToDevice);
   vtkMatrix4x4::Invert(viewToDevice, this->InverseProjection); // stays in GLSL's layout
-  this->Perspective = !camera->GetParallelProjection();
+  if (this->Perspective == static_cast<bool>(camera->GetParallelProjection()))
+  {
+    this->Perspective = !camera->GetParallelProjection();
+    this->ShaderStageTime.Modified(); // compiled into the shaders
+  }
   const double* clippingRange = camera->GetClippingRange();
   this->PackedDepthRange[0] = static_cast<float>(clippingRange[0]);
   this->PackedDepthRange[1] = static_cast<float>(clippingRange[1]);
@@ -604,7 +608,8 @@ bool vtkNPRGBufferPass::PostReplaceShaderValues(
     (this->WritesObjectIds ? "1" : "0") + "\n#define NPR_HAVE_MAPPER_NORMAL " +
     (mapperNormal ? "1" : "0") + "\n#define NPR_HAVE_VERTEX_VC " + (vertexVC ? "1" : "0") +
     "\n#define NPR_ENCODING " + std::to_string(this->WrittenEncoding) +
-    "\n#define NPR_REMAPPED_DEPTH " + (this->DepthRemapped ? "1" : "0") + "\n";
+    "\n#define NPR_REMAPPED_DEPTH " + (this->DepthRemapped ? "1" : "0") +
+    "\n#define NPR_PERSPECTIVE " + (this->Perspective ? "1" : "0") + "\n";
   vtkShaderProgram::Substitute(
     fragmentShader, "//NPR::GBuffer::Dec", defines + vtkNPRGBufferDecl, false);
   vtkShaderProgram::Substitute(fragmentShader, "//NPR::GBuffer::Impl", vtkNPRGBufferImpl, false);

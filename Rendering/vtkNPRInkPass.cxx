@@ -30,7 +30,7 @@ vtkNPRInkPass::~vtkNPRInkPass()
 
 double vtkNPRInkPass::GetEffectiveLineWidth(vtkRenderer* renderer) const
 {
-  return std::min(std::max(this->LineWidth * vtkNPRWindowScale(renderer), 0.5), 32.0);
+  return vtkNPREffectiveLineWidth(renderer, this->LineWidth);
 }
 
 void vtkNPRInkPass::Render(const vtkRenderState* state)
@@ -64,18 +64,18 @@ void vtkNPRInkPass::Render(const vtkRenderState* state)
 
   // Half of the wireframe lies under the front faces: draw it twice the visible width.
   const double visibleWidth = this->GetEffectiveLineWidth(renderer);
-  float widthRange[2] = { 1.0f, 1.0f };
-  glGetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, widthRange);
+  // VTK reads GL_ALIASED_LINE_WIDTH_RANGE once per context.
+  const double widest = window->GetMaximumHardwareLineWidth();
   double drawnWidth = 2.0 * visibleWidth;
-  if (drawnWidth > widthRange[1])
+  if (drawnWidth > widest)
   {
     if (!this->WarnedAboutWidth)
     {
-      vtkWarningMacro("ink lines of " << drawnWidth << " pixels are drawn " << widthRange[1]
+      vtkWarningMacro("ink lines of " << drawnWidth << " pixels are drawn " << widest
                                       << " wide, the most this OpenGL draws");
       this->WarnedAboutWidth = true;
     }
-    drawnWidth = widthRange[1];
+    drawnWidth = widest;
   }
 
   if (this->CoverageOnly)

@@ -64,3 +64,8 @@ void vtkNPRCompositeState::Apply()
   this->State->vtkglBlendFuncSeparate(
     GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 }
+
+double vtkNPREffectiveLineWidth(vtkRenderer* renderer, double width)
+{
+  return std::min(std::max(width * vtkNPRWindowScale(renderer), 0.5), 32.0);
+}

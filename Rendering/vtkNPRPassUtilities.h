@@ -10,6 +10,9 @@ class vtkRenderer;
 // How many pixels one pixel at 72 DPI is in this renderer's window: DPI / 72 x tile scale.
 double vtkNPRWindowScale(vtkRenderer* renderer);
 
+// A line width given in pixels at 72 DPI, in this renderer's pixels, kept within [0.5, 32].
+double vtkNPREffectiveLineWidth(vtkRenderer* renderer, double width);
+
 // VTK 9.1 does not call the hardware selector once a renderer has a pass: a pass that draws the
 // props runs it itself during a selection render. Returns false (and does nothing) otherwise;
 // true with the number of props the selector rendered.

@@ -29,6 +29,20 @@
                                                       : vec3(0.0, 0.0, 1.0);
     }
     nprNormal = normalize(nprNormal);
+#if NPR_HAVE_MAPPER_NORMAL
+    // VTK turns the normal of a back-facing fragment around (two-sided lighting). Where the
+    // winding disagrees with the normals, as for a needle triangle whose winding flips when its
+    // points are rounded to 32-bit floats, that turns it away from the viewer: turn it back.
+#if NPR_PERSPECTIVE
+    vec3 nprToViewer = -nprFragmentPositionVC();
+#else
+    vec3 nprToViewer = vec3(0.0, 0.0, 1.0);
+#endif
+    if (!gl_FrontFacing && dot(nprNormal, nprToViewer) < 0.0)
+    {
+      nprNormal = -nprNormal;
+    }
+#endif
 #if NPR_ENCODING == 1
     nprGeometry.yz = nprOctahedral(nprNormal);
 #else

@@ -228,6 +228,19 @@ int ParseInteger(const std::string& flag, const std::string& text, int low, int 
   return static_cast<int>(value);
 }
 
+// A number in [low, high]; range names the range in the message ("0.5..16").
+double ParseNumber(
+  const std::string& flag, const std::string& text, double low, double high, const char* range)
+{
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end || !(value >= low && value <= high))
+  {
+    throw UsageError(flag + " expects a number in " + range + ", got '" + text + "'");
+  }
+  return value;
+}
+
 std::vector<std::string> SplitList(const std::string& text)
 {
   std::vector<std::string> parts;
@@ -322,13 +335,7 @@ Options ParseOptions(int argc, char* argv[])
     }
     else if (arg == "--line-width")
     {
-      char* end = nullptr;
-      const std::string text = value();
-      options.LineWidth = std::strtod(text.c_str(), &end);
-      if (text.empty() || *end || !(options.LineWidth >= 0.5 && options.LineWidth <= 16.0))
-      {
-        throw UsageError("--line-width expects a number in 0.5..16, got '" + text + "'");
-      }
+      options.LineWidth = ParseNumber(arg, value(), 0.5, 16.0, "0.5..16");
     }
     else if (arg == "--quick")
     {
@@ -340,22 +347,11 @@ Options ParseOptions(int argc, char* argv[])
     }
     else if (arg == "--stress-cases")
     {
-      std::stringstream parts(value());
-      std::string part;
-      while (std::getline(parts, part, ','))
-      {
-        options.StressCases.push_back(part);
-      }
+      options.StressCases = SplitList(value());
     }
     else if (arg == "--max-drift")
     {
-      char* end = nullptr;
-      const std::string text = value();
-      options.MaxDrift = std::strtod(text.c_str(), &end);
-      if (text.empty() || *end || !(options.MaxDrift >= 0.0 && options.MaxDrift <= 1.0))
-      {
-        throw UsageError("--max-drift expects a number in 0..1, got '" + text + "'");
-      }
+      options.MaxDrift = ParseNumber(arg, value(), 0.0, 1.0, "0..1");
     }
     else if (arg == "--save-masks")
     {

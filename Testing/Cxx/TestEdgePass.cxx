@@ -66,28 +66,9 @@
 
 namespace
 {
-struct Scene
+struct Scene : nprPassScene
 {
-  vtkSmartPointer<vtkRenderWindow> Window;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkNPRPass> Pass;
-
-  Scene(int width, int height)
-  {
-    this->Window = nprCreateTestWindow(width, height, nullptr);
-    this->Renderer->SetBackground(1.0, 1.0, 1.0);
-    this->Renderer->SetPass(this->Pass);
-    this->Window->AddRenderer(this->Renderer);
-  }
-  vtkNPREdgePass* Edges() { return this->Pass->GetEdgePass(); }
-  vtkNPRGBufferPass* GBuffer() { return this->Pass->GetGBufferPass(); }
-  vtkCamera* Camera() { return this->Renderer->GetActiveCamera(); }
-
-  vtkSmartPointer<vtkImageData> Render()
-  {
-    this->Window->Render();
-    return nprCaptureImage(this->Window);
-  }
+  using nprPassScene::nprPassScene;
   // The line coverage alone: white lines on black.
   vtkSmartPointer<vtkImageData> Mask()
   {

@@ -14,10 +14,8 @@
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
 #include "vtkNPRInkPass.h"
-#include "vtkNPRModelReader.h"
 #include "vtkNPRPass.h"
 #include "vtkNew.h"
-#include "vtkPolyDataNormals.h"
 #include "vtkPropPicker.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -35,31 +33,7 @@
 
 namespace
 {
-struct Scene
-{
-  vtkSmartPointer<vtkRenderWindow> Window;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkNPRPass> Pass;
-  int Width, Height;
-
-  Scene(int width, int height)
-    : Width(width)
-    , Height(height)
-  {
-    this->Window = nprCreateTestWindow(width, height, nullptr);
-    this->Renderer->SetBackground(1.0, 1.0, 1.0);
-    this->Renderer->SetPass(this->Pass);
-    this->Window->AddRenderer(this->Renderer);
-  }
-  vtkNPREdgePass* Edges() { return this->Pass->GetEdgePass(); }
-  vtkNPRInkPass* Ink() { return this->Pass->GetInkPass(); }
-  vtkCamera* Camera() { return this->Renderer->GetActiveCamera(); }
-  vtkSmartPointer<vtkImageData> Render()
-  {
-    this->Window->Render();
-    return nprCaptureImage(this->Window);
-  }
-};
+using Scene = nprPassScene;
 
 // A unit cube seen from a corner direction: a hexagonal outline and three visible creases.
 vtkSmartPointer<vtkActor> AddCubeSeenFromCorner(Scene& scene, bool parallel)
@@ -440,24 +414,8 @@ int Windows()
 // ---- Baselines ----
 int Baseline(const char* model, const char* name, int style, int encoding)
 {
-  vtkNew<vtkNPRModelReader> reader;
-  reader->SetFileName((nprTestDataDir() + "/" + model).c_str());
-  reader->Update();
-  NPR_CHECK(!*reader->GetErrorMessage(), reader->GetErrorMessage());
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputConnection(reader->GetOutputPort());
-  normals->SetFeatureAngle(30.0);
-  normals->SplittingOn();
   Scene scene(400, 300);
-  const double color[3] = { 0.85, 0.82, 0.75 };
-  vtkSmartPointer<vtkActor> actor = nprAddActor(scene.Renderer, normals->GetOutputPort(), color);
-  actor->GetProperty()->SetSpecular(0.3);
-  actor->GetProperty()->SetSpecularPower(30.0);
-  scene.Renderer->ResetCamera();
-  scene.Camera()->Azimuth(30);
-  scene.Camera()->Elevation(30);
-  scene.Camera()->OrthogonalizeViewUp();
-  scene.Renderer->ResetCameraClippingRange();
+  nprAddBaselineModel(scene.Renderer, model);
   scene.Pass->SetStyle(style);
   scene.Edges()->SetEncoding(encoding);
   scene.Ink()->SetLineWidth(2.0);

@@ -18,7 +18,6 @@
 #include "vtkLookupTable.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
-#include "vtkNPRModelReader.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRSketchPass.h"
 #include "vtkNPRToonPass.h"
@@ -26,7 +25,6 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
-#include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -43,37 +41,15 @@
 
 namespace
 {
-struct Scene
+struct Scene : nprPassScene
 {
-  vtkSmartPointer<vtkRenderWindow> Window;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkNPRPass> Pass;
-  int Width, Height;
-
-  Scene(int width, int height)
-    : Width(width)
-    , Height(height)
-  {
-    this->Window = nprCreateTestWindow(width, height, nullptr);
-    this->Renderer->SetBackground(1.0, 1.0, 1.0);
-    this->Renderer->SetPass(this->Pass);
-    this->Window->AddRenderer(this->Renderer);
-  }
-  vtkNPREdgePass* Edges() { return this->Pass->GetEdgePass(); }
-  vtkNPRToonPass* Toon() { return this->Pass->GetToonPass(); }
-  vtkNPRSketchPass* Sketch() { return this->Pass->GetSketchPass(); }
-  vtkCamera* Camera() { return this->Renderer->GetActiveCamera(); }
+  using nprPassScene::nprPassScene;
   void LookAtOrigin(double distance)
   {
     this->Camera()->SetPosition(0, 0, distance);
     this->Camera()->SetFocalPoint(0, 0, 0);
     this->Camera()->SetViewUp(0, 1, 0);
     this->Camera()->SetClippingRange(1, 10);
-  }
-  vtkSmartPointer<vtkImageData> Render()
-  {
-    this->Window->Render();
-    return nprCaptureImage(this->Window);
   }
   std::vector<float> Depth()
   {
@@ -694,24 +670,8 @@ int Windows()
 // ---- Baselines ----
 int Baseline(const char* model, const char* name, int style, bool paper)
 {
-  vtkNew<vtkNPRModelReader> reader;
-  reader->SetFileName((nprTestDataDir() + "/" + model).c_str());
-  reader->Update();
-  NPR_CHECK(!*reader->GetErrorMessage(), reader->GetErrorMessage());
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputConnection(reader->GetOutputPort());
-  normals->SetFeatureAngle(30.0);
-  normals->SplittingOn();
   Scene scene(400, 300);
-  const double color[3] = { 0.85, 0.82, 0.75 };
-  vtkSmartPointer<vtkActor> actor = nprAddActor(scene.Renderer, normals->GetOutputPort(), color);
-  actor->GetProperty()->SetSpecular(0.3);
-  actor->GetProperty()->SetSpecularPower(30.0);
-  scene.Renderer->ResetCamera();
-  scene.Camera()->Azimuth(30);
-  scene.Camera()->Elevation(30);
-  scene.Camera()->OrthogonalizeViewUp();
-  scene.Renderer->ResetCameraClippingRange();
+  nprAddBaselineModel(scene.Renderer, model);
   scene.Pass->SetStyle(style);
   scene.Sketch()->SetPaper(paper);
   scene.Pass->SetSketchToonShading(paper);

@@ -1,7 +1,10 @@
 #include "nprTesting.h"
 
 #include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkImageData.h"
+#include "vtkNPRModelReader.h"
+#include "vtkNPRShadingNormals.h"
 #include "vtkNPRRenderWindowFactory.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -83,6 +86,42 @@ vtkSmartPointer<vtkActor> nprAddActor(
     actor->GetProperty()->SetColor(color[0], color[1], color[2]);
   }
   renderer->AddActor(actor);
+  return actor;
+}
+
+nprPassScene::nprPassScene(int width, int height)
+  : Width(width)
+  , Height(height)
+{
+  this->Window = nprCreateTestWindow(width, height, nullptr);
+  this->Renderer->SetBackground(1.0, 1.0, 1.0);
+  this->Renderer->SetPass(this->Pass);
+  this->Window->AddRenderer(this->Renderer);
+}
+
+vtkSmartPointer<vtkImageData> nprPassScene::Render()
+{
+  this->Window->Render();
+  return nprCaptureImage(this->Window);
+}
+
+vtkSmartPointer<vtkActor> nprAddBaselineModel(vtkRenderer* renderer, const std::string& model)
+{
+  vtkNew<vtkNPRModelReader> reader;
+  reader->SetFileName((nprTestDataDir() + "/" + model).c_str());
+  reader->Update();
+  NPR_CHECK(!*reader->GetErrorMessage(), reader->GetErrorMessage());
+  vtkNew<vtkNPRShadingNormals> normals;
+  normals->SetInputConnection(reader->GetOutputPort());
+  const double color[3] = { 0.85, 0.82, 0.75 };
+  vtkSmartPointer<vtkActor> actor = nprAddActor(renderer, normals->GetOutputPort(), color);
+  actor->GetProperty()->SetSpecular(0.3);
+  actor->GetProperty()->SetSpecularPower(30.0);
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Azimuth(30);
+  renderer->GetActiveCamera()->Elevation(30);
+  renderer->GetActiveCamera()->OrthogonalizeViewUp();
+  renderer->ResetCameraClippingRange();
   return actor;
 }
 

@@ -14,7 +14,11 @@
 #ifndef nprTesting_h
 #define nprTesting_h
 
+#include "vtkNPRPass.h"
+#include "vtkNew.h"
 #include "vtkOutputWindow.h"
+#include "vtkRenderWindow.h" // for nprPassScene
+#include "vtkRenderer.h"     // for nprPassScene
 #include "vtkSmartPointer.h"
 
 #include <functional>
@@ -52,6 +56,31 @@ int nprRunTestCase(
 // An actor of the port's polygons (through a vtkPolyDataMapper) added to the renderer.
 vtkSmartPointer<vtkActor> nprAddActor(
   vtkRenderer* renderer, vtkAlgorithmOutput* port, const double color[3] = nullptr);
+
+// The baseline scenes' model: Testing/Data/<model> read by vtkNPRModelReader, prepared by
+// vtkNPRShadingNormals as npr-render prepares it, in a warm grey with a little specular, added
+// to the renderer; the camera reset, then turned 30 degrees in azimuth and elevation.
+vtkSmartPointer<vtkActor> nprAddBaselineModel(vtkRenderer* renderer, const std::string& model);
+
+// A test window of the given size with one renderer (white background) drawn by a vtkNPRPass.
+// Tests derive their own scene from it to add helpers.
+struct nprPassScene
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkNPRPass> Pass;
+  int Width, Height;
+
+  nprPassScene(int width, int height);
+  vtkNPREdgePass* Edges() { return this->Pass->GetEdgePass(); }
+  vtkNPRGBufferPass* GBuffer() { return this->Pass->GetGBufferPass(); }
+  vtkNPRToonPass* Toon() { return this->Pass->GetToonPass(); }
+  vtkNPRSketchPass* Sketch() { return this->Pass->GetSketchPass(); }
+  vtkNPRInkPass* Ink() { return this->Pass->GetInkPass(); }
+  vtkCamera* Camera() { return this->Renderer->GetActiveCamera(); }
+  // Renders a frame and returns the window's colour buffer (nprCaptureImage).
+  vtkSmartPointer<vtkImageData> Render();
+};
 
 // A channel (0..255) of an unsigned char image's pixel; 0 outside the image.
 int nprPixel(vtkImageData* image, int x, int y, int component = 0);

@@ -57,6 +57,24 @@ assert 0.05 * n < len(object_pixels) < 0.9 * n, len(object_pixels)
 assert all(p[0] >= p[2] for p in object_pixels), "the object is not orange-red"
 assert max(p[0] for p in object_pixels) - min(p[0] for p in object_pixels) > 60, "no shading"
 
+# Object-space lines and their ground-truth mask from Python: a cube's 12 creases; the mask of
+# the rotor for this window has line pixels.
+from vtknpr import vtkNPRFeatureLines, vtkNPRReferenceMask  # noqa: E402
+from vtkmodules.vtkFiltersSources import vtkCubeSource  # noqa: E402
+cube = vtkCubeSource()
+lines = vtkNPRFeatureLines()
+lines.SetInputConnection(cube.GetOutputPort())
+lines.SilhouettesOff()
+lines.Update()
+assert lines.GetOutput().GetNumberOfLines() == 12, lines.GetOutput().GetNumberOfLines()
+mask = vtkNPRReferenceMask()
+mask.SetRenderer(renderer)
+assert mask.Update()
+values = mask.GetMask().GetPointData().GetScalars()
+line_pixels = sum(1 for i in range(values.GetNumberOfTuples()) if values.GetValue(i) == 255)
+print("reference mask line pixels:", line_pixels)
+assert 100 < line_pixels < 0.3 * n, line_pixels
+
 # Unavailable backends are None with a warning, never a crash.
 from vtkmodules.vtkCommonCore import vtkObject  # noqa: E402
 vtkObject.GlobalWarningDisplayOff()

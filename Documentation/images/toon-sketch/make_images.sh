@@ -6,21 +6,7 @@
 # The commands run from the repository root (the model paths are relative to it) and write into
 # this folder; each is printed as toon-sketch.md shows it, "npr-render ... -o NAME.png".
 set -eu
-if [ $# -ne 1 ]; then
-  echo "usage: $0 NPR_RENDER" >&2
-  exit 2
-fi
-npr_render=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-out=$(cd "$(dirname "$0")" && pwd)
-cd "$out/../../.."
-
-# render NAME.png ARGS...: npr-render ARGS -o NAME.png, written into this folder
-render() {
-  name=$1
-  shift
-  echo "npr-render $* -o $name"
-  "$npr_render" "$@" -o "$out/$name"
-}
+. "$(dirname "$0")/../render_common.sh"
 
 cad="Testing/Data/cad_part.vtp --size 480x360 --azimuth 30 --elevation 30"
 bunny="Testing/Data/bunny.ply --size 480x360 --azimuth 20 --elevation 10"
