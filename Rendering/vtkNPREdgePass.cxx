@@ -347,7 +347,7 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
   }
 
   vtkNPRCompositeState compositeState(glState);
-  compositeState.Apply();
+  compositeState.Apply(origin, width, height);
   // Outside the props' projected bounds there is only background: nothing to write there.
   const int* rect = gbuffer->GetContentRectangle();
   if (output == OutputMask)

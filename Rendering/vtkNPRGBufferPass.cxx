@@ -560,9 +560,10 @@ void vtkNPRGBufferPass::RenderDepthOnly(const vtkRenderState* state, int width, 
     int origin[2];
     vtkNPRViewportOrigin(state, origin);
     vtkNPRCompositeState compositeState(glState);
-    compositeState.Apply();
+    compositeState.Apply(origin, width, height);
+    // Replaces what is there, as the delegate drawing here would have: nobody cleared it.
     glState->vtkglDisable(GL_BLEND);
-    glState->vtkglViewport(origin[0], origin[1], width, height);
+    glState->vtkglDepthFunc(GL_ALWAYS);
     this->ColorTexture->Activate();
     this->DepthTexture->Activate();
     copy->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());

@@ -64,8 +64,13 @@ void vtkNPRInkPass::Render(const vtkRenderState* state)
 
   // Half of the wireframe lies under the front faces: draw it twice the visible width.
   const double visibleWidth = this->GetEffectiveLineWidth(renderer);
-  // VTK reads GL_ALIASED_LINE_WIDTH_RANGE once per context.
-  const double widest = window->GetMaximumHardwareLineWidth();
+  if (this->WidestLine <= 0.0)
+  {
+    float range[2] = { 1.0f, 1.0f };
+    glGetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, range);
+    this->WidestLine = std::max(1.0f, range[1]);
+  }
+  const double widest = this->WidestLine;
   double drawnWidth = 2.0 * visibleWidth;
   if (drawnWidth > widest)
   {
@@ -104,19 +109,13 @@ void vtkNPRInkPass::Render(const vtkRenderState* state)
     this->DrawMode = DrawInk;
     glState->vtkglLineWidth(static_cast<float>(drawnWidth));
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    // Front faces culled underneath vtkOpenGLState's cache: each actor's property disables
-    // culling through the cache, which believes it is off and skips the call. A property that
-    // culls itself turns it back on through the cache, and the next one then off for real: its
-    // props are drawn unculled and the shader's discard keeps the result the same, slower.
-    glState->vtkglDisable(GL_CULL_FACE); // the cache must believe it is off
-    glCullFace(GL_FRONT);
-    glEnable(GL_CULL_FACE);
+    // Front faces are culled by SetShaderParameters(), after each actor's property has set its
+    // own culling; the shader's discard gives the same image without culling, slower.
+    this->InkDrawState = glState;
     this->DelegatePass->Render(&inkState);
-    glDisable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
-    glState->ResetGLCullFaceState();
-    glState->vtkglEnable(GL_CULL_FACE); // the cache and OpenGL agree again: off
-    glState->vtkglDisable(GL_CULL_FACE);
+    this->InkDrawState = nullptr;
+    glState->vtkglDisable(GL_CULL_FACE); // as a property without culling leaves it
+    glState->vtkglCullFace(GL_BACK);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     glState->vtkglLineWidth(1.0f);
   }
@@ -161,8 +160,14 @@ bool vtkNPRInkPass::PostReplaceShaderValues(
 }
 
 bool vtkNPRInkPass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
+  if (this->InkDrawState && vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    // The mapper draws right after this call, after its actor's property set its own culling.
+    this->InkDrawState->vtkglCullFace(GL_FRONT);
+    this->InkDrawState->vtkglEnable(GL_CULL_FACE);
+  }
   if (program->IsUniformUsed("nprInkMode"))
   {
     program->SetUniformi("nprInkMode", this->DrawMode);
@@ -179,6 +184,7 @@ bool vtkNPRInkPass::SetShaderParameters(
 
 void vtkNPRInkPass::ReleaseGraphicsResources(vtkWindow* window)
 {
+  this->WidestLine = 0.0; // the next context is asked again
   if (this->DelegatePass)
   {
     this->DelegatePass->ReleaseGraphicsResources(window);

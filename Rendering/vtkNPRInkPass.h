@@ -43,6 +43,8 @@
 
 class vtkRenderer;
 
+class vtkOpenGLState;
+
 class VTKRENDERINGNPR_EXPORT vtkNPRInkPass : public vtkOpenGLRenderPass
 {
 public:
@@ -118,6 +120,11 @@ protected:
   bool CoverageOnly = false;
   int DrawMode = DrawShaded;
   bool WarnedAboutWidth = false;
+  // GL_ALIASED_LINE_WIDTH_RANGE's upper end, read once per context (0: not read yet). Not VTK's
+  // cached GetMaximumHardwareLineWidth(): some windows (ParaView's X window on VTK 9.2) leave it 1.
+  double WidestLine = 0.0;
+  // While the back-face wireframe is drawn: the state through which front faces are culled.
+  vtkOpenGLState* InkDrawState = nullptr;
 
 private:
   vtkNPRInkPass(const vtkNPRInkPass&) = delete;

@@ -44,6 +44,7 @@ void vtkNPRViewportOrigin(const vtkRenderState* state, int origin[2])
 
 vtkNPRCompositeState::vtkNPRCompositeState(vtkOpenGLState* state)
   : State(state)
+  , Viewport(state)
   , DepthTest(state, GL_DEPTH_TEST)
   , Blend(state, GL_BLEND)
   , ScissorTest(state, GL_SCISSOR_TEST)
@@ -54,8 +55,9 @@ vtkNPRCompositeState::vtkNPRCompositeState(vtkOpenGLState* state)
 {
 }
 
-void vtkNPRCompositeState::Apply()
+void vtkNPRCompositeState::Apply(const int origin[2], int width, int height)
 {
+  this->State->vtkglViewport(origin[0], origin[1], width, height);
   this->State->vtkglEnable(GL_SCISSOR_TEST);
   this->State->vtkglEnable(GL_DEPTH_TEST);
   this->State->vtkglDepthFunc(GL_LEQUAL);

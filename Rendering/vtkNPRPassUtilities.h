@@ -23,16 +23,18 @@ bool vtkNPRRenderSelection(const vtkRenderState* state, int& renderedProps);
 void vtkNPRViewportOrigin(const vtkRenderState* state, int origin[2]);
 
 // The state a full-screen depth-sprite composite changes, restored when this goes out of scope.
-// Apply() sets what the composites need: depth test LEQUAL with depth writes (gl_FragDepth),
-// alpha blending of colour over what is there, scissor test on.
+// Apply() sets what the composites need: the viewport (callers such as ParaView's image-processing
+// slot call a pass with whatever viewport was last set), depth test LEQUAL with depth writes
+// (gl_FragDepth), alpha blending of colour over what is there, scissor test on.
 class vtkNPRCompositeState
 {
 public:
   explicit vtkNPRCompositeState(vtkOpenGLState* state);
-  void Apply();
+  void Apply(const int origin[2], int width, int height);
 
 private:
   vtkOpenGLState* State;
+  vtkOpenGLState::ScopedglViewport Viewport;
   vtkOpenGLState::ScopedglEnableDisable DepthTest;
   vtkOpenGLState::ScopedglEnableDisable Blend;
   vtkOpenGLState::ScopedglEnableDisable ScissorTest;

@@ -361,7 +361,7 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
   }
 
   vtkNPRCompositeState compositeState(glState);
-  compositeState.Apply();
+  compositeState.Apply(origin, width, height);
   if (this->Paper)
   {
     glState->vtkglScissor(origin[0], origin[1], width, height);

@@ -1,5 +1,6 @@
 #include "vtkNPRViewPass.h"
 
+#include "vtkCameraPass.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
 #include "vtkNPRPass.h"
@@ -19,11 +20,19 @@ vtkNPRViewPass::~vtkNPRViewPass()
   this->NPRPass->Delete();
 }
 
+bool vtkNPRViewPass::DelegateIsComposited() const
+{
+  // ParaView gives this pass a vtkCameraPass. Under IceT (vtkIceTSynchronizedRenderers) the camera
+  // pass's delegate is the vtkIceTCompositePass, which leaves the composited colour and depth.
+  auto* camera = vtkCameraPass::SafeDownCast(this->DelegatePass);
+  vtkRenderPass* inner = camera ? camera->GetDelegatePass() : this->DelegatePass;
+  return inner && inner->IsA("vtkIceTCompositePass");
+}
+
 void vtkNPRViewPass::Render(const vtkRenderState* state)
 {
   this->NumberOfRenderedProps = 0;
-  // vtkPVSynchronizedRenderer gives a vtkCameraPass in one process; IceT gives its composite pass.
-  const bool composited = this->DelegatePass && !this->DelegatePass->IsA("vtkCameraPass");
+  const bool composited = this->DelegateIsComposited();
   const bool depthOnly = this->DelegatePass && (composited || this->ForceDepthOnly);
   this->LastRenderWasDepthOnly = depthOnly;
   if (!depthOnly)

@@ -18,8 +18,8 @@
  *   image, INKED its silhouettes, SKETCH sketches the shaded image.
  *   Since the composited image has no seams, no line appears where ranks' pieces meet.
  *
- * Composited input is detected from the delegate (anything but a vtkCameraPass) unless
- * ForceDepthOnly is on.
+ * Composited input is detected from the delegate (a vtkCameraPass over a vtkIceTCompositePass);
+ * ForceDepthOnly makes a single process render the same way.
  *
  * @sa vtkPVNPRView vtkNPRPass vtkNPRGBufferPass
  */
@@ -64,6 +64,8 @@ public:
 protected:
   vtkNPRViewPass();
   ~vtkNPRViewPass() override;
+
+  bool DelegateIsComposited() const;
 
   vtkNPRPass* NPRPass;
   bool ForceDepthOnly = false;

@@ -152,8 +152,56 @@ else:
         print("%s: %.5f of the pixels differ from the serial depth-only image (dark %d vs %d)"
               % (style, differing, dark(img), dark(ref)))
         check(differing <= MPI_TOLERANCE, "%s under MPI matches the serial depth-only image" % style)
+        if style == "Edges":
+            edges_mpi, edges_serial = img, ref
     for style in ("Shaded", "Toon", "Inked"):
         render(style, False)
+
+    # Where the ranks' pieces of the contour meet on screen: the contour coloured flat by rank.
+    ranks_source = ProcessIdScalars(Input=contour)
+    camera = [list(view.CameraPosition), list(view.CameraFocalPoint), list(view.CameraViewUp),
+              view.CameraViewAngle]
+    for source in (box, cylinder, contour):
+        Hide(source, view)
+    ranks_display = Show(ranks_source, view)
+    # Show() may reset the camera: the border must be found in the edges images' view.
+    view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp, view.CameraViewAngle = camera
+    ColorBy(ranks_display, ("POINTS", "ProcessId"))
+    ranks_lut = GetColorTransferFunction("ProcessId")
+    ranks_lut.RGBPoints = [0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0]
+    ranks_lut.AutomaticRescaleRangeMode = "Never"
+    ranks_lut.RescaleTransferFunction(0.0, 1.0)
+    ranks_display.Ambient = 1.0
+    ranks_display.Diffuse = 0.0
+    ranks_display.Specular = 0.0
+    _, _, ranks_img = render("Shaded", False)
+    if pm.GetPartitionId() == 0:
+        import numpy as np
+        covered = ranks_img.sum(axis=2) < 700
+        rank = ranks_img[..., 0] > ranks_img[..., 2]
+        border = np.zeros(covered.shape, bool)
+        for axis in (0, 1):
+            a = [slice(None)] * 2
+            b = [slice(None)] * 2
+            a[axis], b[axis] = slice(1, None), slice(None, -1)
+            meet = covered[tuple(a)] & covered[tuple(b)] & (rank[tuple(a)] != rank[tuple(b)])
+            border[tuple(a)] |= meet
+            border[tuple(b)] |= meet
+
+        def grow(mask, r):
+            out = mask.copy()
+            for dy in range(-r, r + 1):
+                for dx in range(-r, r + 1):
+                    out |= np.roll(np.roll(mask, dy, axis=0), dx, axis=1)
+            return out
+        near_border = grow(border, 3)
+        line_mpi = edges_mpi.sum(axis=2) < 150
+        line_serial = grow(edges_serial.sum(axis=2) < 150, 1)
+        extra = int((line_mpi & ~line_serial & near_border).sum())
+        print("rank border: %d pixels; line pixels within 3 px of it: %d under MPI, %d of them "
+              "not on a serial line" % (int(border.sum()), int((line_mpi & near_border).sum()), extra))
+        check(border.sum() > 100, "the ranks' pieces meet in the view (%d border pixels)" % border.sum())
+        check(extra <= 0.02 * border.sum(), "no lines along the border between the ranks' pieces")
 
 if failures:
     raise RuntimeError("FAIL: " + "; ".join(failures))
