@@ -10,11 +10,13 @@ composited depth and must match the serial depth-only baselines within MPI_TOLER
 """
 import argparse
 import os
+import sys
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
-from vtkmodules.vtkIOImage import vtkPNGReader
-from vtkmodules.util.numpy_support import vtk_to_numpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from nprviewscene import SIZE, STYLES, create_scene, dark, read_png  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("--plugin", required=True)
@@ -25,7 +27,6 @@ ap.add_argument("--make-baselines", action="store_true")
 args = ap.parse_args()
 os.makedirs(args.output_dir, exist_ok=True)
 
-SIZE = [400, 300]
 # Regression threshold of vtkTesting (as VTK's image tests) for baselines made on Mesa llvmpipe.
 THRESHOLD = 10
 # The parallel images against the serial depth-only ones: at most this fraction of pixels may
@@ -39,40 +40,10 @@ ranks = pm.GetNumberOfLocalPartitions()
 if args.mpi and ranks < 2:
     raise RuntimeError("--mpi given but running on %d rank(s)" % ranks)
 
-view = CreateView("NPRRenderView")
-view.ViewSize = SIZE
-view.OrientationAxesVisibility = 0
-if hasattr(view, "UseColorPaletteForBackground"):
-    view.UseColorPaletteForBackground = 0
-view.Background = [1.0, 1.0, 1.0]
+view, sources = create_scene()
+box, cylinder, contour = sources["box"], sources["cylinder"], sources["contour"]
 
-# CAD-like parts and a scientific dataset (split between ranks under MPI).
-box = Box(XLength=26, YLength=2, ZLength=22, Center=[0, -12, 0])
-cylinder = Cylinder(Resolution=48, Radius=2.5, Height=12, Center=[-14, -5, 6])
-wavelet = Wavelet()
-contour = Contour(Input=wavelet, ContourBy=["POINTS", "RTData"], Isosurfaces=[157.0])
-for source, colour in ((box, [0.8, 0.8, 0.85]), (cylinder, [0.9, 0.7, 0.4]), (contour, [0.5, 0.7, 0.9])):
-    display = Show(source, view)
-    ColorBy(display, ("POINTS", None))
-    display.DiffuseColor = colour
-    display.AmbientColor = colour
-view.CameraPosition = [18, 14, 30]
-view.CameraFocalPoint = [-1, -1, 0]
-view.CameraViewUp = [0, 1, 0]
-view.CameraViewAngle = 30
-view.ResetCamera()
-
-STYLES = ["Shaded", "Edges", "Toon", "Toon+Edges", "Sketch", "Inked"]
 LINE_STYLES = ["Edges", "Toon+Edges", "Sketch"]
-
-
-def read_png(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[..., :3].astype(int)
 
 
 def render(style, depth_only):
@@ -107,10 +78,6 @@ def compare_baseline(name, path):
         testing.AddArgument(a)
     check(testing.RegressionTest(path, THRESHOLD) == vtkTesting.PASSED,
           "%s matches its baseline" % name)
-
-
-def dark(img):
-    return int((img.sum(axis=2) < 150).sum())
 
 
 if not args.mpi:
