@@ -5,7 +5,9 @@
 #include "vtkNPRGBufferPass.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRSketchPass.h"
+#include "vtkNPRToonPass.h"
 #include "vtkObjectFactory.h"
+#include "vtkPVDefaultPass.h"
 #include "vtkRenderState.h"
 
 vtkStandardNewMacro(vtkNPRViewPass);
@@ -13,10 +15,15 @@ vtkStandardNewMacro(vtkNPRViewPass);
 vtkNPRViewPass::vtkNPRViewPass()
 {
   this->NPRPass = vtkNPRPass::New();
+  this->RankToonPass = vtkNPRToonPass::New();
+  vtkPVDefaultPass* rankScene = vtkPVDefaultPass::New();
+  this->RankToonPass->SetDelegatePass(rankScene);
+  rankScene->Delete();
 }
 
 vtkNPRViewPass::~vtkNPRViewPass()
 {
+  this->RankToonPass->Delete();
   this->NPRPass->Delete();
 }
 
@@ -29,8 +36,23 @@ bool vtkNPRViewPass::DelegateIsComposited() const
   return inner && inner->IsA("vtkIceTCompositePass");
 }
 
+vtkRenderPass* vtkNPRViewPass::GetSceneRenderPass()
+{
+  const int style = this->NPRPass->GetStyle();
+  const bool toon = style == vtkNPRPass::TOON || style == vtkNPRPass::TOON_EDGES ||
+    (style == vtkNPRPass::SKETCH && this->NPRPass->GetSketchToonShading());
+  return toon ? this->RankToonPass : nullptr;
+}
+
 void vtkNPRViewPass::Render(const vtkRenderState* state)
 {
+  // The per-rank toon pass shades as the façade's does.
+  vtkNPRToonPass* toon = this->NPRPass->GetToonPass();
+  this->RankToonPass->SetNumberOfBands(toon->GetNumberOfBands());
+  this->RankToonPass->SetSpecular(toon->GetSpecular());
+  this->RankToonPass->SetPerVertex(toon->GetPerVertex());
+  this->RankToonPass->SetTable(toon->GetTable());
+
   this->NumberOfRenderedProps = 0;
   const bool composited = this->DelegateIsComposited();
   const bool depthOnly = this->DelegatePass && (composited || this->ForceDepthOnly);
@@ -56,7 +78,7 @@ void vtkNPRViewPass::Render(const vtkRenderState* state)
     case vtkNPRPass::SKETCH:
       effect = this->NPRPass->GetSketchPass();
       break;
-    default: // SHADED, TOON: the image as composited
+    default: // SHADED, TOON: the image as composited (toon shaded by GetSceneRenderPass())
       break;
   }
   if (!effect)
@@ -90,6 +112,7 @@ void vtkNPRViewPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Superclass::ReleaseGraphicsResources(window);
   this->NPRPass->ReleaseGraphicsResources(window);
+  this->RankToonPass->ReleaseGraphicsResources(window);
 }
 
 void vtkNPRViewPass::PrintSelf(ostream& os, vtkIndent indent)

@@ -13,9 +13,10 @@
  *   No normals or ids exist for the composited image, so the vtkNPRPass's G-buffer pass is put
  *   in depth-only mode (vtkNPRGBufferPass::SetDepthOnly): it draws the delegate and derives
  *   view depth and normals from the depth buffer. Silhouettes come from depth as before,
- *   creases from the reconstructed normals, contours (object ids) fall back to coverage, and
- *   toon bands and the inked wireframe cannot be applied to an image: TOON shows the shaded
- *   image, INKED its silhouettes, SKETCH sketches the shaded image.
+ *   creases from the reconstructed normals, and contours (object ids) are not drawn. Toon
+ *   shading is per fragment, so it is applied inside IceT, to each rank's piece, by the pass
+ *   GetSceneRenderPass() returns (the view makes it vtkPVSynchronizedRenderer's render pass).
+ *   The inked wireframe cannot be applied to an image: INKED draws the depth lines instead.
  *   Since the composited image has no seams, no line appears where ranks' pieces meet.
  *
  * Composited input is detected from the delegate (a vtkCameraPass over a vtkIceTCompositePass);
@@ -30,6 +31,7 @@
 #include "vtkNPRViewsModule.h" // for export macro
 
 class vtkNPRPass;
+class vtkNPRToonPass;
 
 class VTKNPRVIEWS_EXPORT vtkNPRViewPass : public vtkImageProcessingPass
 {
@@ -45,6 +47,13 @@ public:
    * The façade whose style and passes this pass renders with.
    */
   vtkGetObjectMacro(NPRPass, vtkNPRPass);
+
+  /**
+   * The pass that should render each rank's piece of the scene for the current style (a toon
+   * pass over vtkPVDefaultPass for the toon styles), or nullptr for ParaView's default. It
+   * shades as the façade's toon pass does.
+   */
+  vtkRenderPass* GetSceneRenderPass();
 
   ///@{
   /**
@@ -68,6 +77,7 @@ protected:
   bool DelegateIsComposited() const;
 
   vtkNPRPass* NPRPass;
+  vtkNPRToonPass* RankToonPass;
   bool ForceDepthOnly = false;
   bool LastRenderWasDepthOnly = false;
 

@@ -41,10 +41,23 @@ vtkNPRViewPass* vtkPVNPRView::GetNPRViewPass()
 void vtkPVNPRView::SetStyle(int style)
 {
   this->NPRViewPass->GetNPRPass()->SetStyle(style);
+  this->UpdateSceneRenderPass();
 }
 void vtkPVNPRView::SetSketchToonShading(bool on)
 {
   this->NPRViewPass->GetNPRPass()->SetSketchToonShading(on);
+  this->UpdateSceneRenderPass();
+}
+
+void vtkPVNPRView::UpdateSceneRenderPass()
+{
+  // Under IceT this pass renders each rank's piece before compositing; in one process the view
+  // pass renders the scene itself and uses it only with ForceDepthOnly.
+  vtkRenderPass* pass = this->NPRViewPass->GetSceneRenderPass();
+  if (this->SynchronizedRenderers->GetRenderPass() != pass)
+  {
+    this->SynchronizedRenderers->SetRenderPass(pass);
+  }
 }
 vtkPVNPRViewForward(Silhouettes, bool, GetEdgePass(), SetSilhouettes)
 vtkPVNPRViewForward(SilhouetteThreshold, double, GetEdgePass(), SetSilhouetteThreshold)

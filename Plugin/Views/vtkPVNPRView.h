@@ -9,7 +9,8 @@
  * vtkNPRInkPass), whose documentation gives the details.
  *
  * In one process the view draws the full G-buffer; under MPI the lines come from the composited
- * depth (see vtkNPRViewPass).
+ * depth, and the toon styles shade each rank's piece before compositing through the
+ * synchronized renderers' render pass (see vtkNPRViewPass).
  *
  * @sa vtkNPRViewPass vtkNPRPass
  */
@@ -97,6 +98,9 @@ public:
 protected:
   vtkPVNPRView();
   ~vtkPVNPRView() override;
+
+  // Gives the synchronized renderers the scene render pass the style needs.
+  void UpdateSceneRenderPass();
 
   vtkNew<vtkNPRViewPass> NPRViewPass;
 
