@@ -320,18 +320,18 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
     return; // a picking render: no G-buffer
   }
 
+  int width = 0, height = 0;
+  if (state->GetFrameBuffer())
+  {
+    state->GetFrameBuffer()->GetLastSize(width, height);
+  }
+  else
+  {
+    int x, y;
+    renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  }
   if (this->DepthOnly)
   {
-    int width = 0, height = 0;
-    if (state->GetFrameBuffer())
-    {
-      state->GetFrameBuffer()->GetLastSize(width, height);
-    }
-    else
-    {
-      int x, y;
-      renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-    }
     this->RenderDepthOnly(state, width, height);
     return;
   }
@@ -363,16 +363,6 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   }
 
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  int width = 0, height = 0;
-  if (state->GetFrameBuffer())
-  {
-    state->GetFrameBuffer()->GetLastSize(width, height);
-  }
-  else
-  {
-    int x, y;
-    renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-  }
   if (width < 1 || height < 1)
   {
     this->HasContent = false;

@@ -27,10 +27,10 @@
  * Both draws go through the same shader (the ink is a uniform switch), so alternating them costs
  * no shader rebuild. OpenGL's polygon mode and offset are not tracked by vtkOpenGLState in VTK
  * 9.1; this pass sets them directly and restores the defaults (fill, offset off) after each draw.
- * Front faces are culled during the wireframe draw beneath vtkOpenGLState's cache (each actor's
- * property would otherwise switch culling off); the fragment shader also discards front faces,
- * so props whose property culls faces itself get the same ink, only without the saving. Culling
- * halves the wireframe's cost: the 1.2M-triangle bunny at 1920x1080 took 3.2x the shaded frame
+ * Front faces are culled during the wireframe draw, through vtkOpenGLState, from
+ * SetShaderParameters(): each actor's property sets its own culling before its mapper draws, and
+ * this hook runs after it. The fragment shader also discards front faces. Culling halves the
+ * wireframe's cost: the 1.2M-triangle bunny at 1920x1080 took 3.2x the shaded frame
  * with it and 4.9x without (llvmpipe, 2 cores).
  *
  * @sa vtkNPRPass vtkNPREdgePass

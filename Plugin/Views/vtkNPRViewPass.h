@@ -13,8 +13,9 @@
  *   No normals or ids exist for the composited image, so the vtkNPRPass's G-buffer pass is put
  *   in depth-only mode (vtkNPRGBufferPass::SetDepthOnly): it draws the delegate and derives
  *   view depth and normals from the depth buffer. Silhouettes come from depth as before,
- *   creases from the reconstructed normals, and contours (object ids) are not drawn. Toon
- *   shading is per fragment, so it is applied inside IceT, to each rank's piece, by the pass
+ *   creases from the reconstructed normals, and contours fall back to coverage (the outline
+ *   against the background; no object ids separate touching objects). Toon shading is per
+ *   fragment, so it is applied inside IceT, to each rank's piece, by the pass
  *   GetSceneRenderPass() returns (the view makes it vtkPVSynchronizedRenderer's render pass).
  *   The inked wireframe cannot be applied to an image: INKED draws the depth lines instead.
  *   Since the composited image has no seams, no line appears where ranks' pieces meet.
