@@ -13,7 +13,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkNPROpenGL.h"
 
 #include "vtkNPREdgeCompositeFS.h"
 #include "vtkNPREdgeDetectFS.h"

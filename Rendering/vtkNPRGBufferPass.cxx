@@ -19,7 +19,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkNPROpenGL.h"
 
 #include "vtkNPRCopyFS.h"
 #include "vtkNPRDepthGeometryFS.h"
@@ -576,10 +576,8 @@ bool vtkNPRGBufferPass::PreReplaceShaderValues(
   {
     // A tag of our own right after lighting, where the normal and position are in scope; filled
     // in after VTK's own replacements (PostReplaceShaderValues) when we know what the shader has.
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
-      "//VTK::Light::Impl\n  //NPR::GBuffer::Impl\n", false);
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
-      "//VTK::Output::Dec\n//NPR::GBuffer::Dec\n", false);
+    vtkNPRInsertAfterShaderTag(fragmentShader, "//VTK::Light::Impl", "//NPR::GBuffer::Impl", this, "fragment");
+    vtkNPRInsertAfterShaderTag(fragmentShader, "//VTK::Output::Dec", "//NPR::GBuffer::Dec", this, "fragment");
   }
   return true;
 }

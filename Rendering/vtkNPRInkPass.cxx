@@ -10,7 +10,7 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
-#include "vtk_glew.h"
+#include "vtkNPROpenGL.h"
 
 #include "vtkNPRInkDecl.h"
 #include "vtkNPRInkImpl.h"
@@ -140,10 +140,8 @@ bool vtkNPRInkPass::PreReplaceShaderValues(
   if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
   {
     // After texturing: the colour is final there.
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::TCoord::Impl",
-      "//VTK::TCoord::Impl\n  //NPR::Ink::Impl\n", false);
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
-      "//VTK::Output::Dec\n//NPR::Ink::Dec\n", false);
+    vtkNPRInsertAfterShaderTag(fragmentShader, "//VTK::TCoord::Impl", "//NPR::Ink::Impl", this, "fragment");
+    vtkNPRInsertAfterShaderTag(fragmentShader, "//VTK::Output::Dec", "//NPR::Ink::Dec", this, "fragment");
   }
   return true;
 }

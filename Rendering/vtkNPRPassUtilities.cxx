@@ -1,13 +1,17 @@
 #include "vtkNPRPassUtilities.h"
 
 #include "vtkHardwareSelector.h"
+#include "vtkObject.h"
+#include "vtkShaderProgram.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkRenderWindow.h"
-#include "vtk_glew.h"
+#include "vtkNPROpenGL.h"
 
 #include <algorithm>
+#include <mutex>
+#include <set>
 
 double vtkNPRWindowScale(vtkRenderer* renderer)
 {
@@ -18,6 +22,29 @@ double vtkNPRWindowScale(vtkRenderer* renderer)
   vtkWindow* window = renderer->GetRenderWindow();
   return std::max(1, window->GetDPI()) / 72.0 *
     std::max(1, std::max(window->GetTileScale()[0], window->GetTileScale()[1]));
+}
+
+bool vtkNPRInsertAfterShaderTag(
+  std::string& source, const char* vtkTag, const char* tag, vtkObject* pass, const char* stage)
+{
+  if (vtkShaderProgram::Substitute(source, vtkTag, std::string(vtkTag) + "\n  " + tag + "\n", false))
+  {
+    return true;
+  }
+  if (source.find("//VTK::Color::Impl") != std::string::npos)
+  {
+    static std::mutex mutex;
+    static std::set<std::string> reported;
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (reported.insert(std::string(pass->GetClassName()) + vtkTag).second)
+    {
+      vtkErrorWithObjectMacro(pass, << "the " << stage << " shader has no " << vtkTag
+                                    << " tag: this VTK release changed its poly-data shader "
+                                       "templates, so "
+                                    << pass->GetClassName() << " cannot add its effect");
+    }
+  }
+  return false;
 }
 
 bool vtkNPRRenderSelection(const vtkRenderState* state, int& renderedProps)

@@ -4,6 +4,9 @@
 
 #include "vtkOpenGLState.h" // for the scoped state savers
 
+#include <string> // for std::string
+
+class vtkObject;
 class vtkRenderState;
 class vtkRenderer;
 
@@ -21,6 +24,14 @@ bool vtkNPRRenderSelection(const vtkRenderState* state, int& renderedProps);
 // Where the renderer's viewport starts in the framebuffer being drawn (0, 0 in a pass's own
 // framebuffer object).
 void vtkNPRViewportOrigin(const vtkRenderState* state, int origin[2]);
+
+// Puts `tag` (one of ours) on the line after VTK's shader template tag `vtkTag` in `source`.
+// The passes hook into VTK's poly-data shaders this way, and those templates change between VTK
+// releases: a VTK poly-data shader (one with //VTK::Color::Impl) that lacks `vtkTag` is reported
+// as an error by `pass` (once per pass class and tag) instead of drawing silently without the
+// effect. Returns whether the tag was inserted.
+bool vtkNPRInsertAfterShaderTag(
+  std::string& source, const char* vtkTag, const char* tag, vtkObject* pass, const char* stage);
 
 // The state a full-screen depth-sprite composite changes, restored when this goes out of scope.
 // Apply() sets what the composites need: the viewport (callers such as ParaView's image-processing

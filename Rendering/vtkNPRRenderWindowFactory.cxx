@@ -1,10 +1,25 @@
 #include "vtkNPRRenderWindowFactory.h"
 
-#include "vtkNPREGLRenderWindow.h"
-#include "vtkNPROSMesaRenderWindow.h"
+#include "vtkNPRConfigure.h"
 #include "vtkObjectFactory.h"
 #include "vtkRenderWindow.h"
 #include "vtkSmartPointer.h"
+
+#if NPR_HAS_OWN_HEADLESS_WINDOWS // VTK 9.1 to 9.3: X-only builds, the module's own windows
+#include "vtkNPREGLRenderWindow.h"
+#include "vtkNPROSMesaRenderWindow.h"
+#else // VTK 9.4 and later: VTK's own headless windows
+#include "vtkCommand.h"
+#include "vtkEGLRenderWindow.h"
+#include "vtkNew.h"
+#if NPR_HAS_OSMESA
+#include "vtkOSOpenGLRenderWindow.h"
+#endif
+#include "vtkRenderingOpenGLConfigure.h" // VTK_USE_X
+#ifdef VTK_USE_X
+#include "vtkXOpenGLRenderWindow.h"
+#endif
+#endif
 
 #include <X11/Xlib.h>
 
@@ -45,6 +60,68 @@ bool OpenXDisplay(const std::string& name)
   }
   return connection != nullptr;
 }
+
+#if !NPR_HAS_OWN_HEADLESS_WINDOWS
+// Collects what a VTK window reports while it creates its context, for the factory's message.
+class MessageCollector : public vtkCommand
+{
+public:
+  static MessageCollector* New() { return new MessageCollector; }
+  void Execute(vtkObject*, unsigned long, void* callData) override
+  {
+    const char* text = static_cast<const char*>(callData);
+    if (text && *text)
+    {
+      // VTK's text is "Warning: In FILE, line N\nCLASS (ADDRESS): message": keep the message.
+      std::string line(text);
+      line.erase(line.find_last_not_of(" \n") + 1);
+      const size_t object = line.find("): ", line.rfind('\n') == std::string::npos ? 0 : line.rfind('\n'));
+      if (object != std::string::npos)
+      {
+        line.erase(0, object + 3);
+      }
+      this->Messages += (this->Messages.empty() ? "" : "; ") + line;
+    }
+  }
+  std::string Messages;
+};
+
+// VTK's EGL or OSMesa window with its context created now; nullptr and the reason when that fails.
+vtkSmartPointer<vtkRenderWindow> CreateVTKHeadlessWindow(const std::string& name, std::string& why)
+{
+  vtkSmartPointer<vtkOpenGLRenderWindow> window;
+  if (name == "egl")
+  {
+    window = vtkSmartPointer<vtkEGLRenderWindow>::New();
+  }
+#if NPR_HAS_OSMESA
+  else
+  {
+    window = vtkSmartPointer<vtkOSOpenGLRenderWindow>::New();
+  }
+#endif
+  vtkNew<MessageCollector> messages;
+  window->AddObserver(vtkCommand::ErrorEvent, messages);
+  window->AddObserver(vtkCommand::WarningEvent, messages);
+  window->SetShowWindow(false);
+  window->SetSize(64, 64); // a small first surface; callers set the real size
+  window->Initialize();
+  int major = 0, minor = 0;
+  if (window->GetGenericContext())
+  {
+    window->GetOpenGLVersion(major, minor); // 0.0 when VTK could not load OpenGL
+  }
+  window->RemoveObservers(vtkCommand::ErrorEvent);
+  window->RemoveObservers(vtkCommand::WarningEvent);
+  if (major * 10 + minor < 32)
+  {
+    why = std::string(window->GetClassName()) + " could not create an OpenGL 3.2 context" +
+      (messages->Messages.empty() ? std::string() : " (" + messages->Messages + ")");
+    return nullptr;
+  }
+  return window;
+}
+#endif
 }
 
 void vtkNPRRenderWindowFactory::PrintSelf(ostream& os, vtkIndent indent)
@@ -66,13 +143,27 @@ const char* vtkNPRRenderWindowFactory::GetDefaultBackend()
   {
     return requested;
   }
+#if NPR_HAS_OWN_HEADLESS_WINDOWS && NPR_HAS_OSMESA
   return vtkNPROSMesaRenderWindow::IsLinkedWithOSMesa() ? "osmesa" : "egl";
+#else
+  return "egl";
+#endif
 }
 
 vtkRenderWindow* vtkNPRRenderWindowFactory::CreateRenderWindow(const char* backend)
 {
   const std::string name = (backend && *backend) ? backend : GetDefaultBackend();
   vtkSmartPointer<vtkRenderWindow> window;
+#if !NPR_HAS_OSMESA
+  if (name == "osmesa")
+  {
+    vtkGenericWarningMacro(<< "no osmesa render window: the osmesa backend is not available in "
+                              "this build (libOSMesa was not found when vtkNPR was configured; "
+                              "Mesa 25.1 and later ship none): use egl");
+    return nullptr;
+  }
+#endif
+#if NPR_HAS_OWN_HEADLESS_WINDOWS
   if (name == "egl" || name == "osmesa")
   {
     vtkSmartPointer<vtkNPRHeadlessRenderWindow> headless;
@@ -91,6 +182,18 @@ vtkRenderWindow* vtkNPRRenderWindowFactory::CreateRenderWindow(const char* backe
     }
     window = headless;
   }
+#else
+  if (name == "egl" || name == "osmesa")
+  {
+    std::string why;
+    window = CreateVTKHeadlessWindow(name, why);
+    if (!window)
+    {
+      vtkGenericWarningMacro(<< "no " << name << " render window: " << why);
+      return nullptr;
+    }
+  }
+#endif
   else if (name == "x")
   {
     const char* display = std::getenv("DISPLAY");
@@ -107,7 +210,15 @@ vtkRenderWindow* vtkNPRRenderWindowFactory::CreateRenderWindow(const char* backe
                              << "'");
       return nullptr;
     }
+#if NPR_HAS_OWN_HEADLESS_WINDOWS
     window = vtkSmartPointer<vtkRenderWindow>::New(); // VTK's own X window
+#elif defined(VTK_USE_X)
+    // vtkRenderWindow::New() picks a window at run time since VTK 9.4: ask for X itself.
+    window = vtkSmartPointer<vtkXOpenGLRenderWindow>::New();
+#else
+    vtkGenericWarningMacro(<< "no x render window: this VTK was built without X");
+    return nullptr;
+#endif
     window->SetOffScreenRendering(1);
   }
   else
@@ -123,24 +234,40 @@ vtkRenderWindow* vtkNPRRenderWindowFactory::CreateRenderWindow(const char* backe
 
 const char* vtkNPRRenderWindowFactory::GetBackendName(vtkRenderWindow* window)
 {
+#if NPR_HAS_OWN_HEADLESS_WINDOWS
   if (auto* headless = vtkNPRHeadlessRenderWindow::SafeDownCast(window))
   {
     return headless->GetBackendName();
   }
-  if (window && std::strcmp(window->GetClassName(), "vtkXOpenGLRenderWindow") == 0)
+#endif
+  if (window)
   {
-    return "x";
+    const std::string name = window->GetClassName();
+    if (name == "vtkXOpenGLRenderWindow")
+    {
+      return "x";
+    }
+    if (name == "vtkEGLRenderWindow")
+    {
+      return "egl";
+    }
+    if (name == "vtkOSOpenGLRenderWindow")
+    {
+      return "osmesa";
+    }
   }
   return "unknown";
 }
 
 const char* vtkNPRRenderWindowFactory::GetGLRenderer(vtkRenderWindow* window)
 {
+#if NPR_HAS_OWN_HEADLESS_WINDOWS
   if (auto* headless = vtkNPRHeadlessRenderWindow::SafeDownCast(window))
   {
     headless->InitializeContext();
     return headless->GetGLRenderer();
   }
+#endif
   if (!window)
   {
     return "";

@@ -18,7 +18,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkNPROpenGL.h"
 
 #include "vtkNPRLineColor.h"
 #include "vtkNPRWindowDepth.h"

@@ -17,7 +17,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkTransform.h"
-#include "vtk_glew.h"
+#include "vtkNPROpenGL.h"
 
 #include "vtkNPRToonDecl.h"
 #include "vtkNPRToonImpl.h"
@@ -265,10 +265,8 @@ bool vtkNPRToonPass::PreReplaceShaderValues(
   if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
   {
     // Tags of our own right after VTK's lighting, filled in once VTK's code is in place.
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
-      "//VTK::Light::Impl\n  //NPR::Toon::Impl\n", false);
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
-      "//VTK::Output::Dec\n//NPR::Toon::Dec\n", false);
+    vtkNPRInsertAfterShaderTag(fragmentShader, "//VTK::Light::Impl", "//NPR::Toon::Impl", this, "fragment");
+    vtkNPRInsertAfterShaderTag(fragmentShader, "//VTK::Output::Dec", "//NPR::Toon::Dec", this, "fragment");
   }
   return true;
 }

@@ -9,7 +9,10 @@ set(CMAKE_POSITION_INDEPENDENT_CODE ON)
 # find_package(ParaView) does not look up itself.
 find_package(Python3 REQUIRED COMPONENTS Interpreter Development)
 find_package(ParaView 5.11 REQUIRED COMPONENTS RemotingViews)
-find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
+include("${CMAKE_CURRENT_LIST_DIR}/vtkNPRPlatform.cmake")
+if (NPR_OWN_HEADLESS_WINDOWS)
+  find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
+endif ()
 paraview_plugin_scan(
   PLUGIN_FILES      "${CMAKE_CURRENT_SOURCE_DIR}/Plugin/paraview.plugin"
   PROVIDES_PLUGINS  npr_plugins

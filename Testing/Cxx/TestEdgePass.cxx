@@ -10,7 +10,14 @@
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkVersionMacros.h"
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
+#include "vtkCompositePolyDataMapper.h" // VTK 9.3 replaced Mapper2 with it (removed in 9.5)
+using nprCompositeMapper = vtkCompositePolyDataMapper;
+#else
 #include "vtkCompositePolyDataMapper2.h"
+using nprCompositeMapper = vtkCompositePolyDataMapper2;
+#endif
 #include "vtkConeSource.h"
 #include "vtkCubeSource.h"
 #include "vtkElevationFilter.h"
@@ -931,7 +938,7 @@ int ActorKinds()
         moved->Update();
         blocks->SetBlock(0, left);
         blocks->SetBlock(1, moved->GetOutput());
-        vtkNew<vtkCompositePolyDataMapper2> mapper;
+        vtkNew<nprCompositeMapper> mapper;
         mapper->SetInputDataObject(blocks);
         auto actor = vtkSmartPointer<vtkActor>::New();
         actor->SetMapper(mapper);

@@ -8,6 +8,7 @@
 //   egl-failure        run with no usable EGL vendor: clear error, no crash
 //   osmesa-unlinked    OSMesa in a program not linked with NPR::OSMesa: clear error
 //   osmesa-link-order  OSMesa with libOpenGL linked before libOSMesa: clear error
+//   osmesa-unavailable a build without OSMesa (Mesa 25.1 and later): clear error
 //   x-no-display       X backend without DISPLAY: clear error
 //   unknown-backend    an unknown backend name: clear error
 #include "nprTesting.h"
@@ -16,11 +17,15 @@
 #include "vtkCamera.h"
 #include "vtkConeSource.h"
 #include "vtkImageData.h"
+#include "vtkNPRConfigure.h"
+#include "vtkNPRRenderWindowFactory.h"
+#include "vtkNew.h"
+#include "vtkStringOutputWindow.h"
+#if NPR_HAS_OWN_HEADLESS_WINDOWS
 #include "vtkNPREGLRenderWindow.h"
 #include "vtkNPRHeadlessRenderWindow.h"
 #include "vtkNPROSMesaRenderWindow.h"
-#include "vtkNPRRenderWindowFactory.h"
-#include "vtkNew.h"
+#endif
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -109,6 +114,7 @@ void CheckContext(vtkRenderWindow* window, const char* backend)
   const std::string renderer = vtkNPRRenderWindowFactory::GetGLRenderer(window);
   std::cout << backend << " renderer: " << renderer << "\n";
   NPR_CHECK(!renderer.empty(), "empty GL_RENDERER");
+#if NPR_HAS_OWN_HEADLESS_WINDOWS
   if (auto* egl = vtkNPREGLRenderWindow::SafeDownCast(window))
   {
     const std::string device = egl->GetDeviceDescription();
@@ -127,6 +133,7 @@ void CheckContext(vtkRenderWindow* window, const char* backend)
         "NPR_EGL_SOFTWARE=1 but the renderer is " << renderer);
     }
   }
+#endif
 }
 
 void TestRender(const char* backend)
@@ -191,8 +198,25 @@ void TestWindows(const char* backend)
   CheckRendered(b, colors[2], "window B after A was released");
 }
 
-// A backend that cannot work: the factory says so (nullptr) and a window made directly renders
-// nothing, reports why, and does not crash.
+// A backend that cannot work: the factory returns nullptr and its warning names the reason.
+void TestFactoryRefuses(const char* backend, const char* reason)
+{
+  vtkNew<vtkStringOutputWindow> capture;
+  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
+  vtkOutputWindow::SetInstance(capture);
+  vtkSmartPointer<vtkRenderWindow> made = nprCreateTestWindow(64, 64, backend);
+  vtkOutputWindow::SetInstance(previous);
+  NPR_CHECK(!made, "the factory made a " << backend << " window that cannot work");
+  const std::string said = capture->GetOutput();
+  std::cout << backend << " factory said: " << said << "\n";
+  NPR_CHECK(said.find(std::string("no ") + backend + " render window") != std::string::npos &&
+      said.find(reason) != std::string::npos,
+    "the factory's warning does not say 'no " << backend << " render window' and '" << reason
+                                               << "'");
+}
+
+#if NPR_HAS_OWN_HEADLESS_WINDOWS
+// The module's own window made directly renders nothing, reports why, and does not crash.
 void TestUnavailable(vtkNPRHeadlessRenderWindow* window, const char* backend, const char* reason)
 {
   vtkSmartPointer<vtkRenderWindow> made = nprCreateTestWindow(64, 64, backend);
@@ -208,6 +232,7 @@ void TestUnavailable(vtkNPRHeadlessRenderWindow* window, const char* backend, co
   NPR_CHECK(error.find(reason) != std::string::npos,
     "error '" << error << "' does not mention '" << reason << "'");
 }
+#endif
 }
 
 int main(int argc, char* argv[])
@@ -224,9 +249,20 @@ int main(int argc, char* argv[])
   }
   else if (mode == "egl-failure")
   {
+#if NPR_HAS_OWN_HEADLESS_WINDOWS
+    TestFactoryRefuses("egl", "no EGL display");
     vtkNew<vtkNPREGLRenderWindow> window;
     TestUnavailable(window, "egl", "no EGL display");
+#else
+    TestFactoryRefuses("egl", "vtkEGLRenderWindow could not create an OpenGL 3.2 context");
+#endif
   }
+  else if (mode == "osmesa-unavailable")
+  {
+    NPR_CHECK(!NPR_HAS_OSMESA, "this build has the osmesa backend");
+    TestFactoryRefuses("osmesa", "not available in this build");
+  }
+#if NPR_HAS_OWN_HEADLESS_WINDOWS
   else if (mode == "osmesa-unlinked")
   {
     NPR_CHECK(!vtkNPROSMesaRenderWindow::IsLinkedWithOSMesa(), "OSMesa reported linked");
@@ -238,6 +274,7 @@ int main(int argc, char* argv[])
     vtkNew<vtkNPROSMesaRenderWindow> window;
     TestUnavailable(window, "osmesa", "link order");
   }
+#endif
   else if (mode == "x-no-display")
   {
     unsetenv("DISPLAY");
@@ -254,7 +291,8 @@ int main(int argc, char* argv[])
   else
   {
     std::cerr << "usage: TestHeadlessWindows render|windows BACKEND | egl-failure | "
-                 "osmesa-unlinked | osmesa-link-order | x-no-display | unknown-backend\n";
+                 "osmesa-unlinked | osmesa-link-order | osmesa-unavailable | x-no-display | "
+                 "unknown-backend\n";
     return 2;
   }
   return nprTestResult();

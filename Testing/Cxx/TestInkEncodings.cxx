@@ -22,7 +22,7 @@
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkNPROpenGL.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,152 @@
+#!/usr/bin/env bash
+# Debian chroots in which vtkNPR is built and tested against other VTK and ParaView releases.
+#
+#   bash Utilities/debian-chroot.sh NAME setup            # create it, install what is missing
+#   bash Utilities/debian-chroot.sh NAME run 'command'    # setup, then run 'command' in /src
+#   bash Utilities/debian-chroot.sh NAME refresh          # apt-get update + upgrade (on request)
+#   bash Utilities/debian-chroot.sh list                  # the chroots and what they hold
+#
+# NAME               Debian    what it holds
+# trixie-vtk         13        VTK 9.3 (libvtk9-dev, python3-vtk9), OSMesa
+# trixie-paraview    13        ParaView 5.13 (bundles VTK 9.3.1; conflicts with python3-vtk9)
+# bookworm-paraview  12        ParaView 5.11 (bundles VTK 9.2; conflicts with the host's VTK 9.1)
+# sid                unstable  VTK 9.6 and ParaView 6.1 (which uses the system VTK); no OSMesa
+#
+# A chroot is made once with debootstrap in $NPR_CHROOT_BASE/NAME (default /var/cache/vtknpr)
+# and kept. Packages are installed only when missing, and the package lists are updated only
+# then, so a release whose archive moves on (Debian unstable) changes only on `refresh`.
+# The archive is the one the host's own apt sources use for its release (NPR_DEBIAN_MIRROR
+# overrides it). Needs root (uses sudo otherwise). Mounts are made in a private mount namespace
+# and vanish when the command exits.
+#
+# Environment:
+#   NPR_CHROOT_BASE    folder of the chroots (default /var/cache/vtknpr)
+#   NPR_DEBIAN_MIRROR  Debian archive URI (default: from /etc/apt/sources.list{,.d})
+#   NPR_CHROOT_BUILD   a host folder mounted at /build in the chroot (optional)
+set -euo pipefail
+
+usage() {
+  echo "usage: bash Utilities/debian-chroot.sh NAME setup|refresh | NAME run 'command' | list" >&2
+  exit 2
+}
+name=${1:-}
+action=${2:-}
+if [[ $name == list ]]; then
+  action=list
+elif [[ $action != setup && $action != run && $action != refresh ]]; then
+  usage
+fi
+if ((EUID != 0)); then
+  exec sudo --preserve-env=NPR_CHROOT_BASE,NPR_DEBIAN_MIRROR,NPR_CHROOT_BUILD \
+    bash "${BASH_SOURCE[0]}" "$@"
+fi
+source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+base=${NPR_CHROOT_BASE:-/var/cache/vtknpr}
+
+# What every chroot needs to build and test: the toolchain, Mesa's EGL (software), Xvfb.
+common=(cmake ninja-build g++ xvfb xauth libegl-dev libegl-mesa0 libgl1-mesa-dri libopengl-dev)
+vtk=(libvtk9-dev python3-vtk9)
+# ParaView's development files and the -dev packages its CMake configuration needs without
+# depending on them; MPI to run pvbatch in parallel.
+paraview=(paraview paraview-dev python3-paraview libx11-dev libxcursor-dev libpng-dev
+  libutfcpp-dev mpi-default-dev mpi-default-bin libglew-dev libgl-dev libfreetype-dev libjpeg-dev
+  liblz4-dev liblzma-dev libtiff-dev libdouble-conversion-dev libpython3-dev python3-numpy)
+case $name in
+  trixie-vtk) suite=trixie packages=("${common[@]}" "${vtk[@]}" libosmesa6-dev) ;;
+  trixie-paraview) suite=trixie packages=("${common[@]}" "${paraview[@]}") ;;
+  bookworm-paraview) suite=bookworm packages=("${common[@]}" "${paraview[@]}") ;;
+  sid) suite=sid packages=("${common[@]}" "${vtk[@]}" "${paraview[@]}") ;;
+  list)
+    for known in trixie-vtk trixie-paraview bookworm-paraview sid; do
+      state="not created"
+      [[ -x $base/$known/usr/bin/apt-get ]] && state="$base/$known"
+      echo "$known: $state"
+    done
+    exit 0
+    ;;
+  *) echo "debian-chroot: unknown chroot '$name' (trixie-vtk, trixie-paraview, bookworm-paraview, sid)" >&2
+    exit 2 ;;
+esac
+root=$base/$name
+
+# The URI of the host's apt source for its own Debian release (deb822 or one-line format).
+host_mirror() {
+  local codename uri
+  codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
+  uri=$(awk -v suite="$codename" '
+    /^URIs:/ { uri = $2 }
+    /^Suites:/ { for (i = 2; i <= NF; i++) if ($i == suite && uri != "") { print uri; exit } }
+    /^$/ { uri = "" }' /etc/apt/sources.list.d/*.sources 2>/dev/null | head -n 1)
+  if [[ -z $uri ]]; then
+    uri=$(awk -v suite="$codename" '$1 == "deb" {
+        for (i = 2; i <= NF; i++) if ($i !~ /^\[/ && $i ~ /:\/\//) { if ($(i + 1) == suite)
+          { print $i; exit } break } }' /etc/apt/sources.list /etc/apt/sources.list.d/*.list \
+      2>/dev/null | head -n 1)
+  fi
+  echo "$uri"
+}
+
+# Runs "$1" (a shell command string) inside the chroot, /src being the source tree.
+in_chroot() {
+  unshare --mount --fork --propagation private /bin/bash -c '
+    set -e
+    root=$1 src=$2 command=$3 build=$4
+    mount -t proc proc "$root/proc"
+    mount --rbind /sys "$root/sys"
+    mount --rbind /dev "$root/dev"
+    mkdir -p "$root/src"
+    mount --bind "$src" "$root/src"
+    if [ -n "$build" ]; then
+      mkdir -p "$root/build"
+      mount --bind "$build" "$root/build"
+    fi
+    cp -L /etc/resolv.conf "$root/etc/resolv.conf" 2>/dev/null || true
+    exec chroot "$root" /usr/bin/env -i HOME=/root LANG=C.UTF-8 TERM=dumb \
+      PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+      DEBIAN_FRONTEND=noninteractive OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+      /bin/bash -c "cd /src && $command"
+  ' in-chroot "$root" "$source_dir" "$1" "${NPR_CHROOT_BUILD:-}"
+}
+
+setup() {
+  local start=$SECONDS mirror
+  if [[ ! -x $root/usr/bin/apt-get ]]; then
+    mirror=${NPR_DEBIAN_MIRROR:-$(host_mirror)}
+    if [[ -z $mirror ]]; then
+      echo "debian-chroot: no Debian archive in the host's apt sources; set NPR_DEBIAN_MIRROR" >&2
+      exit 1
+    fi
+    if ! command -v debootstrap >/dev/null; then
+      echo "debian-chroot: installing debootstrap"
+      DEBIAN_FRONTEND=noninteractive apt-get update -q
+      DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends debootstrap
+    fi
+    echo "debian-chroot: debootstrap $suite into $root"
+    rm -rf "$root" "$root.partial"
+    mkdir -p "$base"
+    debootstrap --variant=minbase "$suite" "$root.partial" "$mirror"
+    mv "$root.partial" "$root"
+  fi
+  local missing
+  missing=$(chroot "$root" dpkg-query -W -f='${Package} ${db:Status-Status}\n' "${packages[@]}" \
+    2>/dev/null | awk '$2 == "installed" { print $1 }' | sort |
+    comm -13 - <(printf '%s\n' "${packages[@]}" | sort) | tr '\n' ' ')
+  if [[ -n ${missing// /} ]]; then
+    echo "debian-chroot: $name: installing $missing"
+    in_chroot "apt-get update -q && apt-get install -y -q --no-install-recommends $missing \
+      && apt-get clean"
+    echo "debian-chroot: $name ready in $((SECONDS - start)) s"
+  fi
+}
+
+case $action in
+  setup) setup ;;
+  refresh)
+    setup
+    in_chroot "apt-get update -q && apt-get upgrade -y -q && apt-get clean"
+    ;;
+  run)
+    setup
+    in_chroot "$3"
+    ;;
+esac
