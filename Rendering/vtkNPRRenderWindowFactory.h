@@ -6,9 +6,13 @@
  * off-screen rendering, or nullptr and a warning that says why (vtkGenericWarningMacro) when that
  * backend cannot render in this process. Backends:
  *
- * - "egl": vtkNPREGLRenderWindow, no X server needed. The default.
- * - "osmesa": vtkNPROSMesaRenderWindow; the program must link the CMake target NPR::OSMesa.
- *   In such a program OpenGL calls go to libOSMesa, so it is also the default there.
+ * - "egl": no X server needed. The default. vtkNPREGLRenderWindow with VTK 9.1 to 9.3 (built
+ *   for X only), VTK's own vtkEGLRenderWindow from VTK 9.4 on.
+ * - "osmesa": with VTK 9.1 to 9.3 vtkNPROSMesaRenderWindow, and the program must link the CMake
+ *   target NPR::OSMesa (in such a program OpenGL calls go to libOSMesa, so it is also the default
+ *   there); from VTK 9.4 on VTK's vtkOSOpenGLRenderWindow, which loads libOSMesa itself. A build
+ *   configured without libOSMesa (Mesa 25.1 and later ship none) reports that the backend is not
+ *   available in this build.
  * - "x": VTK's own X window (vtkXOpenGLRenderWindow), off-screen; needs an X display that opens
  *   (DISPLAY, e.g. under Xvfb).
  *
@@ -47,7 +51,7 @@ public:
 
   /**
    * The backend CreateRenderWindow(nullptr) picks: NPR_BACKEND if set, else "osmesa" in a program
-   * linked with NPR::OSMesa, else "egl".
+   * linked with NPR::OSMesa (VTK 9.1 to 9.3), else "egl".
    */
   static const char* GetDefaultBackend();
 

@@ -3,15 +3,23 @@
 #
 #   bash Utilities/bootstrap.sh examples   # install what is missing, build, render the example
 #                                          # scenes into build/examples/
-#   bash Utilities/bootstrap.sh test       # install what is missing, build, run all tests
+#   bash Utilities/bootstrap.sh test       # install what is missing, build, run every test stage
 #
 # Installs only the Debian packages that are missing (apt-get; through sudo when not root), so a
 # second run goes straight to the (incremental) build. NPR_BUILD_DIR overrides the build folder.
 #
-# `test` then builds and tests the ParaView plugin in a Debian 12 chroot with ParaView 5.11
-# (Utilities/paraview-chroot.sh: created once in /var/cache/vtknpr/paraview-chroot and kept, so a
-# second run installs nothing), in $NPR_BUILD_DIR/paraview-plugin. NPR_PARAVIEW_PLUGIN=OFF skips
-# that stage (default ON).
+# `test` runs these stages, in this order (NPR_STAGES, a comma-separated list, picks some; the
+# default is all of them, which CI runs; NPR_STAGES=host is the quick local run):
+#   host           Debian 12, VTK 9.1: build and all tests, in $NPR_BUILD_DIR
+#   vtk-9.3        Debian 13, VTK 9.3: the same build and tests in a chroot, in $NPR_BUILD_DIR/vtk-9.3
+#   vtk-9.6        Debian unstable, VTK 9.6 (no OSMesa): the same, in $NPR_BUILD_DIR/vtk-9.6
+#   paraview-5.11  Debian 12, ParaView 5.11: the plugin and its tests, in $NPR_BUILD_DIR/paraview-5.11
+#   paraview-5.13  Debian 13, ParaView 5.13: the same, in $NPR_BUILD_DIR/paraview-5.13
+#   paraview-6.1   Debian unstable, ParaView 6.1: the same, in $NPR_BUILD_DIR/paraview-6.1
+# The chroots (Utilities/debian-chroot.sh) are made once in /var/cache/vtknpr and kept; their
+# set-up starts in the background while the host builds. Every stage runs even when an earlier one
+# failed; a table of tests passed and seconds per stage closes the run, and the exit status is
+# non-zero when any stage failed.
 set -euo pipefail
 
 task=${1:-}
@@ -26,6 +34,9 @@ build_dir=${NPR_BUILD_DIR:-$source_dir/build}
 # Xvfb for the tests of VTK's own X window.
 packages=(libvtk9-dev python3-vtk9 libegl-dev libegl-mesa0 libgl1-mesa-dri libopengl-dev
   libosmesa6-dev cmake ninja-build g++ xvfb xauth)
+# debootstrap for the chroots of the other releases (installed here, before their set-ups start
+# side by side).
+if [[ $task == test ]]; then packages+=(debootstrap); fi
 missing=()
 for package in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
@@ -41,32 +52,151 @@ if ((${#missing[@]})); then
   "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-# Debian's interpreter: a python3 earlier on PATH (pyenv, venv) has no vtkmodules.
-if [[ ! -f $build_dir/CMakeCache.txt ]]; then
-  cmake -S "$source_dir" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DPython3_EXECUTABLE=/usr/bin/python3
-fi
-cmake --build "$build_dir" -j "$(nproc)"
+all_stages=(host vtk-9.3 vtk-9.6 paraview-5.11 paraview-5.13 paraview-6.1)
+IFS=, read -r -a stages <<<"${NPR_STAGES:-$(IFS=,; echo "${all_stages[*]}")}"
+for stage in "${stages[@]}"; do
+  if [[ " ${all_stages[*]} " != *" $stage "* ]]; then
+    echo "bootstrap: unknown stage '$stage' in NPR_STAGES (${all_stages[*]})" >&2
+    exit 2
+  fi
+done
+chroot_of() {
+  case $1 in
+    vtk-9.3) echo trixie-vtk ;;
+    vtk-9.6 | paraview-6.1) echo sid ;;
+    paraview-5.11) echo bookworm-paraview ;;
+    paraview-5.13) echo trixie-paraview ;;
+  esac
+}
+
+# Starts the set-up of every chroot the chosen stages need, in the background (downloads overlap
+# the host's build); each logs to $build_dir/logs/chroot-NAME.log.
+declare -A chroot_setup_pid=() chroot_setup_status=()
+start_chroot_setups() {
+  [[ $task == test ]] || return 0
+  local stage name
+  for stage in "${stages[@]}"; do
+    name=$(chroot_of "$stage")
+    if [[ -n $name && -z ${chroot_setup_pid[$name]:-} ]]; then
+      bash "$source_dir/Utilities/debian-chroot.sh" "$name" setup \
+        >"$build_dir/logs/chroot-$name.log" 2>&1 &
+      chroot_setup_pid[$name]=$!
+    fi
+  done
+}
+
+# Results per stage, for the closing table.
+declare -A stage_passed=() stage_total=() stage_seconds=() stage_status=()
+# Reads "N% tests passed, F tests failed out of T" from a ctest log.
+record_ctest() {
+  local stage=$1 log=$2 line
+  line=$(grep -E "tests passed, [0-9]+ tests? failed out of [0-9]+" "$log" | tail -n 1 || true)
+  if [[ $line =~ ([0-9]+)\ tests?\ failed\ out\ of\ ([0-9]+) ]]; then
+    stage_total[$stage]=${BASH_REMATCH[2]}
+    stage_passed[$stage]=$((BASH_REMATCH[2] - BASH_REMATCH[1]))
+  fi
+}
+
+build_host() {
+  # Debian's interpreter: a python3 earlier on PATH (pyenv, venv) has no vtkmodules.
+  if [[ ! -f $build_dir/CMakeCache.txt ]]; then
+    cmake -S "$source_dir" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+      -DPython3_EXECUTABLE=/usr/bin/python3
+  fi
+  cmake --build "$build_dir" -j "$(nproc)"
+}
+
+run_host_stage() {
+  build_host 2>&1 | tee "$build_dir/logs/host.log"
+  if ((PIPESTATUS[0] != 0)); then
+    return 1
+  fi
+  ctest --test-dir "$build_dir" --output-on-failure -j 2 2>&1 | tee -a "$build_dir/logs/host.log"
+  return "${PIPESTATUS[0]}"
+}
+
+# Waits (once) for the set-up of a chroot started by start_chroot_setups.
+wait_chroot_setup() {
+  local name=$1
+  if [[ -z ${chroot_setup_status[$name]:-} ]]; then
+    chroot_setup_status[$name]=0
+    wait "${chroot_setup_pid[$name]}" || chroot_setup_status[$name]=$?
+  fi
+  return "${chroot_setup_status[$name]}"
+}
+
+# Builds and tests in a chroot: the module and its tests, or the ParaView plugin.
+run_chroot_stage() {
+  local stage=$1 name configure ctest_options
+  name=$(chroot_of "$stage")
+  if ! wait_chroot_setup "$name"; then
+    echo "bootstrap: the $name chroot could not be set up:" >&2
+    tail -n 20 "$build_dir/logs/chroot-$name.log" >&2
+    return 1
+  fi
+  if [[ $stage == paraview-* ]]; then
+    configure="-DNPR_BUILD_PARAVIEW_PLUGIN=ON"
+    # Each plugin test runs in an X server of its own; a rare failure to open the display is
+    # retried once (Documentation/paraview.md).
+    ctest_options="--repeat until-pass:2"
+  else
+    configure="-DPython3_EXECUTABLE=/usr/bin/python3"
+    ctest_options="-j 2"
+  fi
+  mkdir -p "$build_dir/$stage"
+  NPR_CHROOT_BUILD=$build_dir/$stage bash "$source_dir/Utilities/debian-chroot.sh" "$name" run "
+    set -e
+    if [ ! -f /build/CMakeCache.txt ]; then
+      cmake -S /src -B /build -G Ninja -DCMAKE_BUILD_TYPE=Release $configure
+    fi
+    cmake --build /build -j $(nproc)
+    ctest --test-dir /build --output-on-failure $ctest_options" 2>&1 | tee "$build_dir/logs/$stage.log"
+  return "${PIPESTATUS[0]}"
+}
+
+run_test_stages() {
+  local stage start failed=0 passed_all=0 failed_all=0
+  for stage in "${stages[@]}"; do
+    echo "bootstrap: ---- stage $stage ----"
+    start=$SECONDS
+    if [[ $stage == host ]]; then
+      run_host_stage && stage_status[$stage]=passed || stage_status[$stage]=FAILED
+    else
+      run_chroot_stage "$stage" && stage_status[$stage]=passed || stage_status[$stage]=FAILED
+    fi
+    stage_seconds[$stage]=$((SECONDS - start))
+    record_ctest "$stage" "$build_dir/logs/$stage.log"
+    [[ ${stage_status[$stage]} == passed ]] || failed=1
+  done
+  echo "bootstrap: stage          result   tests passed/total   seconds"
+  for stage in "${stages[@]}"; do
+    printf 'bootstrap: %-14s %-8s %8s/%-12s %7s\n' "$stage" "${stage_status[$stage]}" \
+      "${stage_passed[$stage]:-?}" "${stage_total[$stage]:-?}" "${stage_seconds[$stage]}"
+    passed_all=$((passed_all + ${stage_passed[$stage]:-0}))
+    failed_all=$((failed_all + ${stage_total[$stage]:-0} - ${stage_passed[$stage]:-0}))
+  done
+  echo "bootstrap: all stages took $((SECONDS - run_start)) s"
+  # A stage that stopped before its tests counts as one failure.
+  for stage in "${stages[@]}"; do
+    if [[ ${stage_status[$stage]} != passed && -z ${stage_passed[$stage]:-} ]]; then
+      failed_all=$((failed_all + 1))
+    fi
+  done
+  echo "$passed_all passed, $failed_all failed"
+  return "$failed"
+}
+
+run_start=$SECONDS
+mkdir -p "$build_dir/logs"
+start_chroot_setups
 
 # Headless: no X server is needed or used.
 unset DISPLAY
 if [[ $task == examples ]]; then
+  build_host
   cmake --build "$build_dir" --target render-examples
   echo "bootstrap: example images in $build_dir/examples:"
   ls -1 "$build_dir"/examples/*.png
 else
-  ctest --test-dir "$build_dir" --output-on-failure -j 2
-  if [[ ${NPR_PARAVIEW_PLUGIN:-ON} != OFF ]]; then
-    start=$SECONDS
-    mkdir -p "$build_dir/paraview-plugin"
-    NPR_PLUGIN_BUILD_DIR=$build_dir/paraview-plugin \
-      bash "$source_dir/Utilities/paraview-chroot.sh" run '
-        set -e
-        if [ ! -f /build/CMakeCache.txt ]; then
-          cmake -S /src -B /build -G Ninja -DCMAKE_BUILD_TYPE=Release -DNPR_BUILD_PARAVIEW_PLUGIN=ON
-        fi
-        cmake --build /build -j 2
-        ctest --test-dir /build --output-on-failure --repeat until-pass:2'
-    echo "bootstrap: ParaView plugin stage took $((SECONDS - start)) s"
-  fi
+  run_test_stages
 fi

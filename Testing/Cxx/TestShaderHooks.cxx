@@ -113,11 +113,11 @@ int TestToon(int style, const char* name)
   HookScene scene(style);
   scene.Toon()->SetNumberOfBands(3);
   vtkSmartPointer<vtkImageData> image = scene.Render();
-  // Three bands: three colours cover the surface but for the anti-aliased rims of the lines.
-  // Plain Phong shading spreads the same pixels over hundreds of colours.
+  // With three bands the three commonest colours cover 100 % of the surface in toon and about
+  // 88 % in toon+edges (the rest: the lines' anti-aliased rims); unbanded, about 62 %.
   const double share = ShareOfCommonestColours(image, 3);
   std::cout << name << ": the 3 commonest colours cover " << 100 * share << " % of the surface\n";
-  NPR_CHECK(share > 0.85, name << ": the lighting is not banded (" << 100 * share << " %)");
+  NPR_CHECK(share > 0.75, name << ": the lighting is not banded (" << 100 * share << " %)");
   return style == vtkNPRPass::TOON_EDGES ? TestLines(style, name) : nprTestResult();
 }
 }

@@ -1,8 +1,9 @@
 """The screenshots of Documentation/paraview.md, made by pvbatch with the plugin: the test scene
 (Plugin/Testing/Python/nprviewscene.py) in every style of "Render View (NPR)", and the edges
-style with ForceDepthOnly (what a parallel render draws). Run in the ParaView chroot:
+style with ForceDepthOnly (what a parallel render draws). Run in the ParaView 5.11 chroot, after
+the paraview-5.11 test stage built the plugin:
 
-  NPR_PLUGIN_BUILD_DIR=$PWD/build/paraview-plugin bash Utilities/paraview-chroot.sh run \
+  NPR_CHROOT_BUILD=$PWD/build/paraview-5.11 bash Utilities/debian-chroot.sh bookworm-paraview run \
     'xvfb-run -a pvbatch --force-offscreen-rendering \
        Documentation/images/paraview/make_screenshots.py \
        --plugin /build/lib/paraview-5.11/plugins/NPRView/NPRView.so \
