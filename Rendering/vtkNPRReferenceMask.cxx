@@ -8,8 +8,11 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
-#include "vtkGenericCell.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNPRFeatureLines.h"
 #include "vtkNew.h"
@@ -63,6 +66,48 @@ void Clip(const double m[16], const double x[3], double clip[4])
   }
 }
 
+// d . ((p - o) x (q - p)): on which side of the edge p q the line o + t d passes. Computed from
+// the edge's ends in one order whichever way a triangle runs along it, so that triangles that
+// share an edge get the same value up to its sign: a line through the edge meets one of them.
+// (It equals d . ((p - o) x (q - o)), with less rounding: q - p is short.)
+double EdgeSide(const double o[3], const double d[3], const double* p, const double* q)
+{
+  if (std::lexicographical_compare(q, q + 3, p, p + 3))
+  {
+    return -EdgeSide(o, d, q, p);
+  }
+  const double op[3] = { p[0] - o[0], p[1] - o[1], p[2] - o[2] };
+  const double pq[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+  return d[0] * (op[1] * pq[2] - op[2] * pq[1]) + d[1] * (op[2] * pq[0] - op[0] * pq[2]) +
+    d[2] * (op[0] * pq[1] - op[1] * pq[0]);
+}
+
+// Whether the segment o + t d, t in [0, 1], meets the triangle (a, b, c), its edges included
+// (from either side). t from the triangle's normal, not from the sum of the sides: that loses
+// digits when the segment grazes the plane, as a sample's does on the faces of its line, where
+// t must be right to well below OcclusionEpsilon.
+bool SegmentMeetsTriangle(
+  const double o[3], const double d[3], const double* a, const double* b, const double* c)
+{
+  const double u = EdgeSide(o, d, b, c), v = EdgeSide(o, d, c, a), w = EdgeSide(o, d, a, b);
+  if (!((u >= 0.0 && v >= 0.0 && w >= 0.0) || (u <= 0.0 && v <= 0.0 && w <= 0.0)))
+  {
+    return false;
+  }
+  const double ab[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double ac[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+  double n[3];
+  vtkMath::Cross(ab, ac, n);
+  const double along = vtkMath::Dot(n, d); // 0: parallel to the plane, or degenerate
+  if (along == 0.0)
+  {
+    return false;
+  }
+  const double oa[3] = { a[0] - o[0], a[1] - o[1], a[2] - o[2] };
+  const double t = vtkMath::Dot(n, oa) / along;
+  return t >= 0.0 && t <= 1.0;
+}
+
 // What an actor contributes: its mesh, as drawn now.
 struct ActorState
 {
@@ -94,10 +139,15 @@ struct vtkNPRReferenceMask::Internals
   // vtkStaticCellLocator, not vtkCellLocator: VTK 9.1's vtkCellLocator::IntersectWithLine
   // misses some triangles (rays through a cube's faces at 2 of 297 points in a test). The
   // static locator clears a flag per cell on every ray (O(cells) per ray), hence the groups.
+  // Only its candidates along a ray are used (FindCellsAlongLine), not its IntersectWithLine:
+  // since VTK 9.2 that keeps a hit only within the given tolerance of the bin being walked, and
+  // with none it loses hits on faces that lie on a bin's side (a cube's) rounded just outside.
   struct Group
   {
     vtkSmartPointer<vtkPolyData> Triangles;
     vtkSmartPointer<vtkStaticCellLocator> Locator;
+    vtkSmartPointer<vtkIdTypeArray> Corners; // the triangles' point ids, 3 each
+    const double* Coordinates;               // Triangles' points, x y z each
     double Bounds[6];
   };
   std::vector<Group> Groups;
@@ -122,7 +172,7 @@ struct vtkNPRReferenceMask::Internals
 
   void BuildLocator(const std::vector<ActorState>& actors, int trianglesPerLocator);
   // Whether a triangle crosses the segment.
-  bool Hidden(const double from[3], const double to[3], vtkGenericCell* cell);
+  bool Hidden(const double from[3], const double to[3], vtkIdList* candidates);
 };
 
 void vtkNPRReferenceMask::Internals::BuildLocator(
@@ -268,11 +318,12 @@ void vtkNPRReferenceMask::Internals::BuildLocator(
     Group group;
     vtkNew<vtkPoints> groupPoints;
     groupPoints->SetDataTypeToDouble();
-    vtkNew<vtkCellArray> cells;
+    group.Corners = vtkSmartPointer<vtkIdTypeArray>::New();
+    group.Corners->SetNumberOfValues(3 * static_cast<vtkIdType>(last - first));
+    vtkIdType* corners = group.Corners->GetPointer(0);
     std::vector<vtkIdType> used;
     for (size_t i = first; i < last; ++i)
     {
-      vtkIdType ids[3];
       for (int k = 0; k < 3; ++k)
       {
         const vtkIdType id = triangles[3 * order[i] + k];
@@ -281,17 +332,19 @@ void vtkNPRReferenceMask::Internals::BuildLocator(
           local[id] = groupPoints->InsertNextPoint(&points[3 * id]);
           used.push_back(id);
         }
-        ids[k] = local[id];
+        *corners++ = local[id];
       }
-      cells->InsertNextCell(3, ids);
     }
     for (vtkIdType id : used)
     {
       local[id] = -1;
     }
+    vtkNew<vtkCellArray> cells;
+    cells->SetData(3, group.Corners);
     group.Triangles = vtkSmartPointer<vtkPolyData>::New();
     group.Triangles->SetPoints(groupPoints);
     group.Triangles->SetPolys(cells);
+    group.Coordinates = vtkDoubleArray::FastDownCast(groupPoints->GetData())->GetPointer(0);
     group.Triangles->GetBounds(group.Bounds);
     // A margin, so that the box test can only let through more rays, never fewer.
     const double margin = 1e-9 * std::max(1.0, group.Triangles->GetLength());
@@ -314,13 +367,14 @@ void vtkNPRReferenceMask::Internals::BuildLocator(
 }
 
 bool vtkNPRReferenceMask::Internals::Hidden(
-  const double fromWorld[3], const double toWorld[3], vtkGenericCell* cell)
+  const double fromWorld[3], const double toWorld[3], vtkIdList* candidates)
 {
-  double from[3], to[3];
+  double from[3], to[3], direction[3];
   for (int k = 0; k < 3; ++k)
   {
     from[k] = (fromWorld[k] - this->FrameCenter[k]) * this->FrameScale;
     to[k] = (toWorld[k] - this->FrameCenter[k]) * this->FrameScale;
+    direction[k] = to[k] - from[k];
   }
   for (const Group& group : this->Groups)
   {
@@ -350,12 +404,16 @@ bool vtkNPRReferenceMask::Internals::Hidden(
     {
       continue;
     }
-    double t, x[3], pcoords[3];
-    int subId;
-    vtkIdType cellId;
-    if (group.Locator->IntersectWithLine(from, to, 0.0, t, x, pcoords, subId, cellId, cell))
+    group.Locator->FindCellsAlongLine(from, to, 0.0, candidates);
+    const vtkIdType* corners = group.Corners->GetPointer(0);
+    const double* x = group.Coordinates;
+    for (vtkIdType i = 0, n = candidates->GetNumberOfIds(); i < n; ++i)
     {
-      return true;
+      const vtkIdType* ids = corners + 3 * candidates->GetId(i);
+      if (SegmentMeetsTriangle(from, direction, x + 3 * ids[0], x + 3 * ids[1], x + 3 * ids[2]))
+      {
+        return true;
+      }
     }
   }
   return false;
@@ -565,7 +623,7 @@ bool vtkNPRReferenceMask::Update()
   // Segments are clipped one pixel beyond the image; samples outside it are then skipped.
   const double marginX = 1.0 + 2.0 / width, marginY = 1.0 + 2.0 / height;
 
-  vtkNew<vtkGenericCell> cell;
+  vtkNew<vtkIdList> candidates;
   vtkNew<vtkPoints> visiblePoints;
   visiblePoints->SetDataTypeToDouble();
   vtkNew<vtkCellArray> visibleCells;
@@ -672,7 +730,7 @@ bool vtkNPRReferenceMask::Update()
         to[i] = from[i] + (1.0 - this->OcclusionEpsilon) * (p[i] - from[i]);
       }
       ++internal.RayCasts;
-      if (internal.Hidden(from, to, cell))
+      if (internal.Hidden(from, to, candidates))
       {
         endRun(segment.Type);
         continue;
