@@ -6,6 +6,7 @@
 #include "nprTesting.h"
 
 #include "vtkImageData.h"
+#include "vtkVersionMacros.h"
 
 #include <cstdlib>
 #include <fstream>
@@ -77,6 +78,16 @@ int main(int argc, char* argv[])
   NPR_CHECK(!nprCompareWithBaselineFile(Gradient(80, 60), scratch + "/missing.png",
               "harness_missing", tolerance),
     "a missing baseline passes");
+
+  // A release's own baseline is preferred to the shared one, only where it exists.
+  const std::string release = scratch + "/harness_release.vtk-" +
+    std::to_string(VTK_MAJOR_VERSION) + "." + std::to_string(VTK_MINOR_VERSION) + ".png";
+  std::remove(release.c_str());
+  NPR_CHECK(nprBaselinePath(scratch, "harness_release") == scratch + "/harness_release.png",
+    "a missing release baseline is chosen");
+  NPR_CHECK(nprWritePNG(Gradient(80, 60), release), "cannot write " << release);
+  NPR_CHECK(nprBaselinePath(scratch, "harness_release") == release,
+    "the release baseline " << release << " is not chosen");
 
   setenv("NPR_UPDATE_BASELINES", "1", 1);
   const std::string created = scratch + "/harness_created.png";

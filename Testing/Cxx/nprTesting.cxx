@@ -15,6 +15,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkVersionMacros.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
@@ -338,11 +339,18 @@ bool nprWritePNG(vtkImageData* image, const std::string& path)
   return writer->GetErrorCode() == 0;
 }
 
+std::string nprBaselinePath(const std::string& dir, const std::string& name)
+{
+  const std::string release = dir + "/" + name + ".vtk-" + std::to_string(VTK_MAJOR_VERSION) +
+    "." + std::to_string(VTK_MINOR_VERSION) + ".png";
+  return std::ifstream(release) ? release : dir + "/" + name + ".png";
+}
+
 bool nprCompareWithBaseline(
   vtkImageData* image, const std::string& name, const nprImageTolerance& tolerance)
 {
   return nprCompareWithBaselineFile(
-    image, std::string(NPR_BASELINE_DIR) + "/" + name + ".png", name, tolerance);
+    image, nprBaselinePath(NPR_BASELINE_DIR, name), name, tolerance);
 }
 
 bool nprCompareWithBaselineFile(vtkImageData* image, const std::string& baselinePath,

@@ -11,6 +11,9 @@
 // written to $NPR_TEST_OUTPUT_DIR (default: the current directory) and their paths printed.
 // With NPR_UPDATE_BASELINES=1 the rendered image replaces the baseline instead, and the
 // comparison passes: baselines change only on purpose (target `update-baselines`).
+// One baseline serves every VTK release. Where a release's own shading differs, a baseline
+// <name>.vtk-MAJOR.MINOR.png beside <name>.png is used for that release instead
+// (nprBaselinePath); the tolerance is never loosened for it.
 #ifndef nprTesting_h
 #define nprTesting_h
 
@@ -139,6 +142,10 @@ nprImageDifference nprCompareImages(
   vtkImageData* image, vtkImageData* baseline, const nprImageTolerance& tolerance);
 
 // Compares with Testing/Data/Baseline/<name>.png (see above). Returns true when it matches.
+// <dir>/<name>.vtk-MAJOR.MINOR.png for the VTK this test is built with when that file exists,
+// else <dir>/<name>.png.
+std::string nprBaselinePath(const std::string& dir, const std::string& name);
+
 bool nprCompareWithBaseline(vtkImageData* image, const std::string& name,
   const nprImageTolerance& tolerance = nprImageTolerance());
 bool nprCompareWithBaselineFile(vtkImageData* image, const std::string& baselinePath,
