@@ -8,6 +8,8 @@ set(CMAKE_POSITION_INDEPENDENT_CODE ON)
 # packages. Debian's ParaView links VTK::Python -> Python3::Module, which a component-limited
 # find_package(ParaView) does not look up itself.
 find_package(Python3 REQUIRED COMPONENTS Interpreter Development)
+include("${CMAKE_CURRENT_LIST_DIR}/vtkNPRParaViewPythonTargets.cmake") # Debian's ParaView 5.13
+npr_predefine_missing_paraview_python_targets()
 find_package(ParaView 5.11 REQUIRED COMPONENTS RemotingViews)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
 paraview_plugin_scan(
