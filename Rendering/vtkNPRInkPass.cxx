@@ -11,6 +11,10 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkNPROpenGL.h"
+#include "vtkVersionMacros.h"
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
+#include "vtkCompositePolyDataMapper.h"
+#endif
 
 #include "vtkNPRInkDecl.h"
 #include "vtkNPRInkImpl.h"
@@ -20,6 +24,25 @@
 
 vtkStandardNewMacro(vtkNPRInkPass);
 vtkCxxSetObjectMacro(vtkNPRInkPass, DelegatePass, vtkRenderPass);
+
+namespace
+{
+// Whether the mapper draws through a vtkOpenGLPolyDataMapper, which calls this pass's hooks.
+bool vtkNPRCallsInkHooks(vtkMapper* mapper)
+{
+  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    return true;
+  }
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
+  // VTK 9.3's composite mapper (ParaView's since 5.12) draws each batch through a
+  // vtkOpenGLBatchedPolyDataMapper.
+  return vtkCompositePolyDataMapper::SafeDownCast(mapper) != nullptr;
+#else
+  return false;
+#endif
+}
+}
 
 vtkNPRInkPass::vtkNPRInkPass() = default;
 
@@ -56,7 +79,7 @@ void vtkNPRInkPass::Render(const vtkRenderState* state)
   for (int i = 0; i < state->GetPropArrayCount(); ++i)
   {
     vtkActor* actor = vtkActor::SafeDownCast(state->GetPropArray()[i]);
-    if (actor && vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()))
+    if (actor && vtkNPRCallsInkHooks(actor->GetMapper()))
     {
       inked.push_back(actor);
     }

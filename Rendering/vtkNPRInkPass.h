@@ -20,9 +20,10 @@
  *
  * LineWidth is in pixels at 72 DPI (default 1.5), scaled by the window's DPI / 72 and tile
  * scale, clamped to what the OpenGL implementation draws (GL_ALIASED_LINE_WIDTH_RANGE; a warning
- * says so once). Only props drawn by a vtkOpenGLPolyDataMapper (and subclasses) get ink; other
- * props are drawn once, as usual. Lines are not anti-aliased. CoverageOnly writes a mask instead:
- * ink white, everything the props cover black, the background black.
+ * says so once). Only props drawn by a vtkOpenGLPolyDataMapper (and subclasses, and from VTK 9.3
+ * the vtkCompositePolyDataMapper, which draws through one) get ink; other props are drawn once,
+ * as usual. Lines are not anti-aliased. CoverageOnly writes a mask instead: ink white, everything
+ * the props cover black, the background black.
  *
  * Both draws go through the same shader (the ink is a uniform switch), so alternating them costs
  * no shader rebuild. OpenGL's polygon mode and offset are not tracked by vtkOpenGLState in VTK

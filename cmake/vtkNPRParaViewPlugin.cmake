@@ -8,7 +8,28 @@ set(CMAKE_POSITION_INDEPENDENT_CODE ON)
 # packages. Debian's ParaView links VTK::Python -> Python3::Module, which a component-limited
 # find_package(ParaView) does not look up itself.
 find_package(Python3 REQUIRED COMPONENTS Interpreter Development)
+# ParaView 5.13's VTK module functions are defined under cmake_policy(VERSION 3.12) and pass empty
+# keyword values, for which CMake 3.31 warns at every call (CMP0174); OLD is what they expect.
+set(CMAKE_POLICY_DEFAULT_CMP0174 OLD)
+include("${CMAKE_CURRENT_LIST_DIR}/vtkNPRParaViewPythonTargets.cmake") # Debian's ParaView 5.13
+npr_predefine_missing_paraview_python_targets()
 find_package(ParaView 5.11 REQUIRED COMPONENTS RemotingViews)
+# ParaView's package finds VTK with the modules RemotingViews names, but from 5.13 the libraries
+# behind RemotingServerManager (VTK::IOIOSS -> ioss -> exodusII) reach VTK::hdf5 and VTK::netcdf,
+# whose link interfaces name hdf5::hdf5 and NetCDF::NetCDF: targets VTK's package defines only when
+# these components are asked for (else generation fails).
+if (ParaView_VERSION VERSION_GREATER_EQUAL 5.13)
+  set(npr_vtk_external_modules)
+  foreach (module IN ITEMS hdf5 netcdf)
+    if (TARGET "VTK::${module}")
+      list(APPEND npr_vtk_external_modules "${module}")
+    endif ()
+  endforeach ()
+  if (npr_vtk_external_modules)
+    find_package(VTK REQUIRED PATHS "${VTK_DIR}" NO_DEFAULT_PATH
+      COMPONENTS ${npr_vtk_external_modules})
+  endif ()
+endif ()
 include("${CMAKE_CURRENT_LIST_DIR}/vtkNPRPlatform.cmake")
 if (NPR_OWN_HEADLESS_WINDOWS)
   find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)

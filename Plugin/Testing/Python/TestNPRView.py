@@ -132,7 +132,11 @@ else:
         render(style, False)
 
     # Where the ranks' pieces of the contour meet on screen: the contour coloured flat by rank.
-    ranks_source = ProcessIdScalars(Input=contour)
+    # ParaView 5.12 replaced ProcessIdScalars (removed in 5.14) by ProcessIds.
+    if "ProcessIds" in globals():
+        ranks_source, ranks_array = ProcessIds(Input=contour), "PointProcessIds"
+    else:
+        ranks_source, ranks_array = ProcessIdScalars(Input=contour), "ProcessId"
     camera = [list(view.CameraPosition), list(view.CameraFocalPoint), list(view.CameraViewUp),
               view.CameraViewAngle]
     for source in (box, cylinder, contour):
@@ -140,8 +144,8 @@ else:
     ranks_display = Show(ranks_source, view)
     # Show() may reset the camera: the border must be found in the edges images' view.
     view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp, view.CameraViewAngle = camera
-    ColorBy(ranks_display, ("POINTS", "ProcessId"))
-    ranks_lut = GetColorTransferFunction("ProcessId")
+    ColorBy(ranks_display, ("POINTS", ranks_array))
+    ranks_lut = GetColorTransferFunction(ranks_array)
     ranks_lut.RGBPoints = [0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0]
     ranks_lut.AutomaticRescaleRangeMode = "Never"
     ranks_lut.RescaleTransferFunction(0.0, 1.0)
