@@ -47,10 +47,12 @@ base=${NPR_CHROOT_BASE:-/var/cache/vtknpr}
 common=(cmake ninja-build g++ xvfb xauth libegl-dev libegl-mesa0 libgl1-mesa-dri libopengl-dev)
 vtk=(libvtk9-dev python3-vtk9)
 # ParaView's development files and the -dev packages its CMake configuration needs without
-# depending on them; MPI to run pvbatch in parallel.
+# depending on them (HDF5 and NetCDF: ParaView 5.13 reaches them through IOSS); MPI to run
+# pvbatch in parallel.
 paraview=(paraview paraview-dev python3-paraview libx11-dev libxcursor-dev libpng-dev
   libutfcpp-dev mpi-default-dev mpi-default-bin libglew-dev libgl-dev libfreetype-dev libjpeg-dev
-  liblz4-dev liblzma-dev libtiff-dev libdouble-conversion-dev libpython3-dev python3-numpy)
+  liblz4-dev liblzma-dev libtiff-dev libdouble-conversion-dev libpython3-dev python3-numpy
+  libhdf5-dev libnetcdf-dev)
 case $name in
   trixie-vtk) suite=trixie packages=("${common[@]}" "${vtk[@]}" libosmesa6-dev) ;;
   trixie-paraview) suite=trixie packages=("${common[@]}" "${paraview[@]}") ;;
