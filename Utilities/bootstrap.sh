@@ -90,7 +90,8 @@ declare -A stage_passed=() stage_total=() stage_seconds=() stage_status=()
 # Reads "N% tests passed, F tests failed out of T" from a ctest log.
 record_ctest() {
   local stage=$1 log=$2 line
-  line=$(grep -E "tests passed, [0-9]+ tests? failed out of [0-9]+" "$log" | tail -n 1 || true)
+  line=$(grep -E "tests passed, [0-9]+ tests? failed out of [0-9]+" "$log" 2>/dev/null |
+    tail -n 1 || true)
   if [[ $line =~ ([0-9]+)\ tests?\ failed\ out\ of\ ([0-9]+) ]]; then
     stage_total[$stage]=${BASH_REMATCH[2]}
     stage_passed[$stage]=$((BASH_REMATCH[2] - BASH_REMATCH[1]))

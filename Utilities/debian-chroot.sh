@@ -24,6 +24,7 @@
 #   NPR_DEBIAN_MIRROR  Debian archive URI (default: from /etc/apt/sources.list{,.d})
 #   NPR_CHROOT_BUILD   a host folder mounted at /build in the chroot (optional)
 set -euo pipefail
+trap 'echo "debian-chroot: ${name:-}: failed at line $LINENO" >&2' ERR
 
 usage() {
   echo "usage: bash Utilities/debian-chroot.sh NAME setup|refresh | NAME run 'command' | list" >&2
@@ -129,10 +130,11 @@ setup() {
     debootstrap --variant=minbase "$suite" "$root.partial" "$mirror"
     mv "$root.partial" "$root"
   fi
-  local missing
-  missing=$(chroot "$root" dpkg-query -W -f='${Package} ${db:Status-Status}\n' "${packages[@]}" \
-    2>/dev/null | awk '$2 == "installed" { print $1 }' | sort |
-    comm -13 - <(printf '%s\n' "${packages[@]}" | sort) | tr '\n' ' ')
+  local installed missing
+  # dpkg-query fails for a package it has never seen: that one is missing too.
+  installed=$(chroot "$root" dpkg-query -W -f='${Package} ${db:Status-Status}\n' \
+    "${packages[@]}" 2>/dev/null | awk '$2 == "installed" { print $1 }' | sort || true)
+  missing=$(comm -13 <(echo "$installed") <(printf '%s\n' "${packages[@]}" | sort) | tr '\n' ' ')
   if [[ -n ${missing// /} ]]; then
     echo "debian-chroot: $name: installing $missing"
     in_chroot "apt-get update -q && apt-get install -y -q --no-install-recommends $missing \
