@@ -23,7 +23,7 @@
 #   NPR_CHROOT_BASE    folder of the chroots (default /var/cache/vtknpr)
 #   NPR_DEBIAN_MIRROR  Debian archive URI (default: from /etc/apt/sources.list{,.d})
 #   NPR_CHROOT_BUILD   a host folder mounted at /build in the chroot (optional)
-set -euo pipefail
+set -Eeuo pipefail
 trap 'echo "debian-chroot: ${name:-}: failed at line $LINENO" >&2' ERR
 
 usage() {
