@@ -45,8 +45,10 @@ source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 base=${NPR_CHROOT_BASE:-/var/cache/vtknpr}
 
 # What every chroot needs to build and test: the toolchain, Mesa's EGL (software), Xvfb.
-common=(cmake ninja-build g++ xvfb xauth libegl-dev libegl-mesa0 libgl1-mesa-dri libopengl-dev)
-vtk=(libvtk9-dev python3-vtk9)
+common=(cmake ninja-build g++ xvfb xauth libegl-mesa0 libgl1-mesa-dri libopengl-dev)
+# VTK and its Python bindings; EGL's development files for the module's own EGL window (VTK < 9.4).
+# The ParaView plugin compiles the passes only and needs neither.
+vtk=(libvtk9-dev python3-vtk9 libegl-dev)
 # ParaView's development files and the -dev packages its CMake configuration needs without
 # depending on them (HDF5 and NetCDF: ParaView 5.13 reaches them through IOSS); MPI to run
 # pvbatch in parallel.

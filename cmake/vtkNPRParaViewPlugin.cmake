@@ -1,5 +1,5 @@
-# The ParaView plugin "Render View (NPR)" (Plugin/), built against ParaView's own VTK; the NPR
-# module is compiled into it from Rendering/.
+# The ParaView plugin "Render View (NPR)" (Plugin/), built against ParaView's own VTK; the passes
+# module (NPR::RenderingNPR) is compiled into it from Rendering/Passes.
 set(CMAKE_LIBRARY_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
 set(CMAKE_ARCHIVE_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
 set(CMAKE_RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_BINDIR}")
@@ -29,10 +29,6 @@ if (ParaView_VERSION VERSION_GREATER_EQUAL 5.13)
     find_package(VTK REQUIRED PATHS "${VTK_DIR}" NO_DEFAULT_PATH
       COMPONENTS ${npr_vtk_external_modules})
   endif ()
-endif ()
-include("${CMAKE_CURRENT_LIST_DIR}/vtkNPRPlatform.cmake")
-if (NPR_OWN_HEADLESS_WINDOWS)
-  find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
 endif ()
 paraview_plugin_scan(
   PLUGIN_FILES      "${CMAKE_CURRENT_SOURCE_DIR}/Plugin/paraview.plugin"

@@ -1,5 +1,7 @@
-// Renders a sphere headless with an installed vtkNPR and counts the pixels it covers.
+// Renders a sphere headless with an installed vtkNPR, in the edge style, and counts the pixels it
+// covers and its outline's dark pixels.
 #include "vtkActor.h"
+#include "vtkNPRPass.h"
 #include "vtkNPRRenderWindowFactory.h"
 #include "vtkNew.h"
 #include "vtkPolyDataMapper.h"
@@ -28,17 +30,21 @@ int main(int argc, char* argv[])
   actor->SetMapper(mapper);
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  vtkNew<vtkNPRPass> edges; // the default style: edges over the shaded surface
+  renderer->SetPass(edges);
   window->AddRenderer(renderer);
   window->SetSize(64, 64);
   window->Render();
   vtkNew<vtkUnsignedCharArray> pixels;
   window->GetPixelData(0, 0, 63, 63, 0, pixels);
-  long objectPixels = 0;
+  long objectPixels = 0, linePixels = 0;
   for (vtkIdType i = 0; i < 64 * 64; ++i)
   {
-    objectPixels += pixels->GetValue(3 * i) > 50 ? 1 : 0;
+    objectPixels += pixels->GetValue(3 * i + 2) < 250 ? 1 : 0;
+    linePixels += pixels->GetValue(3 * i) < 60 ? 1 : 0;
   }
-  std::cout << "consumer: rendered " << objectPixels << " object pixels with "
-            << vtkNPRRenderWindowFactory::GetBackendName(window) << "\n";
-  return objectPixels > 400 ? 0 : 1;
+  std::cout << "consumer: rendered " << objectPixels << " object pixels, " << linePixels
+            << " line pixels with " << vtkNPRRenderWindowFactory::GetBackendName(window) << "\n";
+  return objectPixels > 400 && linePixels > 40 ? 0 : 1;
 }

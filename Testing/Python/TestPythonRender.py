@@ -1,5 +1,6 @@
-"""The Python wrapping: vtknpr imports with only PYTHONPATH set, renders headless through the
-module's EGL window, reads a model, and reports unavailable backends as None."""
+"""The Python wrapping: vtknpr imports with only PYTHONPATH set, has one submodule per VTK module
+and every class at its top level, renders headless through the EGL window, reads a model, and
+reports unavailable backends as None."""
 import argparse
 import os
 import sys
@@ -14,6 +15,23 @@ from vtknpr import vtkNPRModelReader, vtkNPRRenderWindowFactory  # noqa: E402
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer  # noqa: E402
 from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter  # noqa: E402
 import vtkmodules.vtkRenderingOpenGL2  # noqa: E402,F401  (object factory overrides)
+
+# One submodule per VTK module; every class also at the top, as before the modules were split.
+import importlib  # noqa: E402
+expected = {
+    "vtkRenderingNPR": ["vtkNPRPass", "vtkNPRGBufferPass", "vtkNPREdgePass", "vtkNPRToonPass",
+                        "vtkNPRSketchPass", "vtkNPRInkPass"],
+    "vtkFiltersNPR": ["vtkNPRFeatureLines", "vtkNPRReferenceMask"],
+    "vtkIONPR": ["vtkNPRModelReader", "vtkNPROFFReader", "vtkNPRShadingNormals"],
+    "vtkRenderingHeadlessNPR": ["vtkNPRRenderWindowFactory"],
+}
+for submodule, classes in expected.items():
+    module = importlib.import_module("vtknpr." + submodule)
+    for name in classes:
+        assert getattr(module, name) is getattr(vtknpr, name), (submodule, name)
+headless = importlib.import_module("vtknpr.vtkRenderingHeadlessNPR")
+if hasattr(headless, "vtkNPREGLRenderWindow"):  # VTK 9.1-9.3: the module's own windows
+    assert vtknpr.vtkNPROSMesaRenderWindow is headless.vtkNPROSMesaRenderWindow
 
 if args.expect_prefix:
     here = os.path.realpath(vtknpr.__file__)

@@ -63,14 +63,14 @@
 #define vtkNPRFeatureLines_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkFiltersNPRModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
 class vtkCamera;
 class vtkMatrix4x4;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRFeatureLines : public vtkPolyDataAlgorithm
+class VTKFILTERSNPR_EXPORT vtkNPRFeatureLines : public vtkPolyDataAlgorithm
 {
 public:
   static vtkNPRFeatureLines* New();

@@ -1,11 +1,9 @@
 #include "vtkNPRGBufferPass.h"
 
 #include "vtkCamera.h"
-#include "vtkLight.h"
-#include "vtkLightCollection.h"
-#include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNPRFrameSignature.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLCamera.h"
@@ -31,43 +29,10 @@
 #include <cmath>
 #include <vector>
 
-// What a G-buffer is drawn from: a frame with the same signature draws the same image.
-struct vtkNPRGBufferSignature
-{
-  struct PropStamp
-  {
-    vtkProp* Prop;
-    vtkMTimeType Time;
-    bool operator==(const PropStamp& other) const
-    {
-      return this->Prop == other.Prop && this->Time == other.Time;
-    }
-  };
-  std::vector<PropStamp> Props;
-  std::vector<vtkMTimeType> Lights;
-  vtkCamera* Camera = nullptr;
-  vtkMTimeType CameraTime = 0;
-  // The renderer's own settings that change the shaded colour (its MTime also changes when
-  // images are read back, so it cannot be used).
-  double RendererSettings[5] = { 0, 0, 0, 0, 0 };
-  vtkMTimeType PassTime = 0;
-  int Size[2] = { 0, 0 };
-  bool Normals = false;
-  bool Ids = false;
-
-  bool operator==(const vtkNPRGBufferSignature& o) const
-  {
-    return this->Props == o.Props && this->Lights == o.Lights && this->Camera == o.Camera &&
-      this->CameraTime == o.CameraTime && std::equal(this->RendererSettings, this->RendererSettings + 5, o.RendererSettings) &&
-      this->PassTime == o.PassTime && this->Size[0] == o.Size[0] && this->Size[1] == o.Size[1] &&
-      this->Normals == o.Normals && this->Ids == o.Ids;
-  }
-};
-
 struct vtkNPRGBufferPass::Internals
 {
   // Taken right after the last draw, so that what the draw itself touched counts as seen.
-  vtkNPRGBufferSignature Last;
+  vtkNPRFrameSignature Last;
   bool Valid = false;
   // The props of this frame; an object id is the 1-based index of its prop here.
   std::vector<vtkProp*> FrameProps;
@@ -186,40 +151,6 @@ void vtkNPRGBufferPass::AllocateBuffers(
   this->GeometryTexture->Resize(width, height);
 }
 
-namespace
-{
-vtkNPRGBufferSignature TakeSignature(
-  const vtkRenderState* state, int width, int height, bool normals, bool ids, vtkMTimeType passTime)
-{
-  vtkNPRGBufferSignature now;
-  vtkRenderer* renderer = state->GetRenderer();
-  for (int i = 0; i < state->GetPropArrayCount(); ++i)
-  {
-    vtkProp* prop = state->GetPropArray()[i];
-    // The redraw time includes the mapper and its input, brought up to date.
-    now.Props.push_back({ prop, std::max(prop->GetMTime(), prop->GetRedrawMTime()) });
-  }
-  vtkLightCollection* lights = renderer->GetLights();
-  vtkCollectionSimpleIterator it;
-  lights->InitTraversal(it);
-  while (vtkLight* light = lights->GetNextLight(it))
-  {
-    now.Lights.push_back(light->GetMTime());
-  }
-  now.Camera = renderer->GetActiveCamera();
-  now.CameraTime = now.Camera->GetMTime();
-  now.RendererSettings[0] = renderer->GetTwoSidedLighting();
-  now.RendererSettings[1] = renderer->GetLightFollowCamera();
-  std::copy_n(renderer->GetAmbient(), 3, now.RendererSettings + 2);
-  now.PassTime = passTime;
-  now.Size[0] = width;
-  now.Size[1] = height;
-  now.Normals = normals;
-  now.Ids = ids;
-  return now;
-}
-}
-
 vtkMTimeType vtkNPRGBufferPass::GetSettingsTime()
 {
   // The delegate's settings change the image too (vtkNPRToonPass: bands, table).
@@ -232,75 +163,13 @@ bool vtkNPRGBufferPass::SceneUnchanged(const vtkRenderState* state, int width, i
   {
     return false;
   }
-  return TakeSignature(state, width, height, this->WritesNormals, this->WritesObjectIds,
+  return vtkNPRTakeFrameSignature(state, width, height, this->WritesNormals, this->WritesObjectIds,
            this->GetSettingsTime()) == this->Internal->Last;
 }
 
 void vtkNPRGBufferPass::ComputeContentRectangle(const vtkRenderState* state, int width, int height)
 {
-  int* rect = this->ContentRectangle;
-  rect[0] = rect[1] = 0;
-  rect[2] = width - 1;
-  rect[3] = height - 1;
-  double bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
-    VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  for (int i = 0; i < state->GetPropArrayCount(); ++i)
-  {
-    vtkProp* prop = state->GetPropArray()[i];
-    if (!prop->HasOpaqueGeometry())
-    {
-      continue;
-    }
-    const double* propBounds = prop->GetBounds();
-    if (!propBounds)
-    {
-      return; // unknown extent: the whole buffer
-    }
-    if (!vtkMath::AreBoundsInitialized(propBounds))
-    {
-      continue;
-    }
-    for (int j = 0; j < 3; ++j)
-    {
-      bounds[2 * j] = std::min(bounds[2 * j], propBounds[2 * j]);
-      bounds[2 * j + 1] = std::max(bounds[2 * j + 1], propBounds[2 * j + 1]);
-    }
-  }
-  if (!vtkMath::AreBoundsInitialized(bounds))
-  {
-    return;
-  }
-  vtkCamera* camera = state->GetRenderer()->GetActiveCamera();
-  vtkMatrix4x4* toClip = camera->GetCompositeProjectionTransformMatrix(
-    static_cast<double>(width) / height, -1.0, 1.0);
-  double box[4] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    double point[4] = { bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)],
-      bounds[4 + ((corner >> 2) & 1)], 1.0 };
-    toClip->MultiplyPoint(point, point);
-    if (!(point[3] > 1e-9) || !std::isfinite(point[0]) || !std::isfinite(point[1]))
-    {
-      return; // a corner behind the eye: the projection of the box is unbounded
-    }
-    const double x = (point[0] / point[3] * 0.5 + 0.5) * width;
-    const double y = (point[1] / point[3] * 0.5 + 0.5) * height;
-    box[0] = std::min(box[0], x);
-    box[1] = std::min(box[1], y);
-    box[2] = std::max(box[2], x);
-    box[3] = std::max(box[3], y);
-  }
-  // A margin for rasterisation and for lines wider than the props (up to 32 pixels).
-  const double margin = 40.0;
-  rect[0] = static_cast<int>(std::max(0.0, std::floor(box[0] - margin)));
-  rect[1] = static_cast<int>(std::max(0.0, std::floor(box[1] - margin)));
-  rect[2] = static_cast<int>(std::min(width - 1.0, std::ceil(box[2] + margin)));
-  rect[3] = static_cast<int>(std::min(height - 1.0, std::ceil(box[3] + margin)));
-  if (rect[2] < rect[0] || rect[3] < rect[1])
-  {
-    rect[0] = rect[1] = 0;
-    rect[2] = rect[3] = -1; // off screen: nothing to do
-  }
+  vtkNPRScreenRectangleOfProps(state, width, height, this->ContentRectangle);
 }
 
 void vtkNPRGBufferPass::Render(const vtkRenderState* state)
@@ -446,7 +315,7 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   this->PostRender(state);
 
   this->HasContent = true;
-  this->Internal->Last = TakeSignature(
+  this->Internal->Last = vtkNPRTakeFrameSignature(
     state, width, height, this->WritesNormals, this->WritesObjectIds, this->GetSettingsTime());
   this->Internal->Valid = true;
   ++this->NumberOfGeometryDraws;

@@ -22,9 +22,9 @@
 #define vtkNPRShadingNormals_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkIONPRModule.h" // for export macro
 
-class VTKRENDERINGNPR_EXPORT vtkNPRShadingNormals : public vtkPolyDataAlgorithm
+class VTKIONPR_EXPORT vtkNPRShadingNormals : public vtkPolyDataAlgorithm
 {
 public:
   static vtkNPRShadingNormals* New();

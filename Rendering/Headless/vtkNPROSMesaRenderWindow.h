@@ -20,11 +20,11 @@
 #define vtkNPROSMesaRenderWindow_h
 
 #include "vtkNPRHeadlessRenderWindow.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkRenderingHeadlessNPRModule.h" // for export macro
 
 #include <vector> // for std::vector
 
-class VTKRENDERINGNPR_EXPORT vtkNPROSMesaRenderWindow : public vtkNPRHeadlessRenderWindow
+class VTKRENDERINGHEADLESSNPR_EXPORT vtkNPROSMesaRenderWindow : public vtkNPRHeadlessRenderWindow
 {
 public:
   static vtkNPROSMesaRenderWindow* New();

@@ -59,7 +59,7 @@
 #define vtkNPRReferenceMask_h
 
 #include "vtkObject.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkFiltersNPRModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
@@ -67,7 +67,7 @@ class vtkImageData;
 class vtkPolyData;
 class vtkRenderer;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRReferenceMask : public vtkObject
+class VTKFILTERSNPR_EXPORT vtkNPRReferenceMask : public vtkObject
 {
 public:
   static vtkNPRReferenceMask* New();

@@ -23,11 +23,11 @@
 #define vtkNPRHeadlessRenderWindow_h
 
 #include "vtkGenericOpenGLRenderWindow.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkRenderingHeadlessNPRModule.h" // for export macro
 
 #include <string> // for std::string
 
-class VTKRENDERINGNPR_EXPORT vtkNPRHeadlessRenderWindow : public vtkGenericOpenGLRenderWindow
+class VTKRENDERINGHEADLESSNPR_EXPORT vtkNPRHeadlessRenderWindow : public vtkGenericOpenGLRenderWindow
 {
 public:
   vtkTypeMacro(vtkNPRHeadlessRenderWindow, vtkGenericOpenGLRenderWindow);

@@ -19,11 +19,11 @@
 #define vtkNPROFFReader_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkIONPRModule.h" // for export macro
 
 #include <string> // for std::string
 
-class VTKRENDERINGNPR_EXPORT vtkNPROFFReader : public vtkPolyDataAlgorithm
+class VTKIONPR_EXPORT vtkNPROFFReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkNPROFFReader* New();

@@ -29,12 +29,12 @@
 #define vtkNPRRenderWindowFactory_h
 
 #include "vtkObject.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkRenderingHeadlessNPRModule.h" // for export macro
 #include "vtkWrappingHints.h"      // for VTK_NEWINSTANCE
 
 class vtkRenderWindow;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRRenderWindowFactory : public vtkObject
+class VTKRENDERINGHEADLESSNPR_EXPORT vtkNPRRenderWindowFactory : public vtkObject
 {
 public:
   static vtkNPRRenderWindowFactory* New();

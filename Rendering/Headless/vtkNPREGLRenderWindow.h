@@ -22,11 +22,11 @@
 #define vtkNPREGLRenderWindow_h
 
 #include "vtkNPRHeadlessRenderWindow.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkRenderingHeadlessNPRModule.h" // for export macro
 
 #include <string> // for std::string
 
-class VTKRENDERINGNPR_EXPORT vtkNPREGLRenderWindow : public vtkNPRHeadlessRenderWindow
+class VTKRENDERINGHEADLESSNPR_EXPORT vtkNPREGLRenderWindow : public vtkNPRHeadlessRenderWindow
 {
 public:
   static vtkNPREGLRenderWindow* New();

@@ -18,11 +18,11 @@
 #define vtkNPRModelReader_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkIONPRModule.h" // for export macro
 
 #include <string> // for std::string
 
-class VTKRENDERINGNPR_EXPORT vtkNPRModelReader : public vtkPolyDataAlgorithm
+class VTKIONPR_EXPORT vtkNPRModelReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkNPRModelReader* New();
