@@ -73,6 +73,9 @@ case $name in
     exit 2 ;;
 esac
 root=$base/$name
+# The host's archive may be a dated snapshot, whose Release files are past their Valid-Until
+# (Debian unstable's expire a week after they are made): the signature is still checked.
+apt_update_options="-o Acquire::Check-Valid-Until=false"
 
 # The URI of the host's apt source for its own Debian release (deb822 or one-line format).
 host_mirror() {
@@ -139,8 +142,8 @@ setup() {
   missing=$(comm -13 <(echo "$installed") <(printf '%s\n' "${packages[@]}" | sort) | tr '\n' ' ')
   if [[ -n ${missing// /} ]]; then
     echo "debian-chroot: $name: installing $missing"
-    in_chroot "apt-get update -q && apt-get install -y -q --no-install-recommends $missing \
-      && apt-get clean"
+    in_chroot "apt-get $apt_update_options update -q && apt-get install -y -q \
+      --no-install-recommends $missing && apt-get clean"
     echo "debian-chroot: $name ready in $((SECONDS - start)) s"
   fi
 }
@@ -149,7 +152,7 @@ case $action in
   setup) setup ;;
   refresh)
     setup
-    in_chroot "apt-get update -q && apt-get upgrade -y -q && apt-get clean"
+    in_chroot "apt-get $apt_update_options update -q && apt-get upgrade -y -q && apt-get clean"
     ;;
   run)
     setup

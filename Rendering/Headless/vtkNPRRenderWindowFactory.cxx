@@ -75,7 +75,8 @@ public:
       // VTK's text is "Warning: In FILE, line N\nCLASS (ADDRESS): message": keep the message.
       std::string line(text);
       line.erase(line.find_last_not_of(" \n") + 1);
-      const size_t object = line.find("): ", line.rfind('\n') == std::string::npos ? 0 : line.rfind('\n'));
+      const size_t object =
+        line.find("): ", line.rfind('\n') == std::string::npos ? 0 : line.rfind('\n'));
       if (object != std::string::npos)
       {
         line.erase(0, object + 3);
@@ -223,8 +224,8 @@ vtkRenderWindow* vtkNPRRenderWindowFactory::CreateRenderWindow(const char* backe
   }
   else
   {
-    vtkGenericWarningMacro(<< "unknown render window backend '" << name << "'; valid backends: "
-                           << GetKnownBackends());
+    vtkGenericWarningMacro(<< "unknown render window backend '" << name
+                           << "'; valid backends: " << GetKnownBackends());
     return nullptr;
   }
   window->SetMultiSamples(0);

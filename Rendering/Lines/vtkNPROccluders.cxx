@@ -59,8 +59,7 @@ bool SegmentMeetsTriangle(
 }
 }
 
-void vtkNPROccluders::Build(
-  const std::vector<vtkNPRMeshInstance>& actors, int trianglesPerLocator)
+void vtkNPROccluders::Build(const std::vector<vtkNPRMeshInstance>& actors, int trianglesPerLocator)
 {
   // All triangles in world coordinates, double; points with a NaN or infinite coordinate are
   // left out with their triangles (they would spoil the locators' bounds).
@@ -85,7 +84,8 @@ void vtkNPROccluders::Build(
       vtkNPRTransformPoint(state.Matrix.data(), x, world);
       finite[i] = std::isfinite(world[0]) && std::isfinite(world[1]) && std::isfinite(world[2]);
     }
-    auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c) {
+    auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c)
+    {
       for (vtkIdType corner : { a, b, c })
       {
         if (corner < 0 || corner >= count || !finite[corner])

@@ -85,7 +85,6 @@ struct vtkNPRReferenceMask::Internals
     }
     return entry.Lines;
   }
-
 };
 
 vtkStandardNewMacro(vtkNPRReferenceMask);
@@ -302,7 +301,8 @@ bool vtkNPRReferenceMask::Update()
   vtkNew<vtkUnsignedCharArray> visibleTypes;
   visibleTypes->SetName("FeatureType");
   std::vector<vtkIdType> run;
-  auto endRun = [&](unsigned char type) {
+  auto endRun = [&](unsigned char type)
+  {
     if (run.size() >= 2)
     {
       visibleCells->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());

@@ -2,6 +2,7 @@
 
 #include "vtkMath.h"
 #include "vtkNPRGBufferPass.h"
+#include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkNPRQuadProgram.h"
 #include "vtkObjectFactory.h"
@@ -13,7 +14,6 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtkNPROpenGL.h"
 
 #include "vtkNPREdgeCompositeFS.h"
 #include "vtkNPREdgeDetectFS.h"
@@ -81,9 +81,9 @@ struct LineFilter
     {
       for (const auto& x : taps1D)
       {
-        this->Taps.insert(this->Taps.end(), { static_cast<float>(x.first),
-                                              static_cast<float>(y.first),
-                                              static_cast<float>(x.second * y.second) });
+        this->Taps.insert(this->Taps.end(),
+          { static_cast<float>(x.first), static_cast<float>(y.first),
+            static_cast<float>(x.second * y.second) });
       }
     }
     // Across a one-pixel line the filtered value is P(d) = g(d): coverage is P's level set at d =
@@ -201,18 +201,18 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
   const int encoding = gbuffer->GetWrittenEncoding();
   if (encoding != this->Encoding && !internal.WarnedAboutEncoding)
   {
-    vtkWarningMacro("the G-buffer holds the " << GetEncodingName(encoding)
-                                              << " encoding, not the edge pass's "
-                                              << GetEncodingName(this->Encoding)
-                                              << ": set its GeometryEncoding to match");
+    vtkWarningMacro("the G-buffer holds the "
+      << GetEncodingName(encoding) << " encoding, not the edge pass's "
+      << GetEncodingName(this->Encoding) << ": set its GeometryEncoding to match");
     internal.WarnedAboutEncoding = true;
   }
   const bool packed = encoding == PACKED8 || encoding == PACKED16;
   std::ostringstream detectDefines;
   detectDefines << "#define NPR_ENCODING " << encoding << "\n#define NPR_PACKED_BLUR "
-                << (packed && this->PackedBlur ? 1 : 0) << "\n#define NPR_PERSPECTIVE " << (gbuffer->GetPerspective() ? 1 : 0)
-                << "\n#define NPR_SILHOUETTES " << (this->Silhouettes ? 1 : 0)
-                << "\n#define NPR_CREASES " << (this->Creases && gbuffer->GetWritesNormals() ? 1 : 0)
+                << (packed && this->PackedBlur ? 1 : 0) << "\n#define NPR_PERSPECTIVE "
+                << (gbuffer->GetPerspective() ? 1 : 0) << "\n#define NPR_SILHOUETTES "
+                << (this->Silhouettes ? 1 : 0) << "\n#define NPR_CREASES "
+                << (this->Creases && gbuffer->GetWritesNormals() ? 1 : 0)
                 << "\n#define NPR_CONTOURS " << (this->Contours ? 1 : 0)
                 << "\n#define NPR_HAVE_OBJECT_IDS " << (gbuffer->GetWritesObjectIds() ? 1 : 0)
                 << "\n#define NPR_CONTOUR_SIDE " << this->ContourSide << "\n";
@@ -308,9 +308,9 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
     vtkShaderProgram::Substitute(internal.CompositeSource, "//NPR::LineColor", vtkNPRLineColor);
     vtkShaderProgram::Substitute(internal.CompositeSource, "//NPR::WindowDepth", vtkNPRWindowDepth);
   }
-  vtkNPRQuadProgram& composite = output == OutputLineCoverage ? internal.Coverage : internal.Composite;
-  vtkShaderProgram* program =
-    composite.Ready(window, internal.CompositeSource, defines.str());
+  vtkNPRQuadProgram& composite =
+    output == OutputLineCoverage ? internal.Coverage : internal.Composite;
+  vtkShaderProgram* program = composite.Ready(window, internal.CompositeSource, defines.str());
   if (!program)
   {
     vtkErrorMacro("the line composite shader did not compile");
@@ -326,7 +326,8 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
   {
     internal.LineTexture->Activate();
     program->SetUniformi("lineTexture", internal.LineTexture->GetTextureUnit());
-    program->SetUniform3fv("taps", taps, reinterpret_cast<const float(*)[3]>(internal.Filter.Taps.data()));
+    program->SetUniform3fv(
+      "taps", taps, reinterpret_cast<const float(*)[3]>(internal.Filter.Taps.data()));
     const float texelSize[2] = { 1.0f / width, 1.0f / height };
     program->SetUniform2f("texelSize", texelSize);
     program->SetUniformf("coverageLevel", internal.Filter.CoverageLevel);
@@ -357,8 +358,8 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
   else
   {
     glState->vtkglEnable(GL_SCISSOR_TEST);
-    glState->vtkglScissor(origin[0] + rect[0], origin[1] + rect[1], rect[2] - rect[0] + 1,
-      rect[3] - rect[1] + 1);
+    glState->vtkglScissor(
+      origin[0] + rect[0], origin[1] + rect[1], rect[2] - rect[0] + 1, rect[3] - rect[1] + 1);
   }
   if (output == OutputLineCoverage)
   {

@@ -76,8 +76,8 @@ void vtkNPRScreenRectangleOfProps(const vtkRenderState* state, int width, int he
     return;
   }
   vtkCamera* camera = state->GetRenderer()->GetActiveCamera();
-  vtkMatrix4x4* toClip = camera->GetCompositeProjectionTransformMatrix(
-    static_cast<double>(width) / height, -1.0, 1.0);
+  vtkMatrix4x4* toClip =
+    camera->GetCompositeProjectionTransformMatrix(static_cast<double>(width) / height, -1.0, 1.0);
   double box[4] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   for (int corner = 0; corner < 8; ++corner)
   {

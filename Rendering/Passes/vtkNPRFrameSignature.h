@@ -40,7 +40,8 @@ struct vtkNPRFrameSignature
   bool operator==(const vtkNPRFrameSignature& o) const
   {
     return this->Props == o.Props && this->Lights == o.Lights && this->Camera == o.Camera &&
-      this->CameraTime == o.CameraTime && std::equal(this->RendererSettings, this->RendererSettings + 5, o.RendererSettings) &&
+      this->CameraTime == o.CameraTime &&
+      std::equal(this->RendererSettings, this->RendererSettings + 5, o.RendererSettings) &&
       this->PassTime == o.PassTime && this->Size[0] == o.Size[0] && this->Size[1] == o.Size[1] &&
       this->Normals == o.Normals && this->Ids == o.Ids;
   }
@@ -48,8 +49,8 @@ struct vtkNPRFrameSignature
 
 // The signature of this frame: props and their redraw times, lights, camera, the renderer's
 // shading settings, the pass's settings time, the size and the channels written.
-vtkNPRFrameSignature vtkNPRTakeFrameSignature(
-  const vtkRenderState* state, int width, int height, bool normals, bool ids, vtkMTimeType passTime);
+vtkNPRFrameSignature vtkNPRTakeFrameSignature(const vtkRenderState* state, int width, int height,
+  bool normals, bool ids, vtkMTimeType passTime);
 
 // The screen rectangle (xmin, ymin, xmax, ymax, inclusive) that the bounds of the frame's opaque
 // props project to, with a margin for wide lines; the whole buffer when unknown (a prop without

@@ -4,6 +4,7 @@
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNPRFrameSignature.h"
+#include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLCamera.h"
@@ -17,7 +18,6 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtkNPROpenGL.h"
 
 #include "vtkNPRCopyFS.h"
 #include "vtkNPRDepthGeometryFS.h"
@@ -57,9 +57,9 @@ vtkNPRGBufferPass::~vtkNPRGBufferPass()
   this->InverseProjection->Delete();
   // Texture and framebuffer objects free their OpenGL names through the window's resource
   // callbacks when their context is still alive.
-  for (vtkObject* object : { static_cast<vtkObject*>(this->ColorTexture),
-         static_cast<vtkObject*>(this->GeometryTexture),
-         static_cast<vtkObject*>(this->DepthTexture), static_cast<vtkObject*>(this->Framebuffer) })
+  for (vtkObject* object :
+    { static_cast<vtkObject*>(this->ColorTexture), static_cast<vtkObject*>(this->GeometryTexture),
+      static_cast<vtkObject*>(this->DepthTexture), static_cast<vtkObject*>(this->Framebuffer) })
   {
     if (object)
     {
@@ -396,7 +396,8 @@ void vtkNPRGBufferPass::RenderDepthOnly(const vtkRenderState* state, int width, 
   glState->vtkglDepthMask(GL_FALSE);
   glState->vtkglDisable(GL_BLEND);
   glState->vtkglDisable(GL_SCISSOR_TEST);
-  vtkShaderProgram* program = this->Internal->DepthGeometry.Ready(window, vtkNPRDepthGeometryFS, "");
+  vtkShaderProgram* program =
+    this->Internal->DepthGeometry.Ready(window, vtkNPRDepthGeometryFS, "");
   if (program)
   {
     this->DepthTexture->Activate();
@@ -445,8 +446,10 @@ bool vtkNPRGBufferPass::PreReplaceShaderValues(
   {
     // A tag of our own right after lighting, where the normal and position are in scope; filled
     // in after VTK's own replacements (PostReplaceShaderValues) when we know what the shader has.
-    vtkNPRInsertAfterShaderTag(fragmentShader, "//VTK::Light::Impl", "//NPR::GBuffer::Impl", this, "fragment");
-    vtkNPRInsertAfterShaderTag(fragmentShader, "//VTK::Output::Dec", "//NPR::GBuffer::Dec", this, "fragment");
+    vtkNPRInsertAfterShaderTag(
+      fragmentShader, "//VTK::Light::Impl", "//NPR::GBuffer::Impl", this, "fragment");
+    vtkNPRInsertAfterShaderTag(
+      fragmentShader, "//VTK::Output::Dec", "//NPR::GBuffer::Dec", this, "fragment");
   }
   return true;
 }

@@ -1,6 +1,7 @@
 #include "vtkNPRInkPass.h"
 
 #include "vtkActor.h"
+#include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
@@ -10,7 +11,6 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
-#include "vtkNPROpenGL.h"
 #include "vtkVersionMacros.h"
 #if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
 #include "vtkCompositePolyDataMapper.h"
@@ -163,8 +163,10 @@ bool vtkNPRInkPass::PreReplaceShaderValues(
   if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
   {
     // After texturing: the colour is final there.
-    vtkNPRInsertAfterShaderTag(fragmentShader, "//VTK::TCoord::Impl", "//NPR::Ink::Impl", this, "fragment");
-    vtkNPRInsertAfterShaderTag(fragmentShader, "//VTK::Output::Dec", "//NPR::Ink::Dec", this, "fragment");
+    vtkNPRInsertAfterShaderTag(
+      fragmentShader, "//VTK::TCoord::Impl", "//NPR::Ink::Impl", this, "fragment");
+    vtkNPRInsertAfterShaderTag(
+      fragmentShader, "//VTK::Output::Dec", "//NPR::Ink::Dec", this, "fragment");
   }
   return true;
 }

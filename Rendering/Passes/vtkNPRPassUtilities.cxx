@@ -1,13 +1,13 @@
 #include "vtkNPRPassUtilities.h"
 
 #include "vtkHardwareSelector.h"
+#include "vtkNPROpenGL.h"
 #include "vtkObject.h"
-#include "vtkShaderProgram.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkRenderState.h"
-#include "vtkRenderer.h"
 #include "vtkRenderWindow.h"
-#include "vtkNPROpenGL.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
 
 #include <algorithm>
 #include <mutex>
@@ -27,7 +27,8 @@ double vtkNPRWindowScale(vtkRenderer* renderer)
 bool vtkNPRInsertAfterShaderTag(
   std::string& source, const char* vtkTag, const char* tag, vtkObject* pass, const char* stage)
 {
-  if (vtkShaderProgram::Substitute(source, vtkTag, std::string(vtkTag) + "\n  " + tag + "\n", false))
+  if (vtkShaderProgram::Substitute(
+        source, vtkTag, std::string(vtkTag) + "\n  " + tag + "\n", false))
   {
     return true;
   }

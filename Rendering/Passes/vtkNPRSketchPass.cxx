@@ -3,11 +3,12 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
-#include "vtkNew.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
+#include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkNPRQuadProgram.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -18,11 +19,10 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtkNPROpenGL.h"
 
 #include "vtkNPRLineColor.h"
-#include "vtkNPRWindowDepth.h"
 #include "vtkNPRSketchFS.h"
+#include "vtkNPRWindowDepth.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,8 +32,8 @@
 
 namespace
 {
-constexpr int NoiseSize = 256;     // texels of the tile on each side
-constexpr int NoiseCells = 8;      // lattice cells of the tile on each side
+constexpr int NoiseSize = 256; // texels of the tile on each side
+constexpr int NoiseCells = 8;  // lattice cells of the tile on each side
 constexpr int TexelsPerCell = NoiseSize / NoiseCells;
 
 // Periodic 2D Perlin gradient noise over a NoiseCells x NoiseCells lattice.

@@ -16,8 +16,8 @@
 int main(int argc, char* argv[])
 {
   const char* backend = argc > 1 ? argv[1] : nullptr;
-  auto window = vtkSmartPointer<vtkRenderWindow>::Take(
-    vtkNPRRenderWindowFactory::CreateRenderWindow(backend));
+  auto window =
+    vtkSmartPointer<vtkRenderWindow>::Take(vtkNPRRenderWindowFactory::CreateRenderWindow(backend));
   if (!window)
   {
     std::cerr << "consumer: no render window\n";

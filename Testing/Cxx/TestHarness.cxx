@@ -75,8 +75,8 @@ int main(int argc, char* argv[])
     "a failed comparison left no rendered or diff image");
   NPR_CHECK(!nprCompareWithBaselineFile(Gradient(81, 60), baseline, "harness_size", tolerance),
     "a different size passes");
-  NPR_CHECK(!nprCompareWithBaselineFile(Gradient(80, 60), scratch + "/missing.png",
-              "harness_missing", tolerance),
+  NPR_CHECK(!nprCompareWithBaselineFile(
+              Gradient(80, 60), scratch + "/missing.png", "harness_missing", tolerance),
     "a missing baseline passes");
 
   // A release's own baseline is preferred to the shared one, only where it exists.
@@ -92,8 +92,8 @@ int main(int argc, char* argv[])
   setenv("NPR_UPDATE_BASELINES", "1", 1);
   const std::string created = scratch + "/harness_created.png";
   std::remove(created.c_str());
-  NPR_CHECK(nprCompareWithBaselineFile(changed, created, "harness_created", tolerance) &&
-      Exists(created),
+  NPR_CHECK(
+    nprCompareWithBaselineFile(changed, created, "harness_created", tolerance) && Exists(created),
     "NPR_UPDATE_BASELINES did not write the baseline");
   unsetenv("NPR_UPDATE_BASELINES");
   NPR_CHECK(nprCompareWithBaselineFile(changed, created, "harness_created", tolerance),

@@ -85,7 +85,8 @@ void CheckRendered(vtkRenderWindow* window, const double color[3], const std::st
             << " %, luminance " << stats.MinObjectLuminance << ".." << stats.MaxObjectLuminance
             << ", mean colour " << stats.MeanObjectColor[0] << "," << stats.MeanObjectColor[1]
             << "," << stats.MeanObjectColor[2] << "\n";
-  NPR_CHECK(fraction > 0.05 && fraction < 0.8, what << ": object covers " << 100 * fraction << " %");
+  NPR_CHECK(
+    fraction > 0.05 && fraction < 0.8, what << ": object covers " << 100 * fraction << " %");
   NPR_CHECK(stats.MaxObjectLuminance - stats.MinObjectLuminance > 60,
     what << ": no lighting gradient (" << stats.MinObjectLuminance << ".."
          << stats.MaxObjectLuminance << ")");
@@ -156,7 +157,8 @@ void TestWindows(const char* backend)
   const double colors[3][3] = { { 0.9, 0.2, 0.2 }, { 0.2, 0.8, 0.2 }, { 0.2, 0.3, 0.95 } };
   for (int i = 0; i < 3; ++i)
   {
-    vtkSmartPointer<vtkRenderWindow> window = nprCreateTestWindow(200 + 60 * i, 160 + 40 * i, backend);
+    vtkSmartPointer<vtkRenderWindow> window =
+      nprCreateTestWindow(200 + 60 * i, 160 + 40 * i, backend);
     NPR_CHECK(window, "no window " << i);
     if (!window)
     {
@@ -212,7 +214,7 @@ void TestFactoryRefuses(const char* backend, const char* reason)
   NPR_CHECK(said.find(std::string("no ") + backend + " render window") != std::string::npos &&
       said.find(reason) != std::string::npos,
     "the factory's warning does not say 'no " << backend << " render window' and '" << reason
-                                               << "'");
+                                              << "'");
 }
 
 #if NPR_HAS_OWN_HEADLESS_WINDOWS
