@@ -2,7 +2,9 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCubeSource.h"
 #include "vtkImageData.h"
+#include "vtkNPREdgePass.h"
 #include "vtkNPRModelReader.h"
 #include "vtkNPRShadingNormals.h"
 #include "vtkNPRRenderWindowFactory.h"
@@ -14,6 +16,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVersionMacros.h"
 #include "vtkWindowToImageFilter.h"
@@ -106,23 +109,122 @@ vtkSmartPointer<vtkImageData> nprPassScene::Render()
   return nprCaptureImage(this->Window);
 }
 
-vtkSmartPointer<vtkActor> nprAddBaselineModel(vtkRenderer* renderer, const std::string& model)
+vtkSmartPointer<vtkImageData> nprPassScene::Mask()
 {
-  vtkNew<vtkNPRModelReader> reader;
+  this->Edges()->CoverageOnlyOn();
+  auto image = this->Render();
+  this->Edges()->CoverageOnlyOff();
+  if (const char* dump = std::getenv("NPR_TEST_DUMP")) // NPR_TEST_DUMP=prefix: keep the masks
+  {
+    static int count = 0;
+    nprWritePNG(image, std::string(dump) + std::to_string(count++) + ".png");
+  }
+  return image;
+}
+
+void nprPassScene::LookAtOrigin(double distance)
+{
+  this->Camera()->SetPosition(0, 0, distance);
+  this->Camera()->SetFocalPoint(0, 0, 0);
+  this->Camera()->SetViewUp(0, 1, 0);
+  this->Camera()->SetClippingRange(1, 10);
+}
+
+void nprPassScene::Project(const double world[3], double display[2])
+{
+  nprWorldToDisplay(this->Renderer, world, display);
+}
+
+vtkSmartPointer<vtkRenderer> nprPassScene::AddOverlay()
+{
+  auto overlay = vtkSmartPointer<vtkRenderer>::New();
+  overlay->SetLayer(1);
+  overlay->PreserveDepthBufferOn();
+  overlay->SetActiveCamera(this->Camera());
+  overlay->InteractiveOff();
+  this->Window->SetNumberOfLayers(2);
+  this->Window->AddRenderer(overlay);
+  return overlay;
+}
+
+void nprWorldToDisplay(vtkRenderer* renderer, const double world[3], double display[2])
+{
+  renderer->SetWorldPoint(world[0], world[1], world[2], 1.0);
+  renderer->WorldToDisplay();
+  const double* point = renderer->GetDisplayPoint();
+  display[0] = point[0];
+  display[1] = point[1];
+}
+
+double nprSegmentDistance(const double p[2], const double a[2], const double b[2])
+{
+  const double abx = b[0] - a[0], aby = b[1] - a[1];
+  const double length2 = abx * abx + aby * aby;
+  double t = length2 > 0 ? ((p[0] - a[0]) * abx + (p[1] - a[1]) * aby) / length2 : 0.0;
+  t = std::min(1.0, std::max(0.0, t));
+  return std::hypot(p[0] - (a[0] + t * abx), p[1] - (a[1] + t * aby));
+}
+
+vtkSmartPointer<vtkActor> nprAddCube(
+  vtkRenderer* renderer, const double center[3], double size, const double color[3])
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetCenter(center[0], center[1], center[2]);
+  cube->SetXLength(size);
+  cube->SetYLength(size);
+  cube->SetZLength(size);
+  return nprAddActor(renderer, cube->GetOutputPort(), color);
+}
+
+vtkSmartPointer<vtkActor> nprAddSphere(vtkRenderer* renderer, const double center[3], double radius,
+  const double color[3], int resolution)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(center[0], center[1], center[2]);
+  sphere->SetRadius(radius);
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(resolution / 2);
+  return nprAddActor(renderer, sphere->GetOutputPort(), color);
+}
+
+void nprViewFromCorner(vtkCamera* camera, const double eye[3], bool parallel)
+{
+  camera->SetPosition(eye[0], eye[1], eye[2]);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(30);
+  camera->SetParallelProjection(parallel);
+  camera->SetParallelScale(1.0);
+  camera->SetClippingRange(1.0, 10.0);
+}
+
+vtkSmartPointer<vtkNPRModelReader> nprReadTestModel(const std::string& model)
+{
+  auto reader = vtkSmartPointer<vtkNPRModelReader>::New();
   reader->SetFileName((nprTestDataDir() + "/" + model).c_str());
   reader->Update();
   NPR_CHECK(!*reader->GetErrorMessage(), reader->GetErrorMessage());
-  vtkNew<vtkNPRShadingNormals> normals;
-  normals->SetInputConnection(reader->GetOutputPort());
-  const double color[3] = { 0.85, 0.82, 0.75 };
-  vtkSmartPointer<vtkActor> actor = nprAddActor(renderer, normals->GetOutputPort(), color);
-  actor->GetProperty()->SetSpecular(0.3);
-  actor->GetProperty()->SetSpecularPower(30.0);
+  return reader;
+}
+
+void nprTurnBaselineCamera(vtkRenderer* renderer)
+{
   renderer->ResetCamera();
   renderer->GetActiveCamera()->Azimuth(30);
   renderer->GetActiveCamera()->Elevation(30);
   renderer->GetActiveCamera()->OrthogonalizeViewUp();
   renderer->ResetCameraClippingRange();
+}
+
+vtkSmartPointer<vtkActor> nprAddBaselineModel(vtkRenderer* renderer, const std::string& model)
+{
+  vtkNew<vtkNPRShadingNormals> normals;
+  normals->SetInputConnection(nprReadTestModel(model)->GetOutputPort());
+  const double color[3] = { 0.85, 0.82, 0.75 };
+  vtkSmartPointer<vtkActor> actor = nprAddActor(renderer, normals->GetOutputPort(), color);
+  actor->GetProperty()->SetSpecular(0.3);
+  actor->GetProperty()->SetSpecularPower(30.0);
+  nprTurnBaselineCamera(renderer);
   return actor;
 }
 
@@ -134,6 +236,20 @@ int nprPixel(vtkImageData* image, int x, int y, int component)
     return 0;
   }
   return static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0))[component];
+}
+
+long long nprCountAbove(vtkImageData* image, int threshold)
+{
+  const int* dims = image->GetDimensions();
+  long long count = 0;
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    for (int x = 0; x < dims[0]; ++x)
+    {
+      count += nprPixel(image, x, y) > threshold ? 1 : 0;
+    }
+  }
+  return count;
 }
 
 int& nprTestFailures()

@@ -31,7 +31,9 @@
 
 class vtkActor;
 class vtkAlgorithmOutput;
+class vtkCamera;
 class vtkImageData;
+class vtkNPRModelReader;
 class vtkRenderWindow;
 class vtkRenderer;
 
@@ -60,9 +62,27 @@ int nprRunTestCase(
 vtkSmartPointer<vtkActor> nprAddActor(
   vtkRenderer* renderer, vtkAlgorithmOutput* port, const double color[3] = nullptr);
 
-// The baseline scenes' model: Testing/Data/<model> read by vtkNPRModelReader, prepared by
-// vtkNPRShadingNormals as npr-render prepares it, in a warm grey with a little specular, added
-// to the renderer; the camera reset, then turned 30 degrees in azimuth and elevation.
+// A cube of edge length size about center (vtkCubeSource), added as by nprAddActor.
+vtkSmartPointer<vtkActor> nprAddCube(
+  vtkRenderer* renderer, const double center[3], double size, const double color[3] = nullptr);
+
+// A sphere of resolution x resolution / 2 facets (theta x phi), added as by nprAddActor.
+vtkSmartPointer<vtkActor> nprAddSphere(vtkRenderer* renderer, const double center[3], double radius,
+  const double color[3], int resolution = 128);
+
+// The cube tests' camera: at eye, looking at the origin, y up, a view angle of 30 degrees or a
+// parallel scale of 1, clipping range 1..10.
+void nprViewFromCorner(vtkCamera* camera, const double eye[3], bool parallel);
+
+// Testing/Data/<model> read by vtkNPRModelReader (updated); a failed check when it reports one.
+vtkSmartPointer<vtkNPRModelReader> nprReadTestModel(const std::string& model);
+
+// The baseline scenes' view: the camera reset, then turned 30 degrees in azimuth and elevation.
+void nprTurnBaselineCamera(vtkRenderer* renderer);
+
+// The baseline scenes' model: nprReadTestModel, prepared by vtkNPRShadingNormals as npr-render
+// prepares it, in a warm grey with a little specular, added to the renderer; then
+// nprTurnBaselineCamera.
 vtkSmartPointer<vtkActor> nprAddBaselineModel(vtkRenderer* renderer, const std::string& model);
 
 // A test window of the given size with one renderer (white background) drawn by a vtkNPRPass.
@@ -83,10 +103,28 @@ struct nprPassScene
   vtkCamera* Camera() { return this->Renderer->GetActiveCamera(); }
   // Renders a frame and returns the window's colour buffer (nprCaptureImage).
   vtkSmartPointer<vtkImageData> Render();
+  // The edge pass's line coverage alone, white lines on black (NPR_TEST_DUMP=prefix keeps them).
+  vtkSmartPointer<vtkImageData> Mask();
+  // The camera on +z at distance, looking at the origin, y up, clipping range 1..10.
+  void LookAtOrigin(double distance);
+  // Window coordinates of a world point (nprWorldToDisplay).
+  void Project(const double world[3], double display[2]);
+  // A renderer on layer 1 that keeps the depth buffer and shares the camera: it is depth-tested
+  // against what the pass left.
+  vtkSmartPointer<vtkRenderer> AddOverlay();
 };
+
+// Window coordinates (pixel centres at +0.5) of a world point through the renderer.
+void nprWorldToDisplay(vtkRenderer* renderer, const double world[3], double display[2]);
+
+// Distance from p to the segment ab, in the plane.
+double nprSegmentDistance(const double p[2], const double a[2], const double b[2]);
 
 // A channel (0..255) of an unsigned char image's pixel; 0 outside the image.
 int nprPixel(vtkImageData* image, int x, int y, int component = 0);
+
+// The pixels whose first channel exceeds threshold.
+long long nprCountAbove(vtkImageData* image, int threshold);
 
 // Counts failed checks; a test returns nprTestResult().
 int& nprTestFailures();

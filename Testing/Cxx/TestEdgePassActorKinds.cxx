@@ -1,0 +1,220 @@
+// The edge pass over every kind of opaque actor: point normals, cell normals only, no normals,
+// flat, unlit, zero-length normals, scalar colours, a texture, the wireframe and points
+// representations, a composite (multiblock) mapper and glyphs. Each is drawn and has lines.
+//
+// usage: TestEdgePassActorKinds CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+#include "nprTesting.h"
+
+#include "vtkActor.h"
+#include "vtkVersionMacros.h"
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
+#include "vtkCompositePolyDataMapper.h" // VTK 9.3 replaced Mapper2 with it (removed in 9.5)
+using nprCompositeMapper = vtkCompositePolyDataMapper;
+#else
+#include "vtkCompositePolyDataMapper2.h"
+using nprCompositeMapper = vtkCompositePolyDataMapper2;
+#endif
+#include "vtkConeSource.h"
+#include "vtkElevationFilter.h"
+#include "vtkFloatArray.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkImageData.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
+#include "vtkSphereSource.h"
+#include "vtkTexture.h"
+#include "vtkTextureMapToSphere.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
+
+#include <functional>
+#include <map>
+#include <string>
+
+namespace
+{
+using Scene = nprPassScene;
+
+// ---- Every kind of opaque actor: lines appear, nothing is reported, nothing crashes ----
+int ActorKinds()
+{
+  struct Kind
+  {
+    const char* Name;
+    std::function<vtkSmartPointer<vtkProp>()> Make;
+  };
+  auto sphereData = [](bool pointNormals) {
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetThetaResolution(24);
+    sphere->SetPhiResolution(12);
+    sphere->Update();
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->DeepCopy(sphere->GetOutput());
+    if (!pointNormals)
+    {
+      data->GetPointData()->SetNormals(nullptr);
+    }
+    return data;
+  };
+  auto actorFor = [](vtkPolyData* data) {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(data);
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    return actor;
+  };
+  const Kind kinds[] = {
+    { "point normals", [&] { return actorFor(sphereData(true)); } },
+    { "cell normals only",
+      [&] {
+        vtkNew<vtkPolyDataNormals> normals;
+        normals->SetInputData(sphereData(false));
+        normals->ComputePointNormalsOff();
+        normals->ComputeCellNormalsOn();
+        normals->Update();
+        return actorFor(normals->GetOutput());
+      } },
+    { "no normals", [&] { return actorFor(sphereData(false)); } },
+    { "flat",
+      [&] {
+        auto actor = actorFor(sphereData(true));
+        actor->GetProperty()->SetInterpolationToFlat();
+        return actor;
+      } },
+    { "unlit",
+      [&] {
+        auto actor = actorFor(sphereData(true));
+        actor->GetProperty()->LightingOff();
+        return actor;
+      } },
+    { "zero-length normals",
+      [&] {
+        auto data = sphereData(false);
+        vtkNew<vtkFloatArray> zero;
+        zero->SetNumberOfComponents(3);
+        zero->SetNumberOfTuples(data->GetNumberOfPoints());
+        zero->Fill(0.0);
+        zero->SetName("Normals");
+        data->GetPointData()->SetNormals(zero);
+        return actorFor(data);
+      } },
+    { "scalar colours",
+      [&] {
+        vtkNew<vtkElevationFilter> elevation;
+        elevation->SetInputData(sphereData(true));
+        elevation->SetLowPoint(0, -0.5, 0);
+        elevation->SetHighPoint(0, 0.5, 0);
+        elevation->Update();
+        auto data = vtkSmartPointer<vtkPolyData>::New();
+        data->ShallowCopy(elevation->GetOutput());
+        return actorFor(data);
+      } },
+    { "textured",
+      [&] {
+        vtkNew<vtkTextureMapToSphere> map;
+        map->SetInputData(sphereData(true));
+        map->Update();
+        auto data = vtkSmartPointer<vtkPolyData>::New();
+        data->ShallowCopy(map->GetOutput());
+        auto actor = actorFor(data);
+        vtkNew<vtkImageData> checker;
+        checker->SetDimensions(8, 8, 1);
+        checker->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+        for (int y = 0; y < 8; ++y)
+        {
+          for (int x = 0; x < 8; ++x)
+          {
+            for (int c = 0; c < 3; ++c)
+            {
+              checker->SetScalarComponentFromDouble(x, y, 0, c, (x + y) % 2 ? 230 : 60);
+            }
+          }
+        }
+        vtkNew<vtkTexture> texture;
+        texture->SetInputData(checker);
+        actor->SetTexture(texture);
+        return actor;
+      } },
+    { "wireframe lines",
+      [&] {
+        auto actor = actorFor(sphereData(true));
+        actor->GetProperty()->SetRepresentationToWireframe();
+        actor->GetProperty()->SetLineWidth(2);
+        return actor;
+      } },
+    { "points",
+      [&] {
+        auto actor = actorFor(sphereData(true));
+        actor->GetProperty()->SetRepresentationToPoints();
+        actor->GetProperty()->SetPointSize(6);
+        return actor;
+      } },
+    { "composite (multiblock)",
+      [&] {
+        vtkNew<vtkMultiBlockDataSet> blocks;
+        blocks->SetNumberOfBlocks(2);
+        auto left = sphereData(true);
+        auto right = sphereData(true);
+        vtkNew<vtkTransform> shift;
+        shift->Translate(0.8, 0, 0);
+        vtkNew<vtkTransformPolyDataFilter> moved;
+        moved->SetTransform(shift);
+        moved->SetInputData(right);
+        moved->Update();
+        blocks->SetBlock(0, left);
+        blocks->SetBlock(1, moved->GetOutput());
+        vtkNew<nprCompositeMapper> mapper;
+        mapper->SetInputDataObject(blocks);
+        auto actor = vtkSmartPointer<vtkActor>::New();
+        actor->SetMapper(mapper);
+        return actor;
+      } },
+    { "glyphs",
+      [&] {
+        vtkNew<vtkPlaneSource> grid;
+        grid->SetResolution(3, 3);
+        grid->Update();
+        vtkNew<vtkConeSource> cone;
+        cone->SetResolution(16);
+        cone->SetHeight(0.2);
+        cone->SetRadius(0.1);
+        vtkNew<vtkGlyph3DMapper> mapper;
+        mapper->SetInputConnection(grid->GetOutputPort());
+        mapper->SetSourceConnection(cone->GetOutputPort());
+        auto actor = vtkSmartPointer<vtkActor>::New();
+        actor->SetMapper(mapper);
+        return actor;
+      } },
+  };
+  for (const Kind& kind : kinds)
+  {
+    Scene scene(240, 180);
+    scene.Renderer->AddViewProp(kind.Make());
+    scene.Renderer->ResetCamera();
+    auto image = scene.Render();
+    auto mask = scene.Mask();
+    const double white[3] = { 1, 1, 1 };
+    const nprPixelStatistics stats = nprComputePixelStatistics(image, white);
+    const long long lines = nprCountAbove(mask, 127);
+    std::cout << kind.Name << ": " << stats.ObjectPixels << " object pixels, " << lines
+              << " line pixels\n";
+    NPR_CHECK(stats.ObjectPixels > 500, kind.Name << ": the actor was not drawn");
+    NPR_CHECK(lines > 40, kind.Name << ": no lines");
+  }
+  return nprTestResult();
+}
+}
+
+int main(int argc, char* argv[])
+{
+  const std::map<std::string, std::function<int()>> cases = {
+    { "actor-kinds", ActorKinds },
+  };
+  return nprRunTestCase(argc, argv, cases);
+}

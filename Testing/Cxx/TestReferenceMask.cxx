@@ -1,0 +1,441 @@
+// The ground-truth mask of the visible feature lines (vtkNPRReferenceMask): a cube's mask against
+// an independent projection of its visible edges, in perspective and parallel; occlusion by
+// another object; what is rebuilt between updates; the same lines and mask far from the origin
+// and at any scale; the grouping of the occluders changes nothing.
+//
+// usage: TestReferenceMask CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+#include "nprFeatureLineTesting.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellData.h"
+#include "vtkCubeSource.h"
+#include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
+#include "vtkNPRModelReader.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace
+{
+using namespace nprFeatureLineTesting;
+
+// A unit cube from a known camera: the mask against the analytic visible edges.
+int MaskCube(bool parallel)
+{
+  MaskScene scene(400, 300);
+  const double origin[3] = { 0, 0, 0 };
+  nprAddCube(scene.Renderer, origin, 1.0);
+  const double eye[3] = { 2.2, 1.7, 2.9 };
+  nprViewFromCorner(scene.Camera(), eye, parallel);
+  vtkImageData* mask = scene.Mask();
+  NPR_CHECK(mask->GetDimensions()[0] == 400 && mask->GetDimensions()[1] == 300 &&
+      mask->GetNumberOfScalarComponents() == 1 && mask->GetScalarType() == VTK_UNSIGNED_CHAR,
+    "the mask is not 400x300 unsigned char");
+
+  // Visible edges of a convex box: at least one face towards the viewer.
+  double toward[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    toward[i] = -eye[i]; // direction of projection (focal point at the origin)
+  }
+  std::vector<std::array<double, 4>> visible, hidden;
+  for (const BoxEdge& edge : BoxEdges())
+  {
+    const bool seen =
+      BoxFaceFront(edge.Faces[0][0], edge.Faces[0][1], parallel, parallel ? toward : eye) ||
+      BoxFaceFront(edge.Faces[1][0], edge.Faces[1][1], parallel, parallel ? toward : eye);
+    const auto a = scene.Project(edge.Ends.first), b = scene.Project(edge.Ends.second);
+    (seen ? visible : hidden).push_back({ a[0], a[1], b[0], b[1] });
+  }
+  NPR_CHECK(visible.size() == 9 && hidden.size() == 3, "a cube seen from a corner shows 9 edges");
+  auto nearest = [](const std::vector<std::array<double, 4>>& edges, const double p[2]) {
+    double best = 1e300;
+    for (const auto& e : edges)
+    {
+      best = std::min(best, nprSegmentDistance(p, &e[0], &e[2]));
+    }
+    return best;
+  };
+
+  // Precision: every mask pixel's centre lies within half a pixel diagonal of a visible edge.
+  double worst = 0.0;
+  long long pixels = 0, onHidden = 0;
+  for (int y = 0; y < scene.Height; ++y)
+  {
+    for (int x = 0; x < scene.Width; ++x)
+    {
+      const double p[2] = { x + 0.5, y + 0.5 };
+      const int value = nprPixel(mask, x, y);
+      NPR_CHECK(value == 0 || value == 255, "mask value " << value);
+      if (value)
+      {
+        ++pixels;
+        worst = std::max(worst, nearest(visible, p));
+      }
+      if (value && nearest(hidden, p) <= 0.5 && nearest(visible, p) > 1.5)
+      {
+        ++onHidden;
+      }
+    }
+  }
+  // Recall: along every visible edge, a mask pixel in the 3x3 pixels around each point.
+  long long samples = 0, found = 0;
+  for (const auto& e : visible)
+  {
+    const double length = std::hypot(e[2] - e[0], e[3] - e[1]);
+    const int steps = static_cast<int>(length / 0.1);
+    for (int s = 0; s <= steps; ++s)
+    {
+      const double px = e[0] + (e[2] - e[0]) * s / steps, py = e[1] + (e[3] - e[1]) * s / steps;
+      const int x = static_cast<int>(std::floor(px)), y = static_cast<int>(std::floor(py));
+      if (x < 2 || y < 2 || x >= scene.Width - 2 || y >= scene.Height - 2)
+      {
+        continue;
+      }
+      bool hit = false;
+      for (int oy = -1; oy <= 1 && !hit; ++oy)
+      {
+        for (int ox = -1; ox <= 1 && !hit; ++ox)
+        {
+          hit = nprPixel(mask, x + ox, y + oy) != 0;
+        }
+      }
+      ++samples;
+      found += hit ? 1 : 0;
+    }
+  }
+  vtkNPRReferenceMask* reference = scene.Reference;
+  std::cout << (parallel ? "parallel" : "perspective") << ": " << pixels
+            << " mask pixels, farthest centre " << worst << " px from a visible edge, " << onHidden
+            << " on hidden edges, " << found << "/" << samples << " edge points found; "
+            << reference->GetNumberOfFeatureEdges() << " edges, " << reference->GetNumberOfSamples()
+            << " samples, " << reference->GetNumberOfRayCasts() << " rays, "
+            << reference->GetNumberOfVisibleSamples() << " visible\n";
+  NPR_CHECK(pixels > 900, "too few mask pixels: " << pixels);
+  NPR_CHECK(pixels == reference->GetNumberOfLinePixels(), "GetNumberOfLinePixels is wrong");
+  NPR_CHECK(worst <= std::sqrt(0.5) + 1e-6, "a mask pixel lies " << worst << " px from the edges");
+  NPR_CHECK(onHidden == 0, onHidden << " mask pixels on hidden edges");
+  NPR_CHECK(found == samples,
+    "visible edges missed at " << samples - found << " of " << samples << " points");
+  NPR_CHECK(reference->GetNumberOfFeatureEdges() == 12, "the cube's 12 edges are feature lines");
+
+  // The visible lines: the same mask with them on, and every visible point in a mask pixel.
+  std::vector<unsigned char> first(static_cast<unsigned char*>(mask->GetScalarPointer()),
+    static_cast<unsigned char*>(mask->GetScalarPointer()) + scene.Width * scene.Height);
+  reference->GenerateVisibleLinesOn();
+  mask = scene.Mask();
+  const std::vector<unsigned char> second(static_cast<unsigned char*>(mask->GetScalarPointer()),
+    static_cast<unsigned char*>(mask->GetScalarPointer()) + scene.Width * scene.Height);
+  NPR_CHECK(first == second, "the mask changed with GenerateVisibleLines");
+  vtkPolyData* lines = reference->GetVisibleLines();
+  NPR_CHECK(lines->GetNumberOfCells() >= 9 && lines->GetCellData()->GetArray("FeatureType"),
+    "visible lines: " << lines->GetNumberOfCells() << " polylines");
+  NPR_CHECK(reference->GetNumberOfRayCasts() == reference->GetNumberOfSamples(),
+    "with visible lines every sample needs a ray");
+  long long outside = 0;
+  for (vtkIdType i = 0; i < lines->GetNumberOfPoints(); ++i)
+  {
+    Point p;
+    lines->GetPoint(i, p.data());
+    const auto d = scene.Project(p);
+    outside +=
+      nprPixel(mask, static_cast<int>(std::floor(d[0])), static_cast<int>(std::floor(d[1]))) ? 0
+                                                                                             : 1;
+  }
+  NPR_CHECK(outside <= 2, outside << " visible-line points outside the mask's pixels");
+  return nprTestResult();
+}
+
+// Andrew's monotone chain: the convex hull of 2D points, counter-clockwise.
+std::vector<std::array<double, 2>> ConvexHull(std::vector<std::array<double, 2>> points)
+{
+  std::sort(points.begin(), points.end());
+  std::vector<std::array<double, 2>> hull(2 * points.size());
+  size_t k = 0;
+  auto cross = [](const std::array<double, 2>& o, const std::array<double, 2>& a,
+                 const std::array<double, 2>& b) {
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  };
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0)
+    {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, t = k + 1; i > 0; --i)
+  {
+    while (k >= t && cross(hull[k - 2], hull[k - 1], points[i - 1]) <= 0)
+    {
+      --k;
+    }
+    hull[k++] = points[i - 1];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+// ---- A small cube behind a big one: hidden entirely, then in part ----
+int MaskOcclusion()
+{
+  MaskScene scene(400, 300);
+  const double origin[3] = { 0, 0, 0 };
+  vtkSmartPointer<vtkActor> big = nprAddCube(scene.Renderer, origin, 2.0);
+  vtkCamera* camera = scene.Camera();
+  camera->SetPosition(0.5, 0.4, 8.0);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetClippingRange(1.0, 20.0);
+  auto copy = [&](vtkImageData* mask) {
+    const unsigned char* p = static_cast<unsigned char*>(mask->GetScalarPointer());
+    return std::vector<unsigned char>(p, p + scene.Width * scene.Height);
+  };
+  const std::vector<unsigned char> bigOnly = copy(scene.Mask());
+
+  const double behind[3] = { 0, 0, -3 };
+  vtkSmartPointer<vtkActor> small = nprAddCube(scene.Renderer, behind, 0.5);
+  const std::vector<unsigned char> both = copy(scene.Mask());
+  big->VisibilityOff();
+  const std::vector<unsigned char> smallOnly = copy(scene.Mask());
+  big->VisibilityOn();
+  long long smallPixels = 0;
+  for (unsigned char v : smallOnly)
+  {
+    smallPixels += v ? 1 : 0;
+  }
+  std::cout << "small cube alone: " << smallPixels
+            << " pixels; behind the big one: " << (both == bigOnly ? "hidden" : "visible in part")
+            << "\n";
+  NPR_CHECK(smallPixels > 100, "the small cube alone has no lines");
+  NPR_CHECK(both == bigOnly, "the hidden cube changed the mask");
+
+  // Moved half out from behind: new pixels appear, none inside the big cube's outline.
+  small->SetPosition(1.45, 0.0, 0.0);
+  const std::vector<unsigned char> partly = copy(scene.Mask());
+  std::vector<std::array<double, 2>> corners;
+  for (int c = 0; c < 8; ++c)
+  {
+    corners.push_back(scene.Project(Corner(c, 1.0)));
+  }
+  const auto hull = ConvexHull(corners);
+  long long added = 0, inside = 0;
+  for (int y = 0; y < scene.Height; ++y)
+  {
+    for (int x = 0; x < scene.Width; ++x)
+    {
+      const size_t i = static_cast<size_t>(y) * scene.Width + x;
+      if (!partly[i] || bigOnly[i])
+      {
+        NPR_CHECK(partly[i] || !bigOnly[i], "the big cube's line pixel lost at " << x << "," << y);
+        continue;
+      }
+      ++added;
+      // Inside the hull by more than a pixel: hidden by the big cube.
+      double depth = 1e300;
+      for (size_t k = 0; k < hull.size(); ++k)
+      {
+        const auto& a = hull[k];
+        const auto& b = hull[(k + 1) % hull.size()];
+        const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+        depth = std::min(
+          depth, ((b[0] - a[0]) * (y + 0.5 - a[1]) - (b[1] - a[1]) * (x + 0.5 - a[0])) / length);
+      }
+      inside += depth > 1.0 ? 1 : 0;
+    }
+  }
+  std::cout << "small cube half out: " << added << " new pixels, " << inside
+            << " inside the big cube's outline\n";
+  NPR_CHECK(added > 50, "the part of the small cube out from behind has no lines");
+  NPR_CHECK(inside == 0, inside << " pixels of the hidden part in the mask");
+  return nprTestResult();
+}
+
+// ---- What the mask reuses between updates ----
+int MaskReuse()
+{
+  MaskScene scene(200, 150);
+  vtkNew<vtkCubeSource> cube;
+  vtkSmartPointer<vtkActor> actor = nprAddActor(scene.Renderer, cube->GetOutputPort());
+  vtkCamera* camera = scene.Camera();
+  camera->SetPosition(2.2, 1.7, 2.9);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetClippingRange(1.0, 10.0);
+  vtkNPRReferenceMask* reference = scene.Reference;
+  const long long first = nprCountAbove(scene.Mask(), 0);
+  camera->Azimuth(20);
+  const long long turned = nprCountAbove(scene.Mask(), 0);
+  NPR_CHECK(
+    reference->GetNumberOfAdjacencyBuilds() == 1 && reference->GetNumberOfLocatorBuilds() == 1,
+    "a camera move rebuilt: adjacency " << reference->GetNumberOfAdjacencyBuilds() << ", locator "
+                                        << reference->GetNumberOfLocatorBuilds());
+  NPR_CHECK(first > 100 && turned > 100, "no lines");
+  actor->SetPosition(0.2, 0, 0);
+  scene.Mask();
+  NPR_CHECK(
+    reference->GetNumberOfAdjacencyBuilds() == 1 && reference->GetNumberOfLocatorBuilds() == 2,
+    "an actor move: adjacency " << reference->GetNumberOfAdjacencyBuilds() << ", locator "
+                                << reference->GetNumberOfLocatorBuilds());
+  cube->SetXLength(1.5);
+  scene.Mask();
+  NPR_CHECK(
+    reference->GetNumberOfAdjacencyBuilds() == 2 && reference->GetNumberOfLocatorBuilds() == 3,
+    "a new mesh: adjacency " << reference->GetNumberOfAdjacencyBuilds() << ", locator "
+                             << reference->GetNumberOfLocatorBuilds());
+  // Translucent actors neither draw lines nor hide them; the explicit size wins.
+  actor->GetProperty()->SetOpacity(0.5);
+  NPR_CHECK(nprCountAbove(scene.Mask(), 0) == 0, "a translucent actor has lines");
+  actor->GetProperty()->SetOpacity(1.0);
+  reference->SetSize(64, 48);
+  NPR_CHECK(scene.Mask()->GetDimensions()[0] == 64 && nprCountAbove(reference->GetMask(), 0) > 20,
+    "an explicit size");
+  reference->CreasesOff();
+  reference->SilhouettesOff();
+  NPR_CHECK(nprCountAbove(scene.Mask(), 0) == 0, "no line types, still lines");
+  return nprTestResult();
+}
+
+// ---- Far from the origin and at any scale: the same lines and the same mask ----
+int Stability()
+{
+  // The filter on a double-precision box moved 1e7 away, the eye moved with it.
+  const double eye[3] = { 2.2, 1.7, 2.9 };
+  std::set<std::pair<vtkIdType, vtkIdType>> reference;
+  for (double offset : { 0.0, 1e7 })
+  {
+    vtkSmartPointer<vtkPolyData> box = Triangulated(MakeBox());
+    vtkNew<vtkPoints> moved;
+    moved->SetDataTypeToDouble();
+    for (vtkIdType i = 0; i < box->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      box->GetPoint(i, p);
+      moved->InsertNextPoint(p[0] + offset, p[1] - offset, p[2] + offset);
+    }
+    box->SetPoints(moved);
+    auto filter = MakeFilter(AllTypes);
+    filter->SetInputData(box);
+    filter->SetEyePosition(eye[0] + offset, eye[1] - offset, eye[2] + offset);
+    filter->Update();
+    std::set<std::pair<vtkIdType, vtkIdType>> lines;
+    auto* ids =
+      vtkIdTypeArray::SafeDownCast(filter->GetOutput()->GetCellData()->GetArray("InputPointIds"));
+    auto* types = vtkUnsignedCharArray::SafeDownCast(
+      filter->GetOutput()->GetCellData()->GetArray("FeatureType"));
+    for (vtkIdType i = 0; ids && types && i < ids->GetNumberOfTuples(); ++i)
+    {
+      lines.insert(
+        { ids->GetTypedComponent(i, 0) * 16 + types->GetValue(i), ids->GetTypedComponent(i, 1) });
+    }
+    if (offset == 0.0)
+    {
+      reference = lines;
+    }
+    NPR_CHECK(lines == reference && lines.size() == 12,
+      "offset " << offset << ": " << lines.size() << " lines, not those at the origin");
+  }
+
+  // The mask of a cube moved by an actor position and scaled, the camera with it.
+  std::vector<unsigned char> first;
+  const double cases[][2] = { { 0.0, 1.0 }, { 1e5, 1.0 }, { 1e7, 1.0 }, { 0.0, 1e-6 }, { 0.0, 1e6 },
+    { 1e7, 1e3 } };
+  for (const auto& c : cases)
+  {
+    const double offset = c[0], scale = c[1];
+    MaskScene scene(400, 300);
+    const double origin[3] = { 0, 0, 0 };
+    vtkSmartPointer<vtkActor> cube = nprAddCube(scene.Renderer, origin, scale);
+    cube->SetPosition(offset, offset, offset);
+    vtkCamera* camera = scene.Camera();
+    camera->SetPosition(offset + 2.2 * scale, offset + 1.7 * scale, offset + 2.9 * scale);
+    camera->SetFocalPoint(offset, offset, offset);
+    camera->SetViewUp(0, 1, 0);
+    camera->SetClippingRange(scale, 10 * scale);
+    vtkImageData* mask = scene.Mask();
+    const unsigned char* p = static_cast<unsigned char*>(mask->GetScalarPointer());
+    const std::vector<unsigned char> pixels(p, p + scene.Width * scene.Height);
+    if (first.empty())
+    {
+      first = pixels;
+    }
+    const long long differ = std::inner_product(pixels.begin(), pixels.end(), first.begin(), 0LL,
+      std::plus<long long>(), [](unsigned char a, unsigned char b) { return a != b ? 1LL : 0LL; });
+    std::cout << "offset " << offset << ", scale " << scale << ": "
+              << scene.Reference->GetNumberOfLinePixels() << " pixels, " << differ
+              << " differ from the unit cube at the origin\n";
+    NPR_CHECK(differ == 0 && scene.Reference->GetNumberOfLinePixels() > 900,
+      "offset " << offset << ", scale " << scale << ": " << differ << " pixels differ");
+  }
+  return nprTestResult();
+}
+
+// ---- The groups of triangles the occlusion structure is split into change nothing ----
+int MaskLocatorGroups()
+{
+  MaskScene scene(640, 480);
+  vtkNew<vtkNPRModelReader> reader;
+  reader->SetFileName((nprTestDataDir() + "/bunny.ply").c_str());
+  nprAddActor(scene.Renderer, reader->GetOutputPort());
+  scene.Renderer->ResetCamera();
+  scene.Camera()->Azimuth(30);
+  scene.Camera()->Elevation(20);
+  scene.Camera()->OrthogonalizeViewUp();
+  scene.Renderer->ResetCameraClippingRange();
+  vtkNPRReferenceMask* reference = scene.Reference;
+  reference->GenerateVisibleLinesOn(); // every sample's visibility counts, not only the pixels'
+  std::vector<unsigned char> first;
+  vtkIdType visible = -1;
+  for (int group : { VTK_INT_MAX, 16384, 1000, 7 })
+  {
+    reference->SetTrianglesPerLocator(group);
+    vtkImageData* mask = scene.Mask();
+    const unsigned char* p = static_cast<unsigned char*>(mask->GetScalarPointer());
+    const std::vector<unsigned char> pixels(p, p + scene.Width * scene.Height);
+    std::cout << "groups of " << group << " triangles: " << reference->GetNumberOfVisibleSamples()
+              << " of " << reference->GetNumberOfRayCasts() << " samples visible, "
+              << reference->GetNumberOfLinePixels() << " pixels, visibility "
+              << reference->GetVisibilityTime() << " s\n";
+    if (first.empty())
+    {
+      first = pixels;
+      visible = reference->GetNumberOfVisibleSamples();
+      NPR_CHECK(reference->GetNumberOfLinePixels() > 1000, "too few line pixels on the bunny");
+    }
+    NPR_CHECK(pixels == first && reference->GetNumberOfVisibleSamples() == visible,
+      "groups of " << group << " triangles changed the result");
+  }
+  NPR_CHECK(
+    reference->GetNumberOfLocatorBuilds() == 4 && reference->GetNumberOfAdjacencyBuilds() == 1,
+    "builds: locator " << reference->GetNumberOfLocatorBuilds() << ", adjacency "
+                       << reference->GetNumberOfAdjacencyBuilds());
+  return nprTestResult();
+}
+}
+
+int main(int argc, char* argv[])
+{
+  const std::map<std::string, std::function<int()>> cases = {
+    { "mask-cube", [] { return MaskCube(false); } },
+    { "mask-cube-parallel", [] { return MaskCube(true); } },
+    { "mask-occlusion", MaskOcclusion },
+    { "mask-reuse", MaskReuse },
+    { "mask-stability", Stability },
+    { "mask-locator-groups", MaskLocatorGroups },
+  };
+  return nprRunTestCase(argc, argv, cases);
+}

@@ -1,0 +1,47 @@
+// Baseline images of the toon, toon+edges and sketch styles: toon (bunny), toon+edges (CAD
+// part), sketch (bunny), sketch on paper with toon fill (CAD part), against
+// Testing/Data/Baseline/{toon,toon_edges,sketch}_*.png (the comparison: nprTesting.h).
+//
+// usage: TestToonSketchBaseline CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+#include "nprTesting.h"
+
+#include "vtkImageData.h"
+#include "vtkNPRSketchPass.h"
+
+#include <functional>
+#include <map>
+#include <string>
+
+namespace
+{
+using Scene = nprPassScene;
+
+// ---- Baselines ----
+int Baseline(const char* model, const char* name, int style, bool paper)
+{
+  Scene scene(400, 300);
+  nprAddBaselineModel(scene.Renderer, model);
+  scene.Pass->SetStyle(style);
+  scene.Sketch()->SetPaper(paper);
+  scene.Pass->SetSketchToonShading(paper);
+  NPR_CHECK(nprCompareWithBaseline(scene.Render(), name), name << " differs from its baseline");
+  return nprTestResult();
+}
+}
+
+int main(int argc, char* argv[])
+{
+  const std::map<std::string, std::function<int()>> cases = {
+    { "baseline-toon-bunny",
+      [] { return Baseline("bunny.ply", "toon_bunny", vtkNPRPass::TOON, false); } },
+    { "baseline-toon-cad",
+      [] {
+        return Baseline("cad_part.vtp", "toon_edges_cad_part", vtkNPRPass::TOON_EDGES, false);
+      } },
+    { "baseline-sketch-bunny",
+      [] { return Baseline("bunny.ply", "sketch_bunny", vtkNPRPass::SKETCH, false); } },
+    { "baseline-sketch-cad",
+      [] { return Baseline("cad_part.vtp", "sketch_cad_part", vtkNPRPass::SKETCH, true); } },
+  };
+  return nprRunTestCase(argc, argv, cases);
+}

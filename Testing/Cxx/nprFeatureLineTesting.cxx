@@ -1,0 +1,225 @@
+#include "nprFeatureLineTesting.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkCubeSource.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkTriangleFilter.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+
+namespace
+{
+using nprFeatureLineTesting::Edge;
+using nprFeatureLineTesting::Point;
+
+std::string Describe(const Edge& edge)
+{
+  std::string text;
+  for (const Point& p : { edge.first, edge.second })
+  {
+    text +=
+      "(" + std::to_string(p[0]) + "," + std::to_string(p[1]) + "," + std::to_string(p[2]) + ")";
+  }
+  return text;
+}
+}
+
+namespace nprFeatureLineTesting
+{
+
+Edge MakeEdge(Point a, Point b)
+{
+  return a < b ? Edge{ a, b } : Edge{ b, a };
+}
+
+std::map<Edge, int> Lines(vtkNPRFeatureLines* filter)
+{
+  vtkPolyData* output = filter->GetOutput();
+  auto* types = vtkUnsignedCharArray::SafeDownCast(output->GetCellData()->GetArray("FeatureType"));
+  std::map<Edge, int> lines;
+  auto iterator = vtk::TakeSmartPointer(output->GetLines()->NewIterator());
+  vtkIdType cell = 0;
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal();
+       iterator->GoToNextCell(), ++cell)
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    iterator->GetCurrentCell(size, ids);
+    NPR_CHECK(size == 2, "a line of " << size << " points");
+    Point a, b;
+    output->GetPoint(ids[0], a.data());
+    output->GetPoint(ids[1], b.data());
+    const Edge edge = MakeEdge(a, b);
+    NPR_CHECK(!lines.count(edge), "edge output twice: " << Describe(edge));
+    lines[edge] = types ? types->GetValue(cell) : -1;
+  }
+  return lines;
+}
+
+std::set<Edge> EdgesOf(const std::map<Edge, int>& lines, int type)
+{
+  std::set<Edge> edges;
+  for (const auto& line : lines)
+  {
+    if (line.second & type)
+    {
+      edges.insert(line.first);
+    }
+  }
+  return edges;
+}
+
+long long CountCells(vtkNPRFeatureLines* filter, int type)
+{
+  auto* types =
+    vtkUnsignedCharArray::SafeDownCast(filter->GetOutput()->GetCellData()->GetArray("FeatureType"));
+  long long count = 0;
+  for (vtkIdType i = 0; types && i < types->GetNumberOfTuples(); ++i)
+  {
+    count += types->GetValue(i) == type ? 1 : 0;
+  }
+  return count;
+}
+
+vtkSmartPointer<vtkNPRFeatureLines> MakeFilter(int types)
+{
+  auto filter = vtkSmartPointer<vtkNPRFeatureLines>::New();
+  filter->SetSilhouettes((types & vtkNPRFeatureLines::SILHOUETTE) != 0);
+  filter->SetCreases((types & vtkNPRFeatureLines::CREASE) != 0);
+  filter->SetBoundaries((types & vtkNPRFeatureLines::BOUNDARY) != 0);
+  filter->SetNonManifoldEdges((types & vtkNPRFeatureLines::NON_MANIFOLD) != 0);
+  return filter;
+}
+
+void CheckEdges(const std::set<Edge>& got, const std::set<Edge>& expected, const std::string& what)
+{
+  NPR_CHECK(got == expected, what << ": " << got.size() << " edges, expected " << expected.size());
+  for (const Edge& edge : got)
+  {
+    NPR_CHECK(expected.count(edge), what << ": unexpected " << Describe(edge));
+  }
+  for (const Edge& edge : expected)
+  {
+    NPR_CHECK(got.count(edge), what << ": missing " << Describe(edge));
+  }
+}
+
+Point Corner(int c, double h)
+{
+  return { (c & 1) ? h : -h, (c & 2) ? h : -h, (c & 4) ? h : -h };
+}
+
+std::vector<BoxEdge> BoxEdges(double h)
+{
+  std::vector<BoxEdge> edges;
+  for (int a = 0; a < 8; ++a)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      if (a & (1 << axis))
+      {
+        continue;
+      }
+      BoxEdge edge;
+      edge.Ends = MakeEdge(Corner(a, h), Corner(a | (1 << axis), h));
+      int k = 0;
+      for (int other = 0; other < 3; ++other)
+      {
+        if (other != axis)
+        {
+          edge.Faces[k][0] = other;
+          edge.Faces[k][1] = (a >> other) & 1;
+          ++k;
+        }
+      }
+      edges.push_back(edge);
+    }
+  }
+  return edges;
+}
+
+bool BoxFaceFront(int axis, int positive, bool parallel, const double view[3], double h)
+{
+  const double sign = positive ? 1.0 : -1.0;
+  return parallel ? sign * view[axis] < 0.0 : sign * view[axis] > h;
+}
+
+std::set<Edge> BoxSilhouettes(bool parallel, const double view[3])
+{
+  std::set<Edge> edges;
+  for (const BoxEdge& edge : BoxEdges())
+  {
+    if (BoxFaceFront(edge.Faces[0][0], edge.Faces[0][1], parallel, view) !=
+      BoxFaceFront(edge.Faces[1][0], edge.Faces[1][1], parallel, view))
+    {
+      edges.insert(edge.Ends);
+    }
+  }
+  return edges;
+}
+
+std::set<Edge> AllBoxEdges()
+{
+  std::set<Edge> edges;
+  for (const BoxEdge& edge : BoxEdges())
+  {
+    edges.insert(edge.Ends);
+  }
+  return edges;
+}
+
+vtkSmartPointer<vtkPolyData> MakeBox(int skip, int flip)
+{
+  auto box = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  for (int c = 0; c < 8; ++c)
+  {
+    points->InsertNextPoint(Corner(c).data());
+  }
+  vtkNew<vtkCellArray> quads;
+  for (int face = 0; face < 6; ++face)
+  {
+    const int axis = face / 2, positive = face % 2;
+    const int j = (axis + 1) % 3, k = (axis + 2) % 3; // e_j x e_k = e_axis
+    const int base = positive << axis;
+    vtkIdType ids[4] = { base, base | (1 << j), base | (1 << j) | (1 << k), base | (1 << k) };
+    if (!positive)
+    {
+      std::reverse(ids, ids + 4);
+    }
+    if (face == flip)
+    {
+      std::reverse(ids, ids + 4);
+    }
+    if (face != skip)
+    {
+      quads->InsertNextCell(4, ids);
+    }
+  }
+  box->SetPoints(points);
+  box->SetPolys(quads);
+  return box;
+}
+
+vtkSmartPointer<vtkPolyData> Triangulated(vtkPolyData* input)
+{
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(input);
+  triangles->Update();
+  return triangles->GetOutput();
+}
+
+vtkSmartPointer<vtkPolyData> CubeSource(double size)
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetXLength(size);
+  cube->SetYLength(size);
+  cube->SetZLength(size);
+  cube->Update();
+  return cube->GetOutput();
+}
+}

@@ -1,0 +1,103 @@
+// Helpers of the tests of vtkNPRFeatureLines and vtkNPRReferenceMask: an axis-aligned box stated
+// analytically, the filter's output as sets of edges, and a window whose renderer a reference mask
+// reads (TestFeatureLines*, TestReferenceMask*).
+#ifndef nprFeatureLineTesting_h
+#define nprFeatureLineTesting_h
+
+#include "nprTesting.h"
+
+#include "vtkNPRFeatureLines.h"
+#include "vtkNPRReferenceMask.h"
+#include "vtkNew.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+
+#include <array>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+class vtkPolyData;
+
+namespace nprFeatureLineTesting
+{
+using Point = std::array<double, 3>;
+using Edge = std::pair<Point, Point>; // ends in lexicographic order
+
+constexpr int AllTypes = vtkNPRFeatureLines::SILHOUETTE | vtkNPRFeatureLines::CREASE |
+  vtkNPRFeatureLines::BOUNDARY | vtkNPRFeatureLines::NON_MANIFOLD;
+
+Edge MakeEdge(Point a, Point b);
+
+// The output lines of the filter: each edge with its FeatureType bits.
+std::map<Edge, int> Lines(vtkNPRFeatureLines* filter);
+std::set<Edge> EdgesOf(const std::map<Edge, int>& lines, int type);
+// Output cells whose FeatureType is exactly `type` (edges with equal coordinates counted apart).
+long long CountCells(vtkNPRFeatureLines* filter, int type);
+// A filter that finds the line types of the bits in `types`.
+vtkSmartPointer<vtkNPRFeatureLines> MakeFilter(int types);
+// A failed check for each edge missing from `got` or not expected in it.
+void CheckEdges(const std::set<Edge>& got, const std::set<Edge>& expected, const std::string& what);
+
+// ---- An axis-aligned box of half size h about the origin, analytically ----
+// Corner c (bits 0..2: +x, +y, +z); face (axis, positive) has the outward normal +-e_axis.
+Point Corner(int c, double h = 0.5);
+
+struct BoxEdge
+{
+  Edge Ends;
+  int Faces[2][2]; // (axis, positive) of its two faces
+};
+
+std::vector<BoxEdge> BoxEdges(double h = 0.5);
+
+// Whether a face of the box faces the viewer: the eye strictly on its outer side (perspective),
+// or the direction of projection strictly against its normal (parallel).
+bool BoxFaceFront(int axis, int positive, bool parallel, const double view[3], double h = 0.5);
+
+// The box's edges between a face towards the viewer and one away from it.
+std::set<Edge> BoxSilhouettes(bool parallel, const double view[3]);
+std::set<Edge> AllBoxEdges();
+
+// A box of 8 shared points and 6 outward quads; `skip` leaves a face out, `flip` reverses one.
+vtkSmartPointer<vtkPolyData> MakeBox(int skip = -1, int flip = -1);
+vtkSmartPointer<vtkPolyData> Triangulated(vtkPolyData* input);
+// vtkCubeSource's cube: 24 points, each face with its own four.
+vtkSmartPointer<vtkPolyData> CubeSource(double size = 1.0);
+
+// A window whose renderer the reference mask reads; nothing is rendered unless a test does.
+struct MaskScene
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkNPRReferenceMask> Reference;
+  int Width, Height;
+
+  MaskScene(int width, int height)
+    : Width(width)
+    , Height(height)
+  {
+    this->Window = nprCreateTestWindow(width, height, nullptr);
+    this->Window->AddRenderer(this->Renderer);
+    this->Reference->SetRenderer(this->Renderer);
+  }
+  vtkCamera* Camera() { return this->Renderer->GetActiveCamera(); }
+  vtkImageData* Mask()
+  {
+    NPR_CHECK(this->Reference->Update(), "the reference mask failed");
+    return this->Reference->GetMask();
+  }
+  // Window coordinates of a world point through the renderer (not the mask's code).
+  std::array<double, 2> Project(const Point& world)
+  {
+    std::array<double, 2> display;
+    nprWorldToDisplay(this->Renderer, world.data(), display.data());
+    return display;
+  }
+};
+}
+
+#endif
