@@ -156,6 +156,7 @@ case $action in
     ;;
   run)
     setup
+    if [[ -n ${NPR_CHROOT_BUILD:-} ]]; then mkdir -p "$NPR_CHROOT_BUILD"; fi
     in_chroot "$3"
     ;;
 esac
