@@ -1,5 +1,9 @@
 #include "nprBenchmarkScenes.h"
 
+#include "nprBenchmarkReport.h"
+#include "nprModel.h"
+#include "nprTiming.h"
+
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -7,12 +11,10 @@
 #include "vtkFlyingEdges3D.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
-#include "vtkNPRModelReader.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkNPRShadingNormals.h"
 #include "vtkRTAnalyticSource.h"
 #include "vtkRenderer.h"
 #include "vtkTriangleFilter.h"
@@ -20,7 +22,9 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace
@@ -50,14 +54,7 @@ vtkSmartPointer<vtkPolyData> ReadModel(const std::string& path)
   {
     throw std::runtime_error(path + ": no such file");
   }
-  vtkNew<vtkNPRModelReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  if (*reader->GetErrorMessage())
-  {
-    throw std::runtime_error(reader->GetErrorMessage());
-  }
-  return Geometry(reader->GetOutput());
+  return Geometry(nprReadModel(path));
 }
 
 // A closed, wavy isosurface of VTK's analytic wavelet: 101^3 samples, value 200 (about 103k
@@ -131,20 +128,57 @@ nprBenchmarkScene nprLoadBenchmarkScene(
   return scene;
 }
 
-vtkSmartPointer<vtkPolyData> nprPrepareMesh(vtkPolyData* raw)
+std::vector<nprBenchmarkScene> nprLoadBenchmarkScenes(const std::vector<std::string>& names,
+  const std::string& dataDir, const std::string& denseMesh, bool namesGiven)
 {
-  vtkNew<vtkNPRShadingNormals> normals;
-  normals->SetInputData(raw);
-  normals->Update();
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(normals->GetOutput());
-  return mesh;
+  std::vector<nprBenchmarkScene> scenes;
+  for (const std::string& name : names)
+  {
+    const nprClock::time_point start = nprClock::now();
+    try
+    {
+      scenes.push_back(nprLoadBenchmarkScene(name, dataDir, denseMesh));
+    }
+    catch (const std::runtime_error& error)
+    {
+      // The dense mesh is made by the build (target `benchmark`); without it, a default run
+      // goes on with the other scenes.
+      if (name == "bunny1m" && !namesGiven)
+      {
+        std::cerr << "npr-benchmark: warning: scene bunny1m left out: " << error.what() << "\n";
+        continue;
+      }
+      throw;
+    }
+    std::cerr << "npr-benchmark: scene " << name << ": " << scenes.back().Triangles
+              << " triangles, prepared in " << nprFormat(nprSecondsSince(start), 3) << " s\n";
+  }
+  return scenes;
 }
 
-long long nprCountTriangles(vtkPolyData* mesh)
+std::string nprBenchmarkSceneLines(const std::vector<nprBenchmarkScene>& scenes)
 {
-  vtkCellArray* polys = mesh->GetPolys();
-  return static_cast<long long>(polys->GetNumberOfConnectivityIds() - 2 * polys->GetNumberOfCells());
+  std::ostringstream text;
+  for (const nprBenchmarkScene& scene : scenes)
+  {
+    text << "- " << scene.Name << ": " << scene.Description << ", " << scene.Triangles
+         << " triangles\n";
+  }
+  return text.str();
+}
+
+std::string nprBenchmarkCameraLine(int count)
+{
+  std::string text;
+  for (int i = 0; i < count; ++i)
+  {
+    const nprBenchmarkCamera& camera = nprBenchmarkCameras()[i];
+    std::ostringstream one;
+    one << camera.Name << " (azimuth " << camera.Azimuth << ", elevation " << camera.Elevation
+        << ")";
+    text += (i ? ", " : "") + one.str();
+  }
+  return text;
 }
 
 const std::vector<nprBenchmarkCamera>& nprBenchmarkCameras()
