@@ -29,6 +29,15 @@
 
 namespace
 {
+// A mesh of these points and triangles.
+vtkSmartPointer<vtkPolyData> MakeMesh(vtkPoints* points, vtkCellArray* polys)
+{
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
+}
+
 // Only the geometry and the triangles: colours and other arrays play no part in the benchmark,
 // and double-precision points keep the stress variants' transforms exact in memory.
 vtkSmartPointer<vtkPolyData> Geometry(vtkPolyData* input)
@@ -42,10 +51,7 @@ vtkSmartPointer<vtkPolyData> Geometry(vtkPolyData* input)
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->DeepCopy(output->GetPoints());
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(output->GetPolys());
-  return mesh;
+  return MakeMesh(points, output->GetPolys());
 }
 
 vtkSmartPointer<vtkPolyData> ReadModel(const std::string& path)
@@ -72,13 +78,21 @@ vtkSmartPointer<vtkPolyData> Isosurface()
   return Geometry(contour->GetOutput());
 }
 
-// Copies a mesh with new points (same cells).
-vtkSmartPointer<vtkPolyData> WithPoints(vtkPolyData* raw, vtkPoints* points)
+// Copies a mesh with each point moved by move(double p[3]) (same cells, double precision).
+template <typename Move>
+vtkSmartPointer<vtkPolyData> WithMovedPoints(vtkPolyData* raw, Move move)
 {
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(raw->GetPolys());
-  return mesh;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(raw->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < raw->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    raw->GetPoint(i, p);
+    move(p);
+    points->SetPoint(i, p);
+  }
+  return MakeMesh(points, raw->GetPolys());
 }
 }
 
@@ -213,36 +227,24 @@ double nprModelSize(vtkPolyData* mesh)
 
 vtkSmartPointer<vtkPolyData> nprScaledMesh(vtkPolyData* raw, double factor)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(raw->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < raw->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    raw->GetPoint(i, p);
-    points->SetPoint(i, p[0] * factor, p[1] * factor, p[2] * factor);
-  }
-  return WithPoints(raw, points);
+  return WithMovedPoints(raw, [factor](double p[3]) {
+    for (int c = 0; c < 3; ++c)
+    {
+      p[c] *= factor;
+    }
+  });
 }
 
 vtkSmartPointer<vtkPolyData> nprTranslatedMesh(vtkPolyData* raw, double distance)
 {
   double direction[3] = { 1.0, 0.7, 0.4 };
   vtkMath::Normalize(direction);
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(raw->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < raw->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    raw->GetPoint(i, p);
+  return WithMovedPoints(raw, [&](double p[3]) {
     for (int c = 0; c < 3; ++c)
     {
       p[c] += distance * direction[c];
     }
-    points->SetPoint(i, p);
-  }
-  return WithPoints(raw, points);
+  });
 }
 
 vtkSmartPointer<vtkPolyData> nprSliverMesh(vtkPolyData* raw)
@@ -290,10 +292,7 @@ vtkSmartPointer<vtkPolyData> nprSliverMesh(vtkPolyData* raw)
     polys->InsertNextCell(3, second);
     polys->InsertNextCell(3, third);
   }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(polys);
-  return mesh;
+  return MakeMesh(points, polys);
 }
 
 vtkSmartPointer<vtkPolyData> nprSoupMesh(vtkPolyData* raw)
@@ -313,10 +312,7 @@ vtkSmartPointer<vtkPolyData> nprSoupMesh(vtkPolyData* raw)
       polys->InsertCellPoint(points->InsertNextPoint(raw->GetPoint(ids[k])));
     }
   }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(polys);
-  return mesh;
+  return MakeMesh(points, polys);
 }
 
 vtkSmartPointer<vtkPolyData> nprNaNPointsMesh(vtkPolyData* raw)
@@ -352,10 +348,7 @@ vtkSmartPointer<vtkPolyData> nprNaNPointsMesh(vtkPolyData* raw)
     const vtkIdType triangle[3] = { ids[1], ids[0], points->InsertNextPoint(p) };
     polys->InsertNextCell(3, triangle);
   }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(polys);
-  return mesh;
+  return MakeMesh(points, polys);
 }
 
 vtkSmartPointer<vtkPolyData> nprZeroNormalsMesh(vtkPolyData* prepared)
