@@ -1,14 +1,17 @@
 #include "nprBenchmarkReport.h"
 
+#include "nprTiming.h"
+#include "nprWindowImage.h"
+
 #include "vtkAxis.h"
 #include "vtkChartLegend.h"
 #include "vtkChartXY.h"
 #include "vtkContextScene.h"
 #include "vtkContextView.h"
 #include "vtkDoubleArray.h"
+#include "vtkImageData.h"
 #include "vtkNPRRenderWindowFactory.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkPen.h"
 #include "vtkPlotLine.h"
 #include "vtkPlotPoints.h"
@@ -17,7 +20,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
 #include "vtkTextProperty.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -51,17 +53,6 @@ std::ofstream OpenForWriting(const std::string& path)
     throw std::runtime_error(path + ": cannot write");
   }
   return file;
-}
-
-double Median(std::vector<double> values)
-{
-  if (values.empty())
-  {
-    return 0.0;
-  }
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 double Mean(const std::vector<double>& values)
@@ -203,8 +194,8 @@ void nprWriteBenchmarkMarkdown(
         continue;
       }
       file << "| " << method << " | " << size << " | " << ms.size() << " | "
-           << nprFormat(Median(ms), 4) << " | " << nprFormat(Median(shaded), 4) << " | "
-           << nprFormat(Median(ratio), 3) << " | " << nprFormat(Mean(precision), 3) << " | "
+           << nprFormat(nprMedian(ms), 4) << " | " << nprFormat(nprMedian(shaded), 4) << " | "
+           << nprFormat(nprMedian(ratio), 3) << " | " << nprFormat(Mean(precision), 3) << " | "
            << nprFormat(Mean(recall), 3) << " | " << nprFormat(Mean(f1), 3) << " | "
            << nprFormat(Mean(f2), 3) << " | " << nprFormat(Mean(distance), 3) << " |\n";
     }
@@ -269,7 +260,7 @@ std::vector<nprPlotPoint> nprPlotPoints(
     }
     if (!times.empty())
     {
-      points.push_back({ method, Median(times), Mean(f1) });
+      points.push_back({ method, nprMedian(times), Mean(f1) });
     }
   }
   return points;
@@ -379,19 +370,7 @@ void nprWritePlot(const std::string& path, const std::vector<nprPlotPoint>& poin
   chart->GetAxis(vtkAxis::LEFT)->SetRange(low, 1.0 + 0.02 * (1.0 - low));
   window->Render();
 
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  grab->ShouldRerenderOff();
-  grab->Update();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(path.c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
-  if (writer->GetErrorCode() != 0)
-  {
-    throw std::runtime_error(path + ": cannot write the PNG");
-  }
+  nprWritePNG(nprReadWindowImage(window, false), path); // the frame just rendered
 }
 
 void nprWriteStressCSV(const std::string& path, const std::vector<nprStressRow>& rows)

@@ -1,5 +1,9 @@
 #include "nprBenchmarkScenes.h"
 
+#include "nprBenchmarkReport.h"
+#include "nprModel.h"
+#include "nprTiming.h"
+
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -7,12 +11,10 @@
 #include "vtkFlyingEdges3D.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
-#include "vtkNPRModelReader.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkNPRShadingNormals.h"
 #include "vtkRTAnalyticSource.h"
 #include "vtkRenderer.h"
 #include "vtkTriangleFilter.h"
@@ -20,11 +22,22 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace
 {
+// A mesh of these points and triangles.
+vtkSmartPointer<vtkPolyData> MakeMesh(vtkPoints* points, vtkCellArray* polys)
+{
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
+}
+
 // Only the geometry and the triangles: colours and other arrays play no part in the benchmark,
 // and double-precision points keep the stress variants' transforms exact in memory.
 vtkSmartPointer<vtkPolyData> Geometry(vtkPolyData* input)
@@ -38,10 +51,7 @@ vtkSmartPointer<vtkPolyData> Geometry(vtkPolyData* input)
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->DeepCopy(output->GetPoints());
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(output->GetPolys());
-  return mesh;
+  return MakeMesh(points, output->GetPolys());
 }
 
 vtkSmartPointer<vtkPolyData> ReadModel(const std::string& path)
@@ -50,14 +60,7 @@ vtkSmartPointer<vtkPolyData> ReadModel(const std::string& path)
   {
     throw std::runtime_error(path + ": no such file");
   }
-  vtkNew<vtkNPRModelReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  if (*reader->GetErrorMessage())
-  {
-    throw std::runtime_error(reader->GetErrorMessage());
-  }
-  return Geometry(reader->GetOutput());
+  return Geometry(nprReadModel(path));
 }
 
 // A closed, wavy isosurface of VTK's analytic wavelet: 101^3 samples, value 200 (about 103k
@@ -75,13 +78,21 @@ vtkSmartPointer<vtkPolyData> Isosurface()
   return Geometry(contour->GetOutput());
 }
 
-// Copies a mesh with new points (same cells).
-vtkSmartPointer<vtkPolyData> WithPoints(vtkPolyData* raw, vtkPoints* points)
+// Copies a mesh with each point moved by move(double p[3]) (same cells, double precision).
+template <typename Move>
+vtkSmartPointer<vtkPolyData> WithMovedPoints(vtkPolyData* raw, Move move)
 {
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(raw->GetPolys());
-  return mesh;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(raw->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < raw->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    raw->GetPoint(i, p);
+    move(p);
+    points->SetPoint(i, p);
+  }
+  return MakeMesh(points, raw->GetPolys());
 }
 }
 
@@ -131,20 +142,57 @@ nprBenchmarkScene nprLoadBenchmarkScene(
   return scene;
 }
 
-vtkSmartPointer<vtkPolyData> nprPrepareMesh(vtkPolyData* raw)
+std::vector<nprBenchmarkScene> nprLoadBenchmarkScenes(const std::vector<std::string>& names,
+  const std::string& dataDir, const std::string& denseMesh, bool namesGiven)
 {
-  vtkNew<vtkNPRShadingNormals> normals;
-  normals->SetInputData(raw);
-  normals->Update();
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(normals->GetOutput());
-  return mesh;
+  std::vector<nprBenchmarkScene> scenes;
+  for (const std::string& name : names)
+  {
+    const nprClock::time_point start = nprClock::now();
+    try
+    {
+      scenes.push_back(nprLoadBenchmarkScene(name, dataDir, denseMesh));
+    }
+    catch (const std::runtime_error& error)
+    {
+      // The dense mesh is made by the build (target `benchmark`); without it, a default run
+      // goes on with the other scenes.
+      if (name == "bunny1m" && !namesGiven)
+      {
+        std::cerr << "npr-benchmark: warning: scene bunny1m left out: " << error.what() << "\n";
+        continue;
+      }
+      throw;
+    }
+    std::cerr << "npr-benchmark: scene " << name << ": " << scenes.back().Triangles
+              << " triangles, prepared in " << nprFormat(nprSecondsSince(start), 3) << " s\n";
+  }
+  return scenes;
 }
 
-long long nprCountTriangles(vtkPolyData* mesh)
+std::string nprBenchmarkSceneLines(const std::vector<nprBenchmarkScene>& scenes)
 {
-  vtkCellArray* polys = mesh->GetPolys();
-  return static_cast<long long>(polys->GetNumberOfConnectivityIds() - 2 * polys->GetNumberOfCells());
+  std::ostringstream text;
+  for (const nprBenchmarkScene& scene : scenes)
+  {
+    text << "- " << scene.Name << ": " << scene.Description << ", " << scene.Triangles
+         << " triangles\n";
+  }
+  return text.str();
+}
+
+std::string nprBenchmarkCameraLine(int count)
+{
+  std::string text;
+  for (int i = 0; i < count; ++i)
+  {
+    const nprBenchmarkCamera& camera = nprBenchmarkCameras()[i];
+    std::ostringstream one;
+    one << camera.Name << " (azimuth " << camera.Azimuth << ", elevation " << camera.Elevation
+        << ")";
+    text += (i ? ", " : "") + one.str();
+  }
+  return text;
 }
 
 const std::vector<nprBenchmarkCamera>& nprBenchmarkCameras()
@@ -179,36 +227,24 @@ double nprModelSize(vtkPolyData* mesh)
 
 vtkSmartPointer<vtkPolyData> nprScaledMesh(vtkPolyData* raw, double factor)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(raw->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < raw->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    raw->GetPoint(i, p);
-    points->SetPoint(i, p[0] * factor, p[1] * factor, p[2] * factor);
-  }
-  return WithPoints(raw, points);
+  return WithMovedPoints(raw, [factor](double p[3]) {
+    for (int c = 0; c < 3; ++c)
+    {
+      p[c] *= factor;
+    }
+  });
 }
 
 vtkSmartPointer<vtkPolyData> nprTranslatedMesh(vtkPolyData* raw, double distance)
 {
   double direction[3] = { 1.0, 0.7, 0.4 };
   vtkMath::Normalize(direction);
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(raw->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < raw->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    raw->GetPoint(i, p);
+  return WithMovedPoints(raw, [&](double p[3]) {
     for (int c = 0; c < 3; ++c)
     {
       p[c] += distance * direction[c];
     }
-    points->SetPoint(i, p);
-  }
-  return WithPoints(raw, points);
+  });
 }
 
 vtkSmartPointer<vtkPolyData> nprSliverMesh(vtkPolyData* raw)
@@ -256,10 +292,7 @@ vtkSmartPointer<vtkPolyData> nprSliverMesh(vtkPolyData* raw)
     polys->InsertNextCell(3, second);
     polys->InsertNextCell(3, third);
   }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(polys);
-  return mesh;
+  return MakeMesh(points, polys);
 }
 
 vtkSmartPointer<vtkPolyData> nprSoupMesh(vtkPolyData* raw)
@@ -279,10 +312,7 @@ vtkSmartPointer<vtkPolyData> nprSoupMesh(vtkPolyData* raw)
       polys->InsertCellPoint(points->InsertNextPoint(raw->GetPoint(ids[k])));
     }
   }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(polys);
-  return mesh;
+  return MakeMesh(points, polys);
 }
 
 vtkSmartPointer<vtkPolyData> nprNaNPointsMesh(vtkPolyData* raw)
@@ -318,10 +348,7 @@ vtkSmartPointer<vtkPolyData> nprNaNPointsMesh(vtkPolyData* raw)
     const vtkIdType triangle[3] = { ids[1], ids[0], points->InsertNextPoint(p) };
     polys->InsertNextCell(3, triangle);
   }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(polys);
-  return mesh;
+  return MakeMesh(points, polys);
 }
 
 vtkSmartPointer<vtkPolyData> nprZeroNormalsMesh(vtkPolyData* prepared)

@@ -28,11 +28,14 @@ const std::vector<std::string>& nprBenchmarkSceneNames();
 nprBenchmarkScene nprLoadBenchmarkScene(
   const std::string& name, const std::string& dataDir, const std::string& denseMesh);
 
-// As npr-render draws a model: a mesh without point normals gets them from vtkPolyDataNormals
-// (feature angle 30, splitting on), so sharp edges stay sharp.
-vtkSmartPointer<vtkPolyData> nprPrepareMesh(vtkPolyData* raw);
+// Loads the named scenes in turn, telling each on stderr. The dense mesh is made by the build
+// (target `benchmark`): without it, the scene bunny1m is left out with a warning unless the
+// names were given.
+std::vector<nprBenchmarkScene> nprLoadBenchmarkScenes(const std::vector<std::string>& names,
+  const std::string& dataDir, const std::string& denseMesh, bool namesGiven);
 
-long long nprCountTriangles(vtkPolyData* mesh);
+// One line per scene for the report: "- name: description, N triangles".
+std::string nprBenchmarkSceneLines(const std::vector<nprBenchmarkScene>& scenes);
 
 // The benchmark's cameras: after ResetCamera, an azimuth and an elevation (degrees), perspective.
 struct nprBenchmarkCamera
@@ -43,6 +46,8 @@ struct nprBenchmarkCamera
 };
 const std::vector<nprBenchmarkCamera>& nprBenchmarkCameras();
 void nprApplyBenchmarkCamera(vtkRenderer* renderer, const nprBenchmarkCamera& camera);
+// The first count cameras for the report: "a30e20 (azimuth 30, elevation 20), ...".
+std::string nprBenchmarkCameraLine(int count);
 
 // ---- Stress variants of a scene's raw mesh (npr-benchmark --stress) ----
 // The points scaled by a factor about the origin (units changed, as a user's file would be).

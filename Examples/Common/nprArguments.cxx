@@ -1,0 +1,135 @@
+#include "nprArguments.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+
+nprArgumentReader::nprArgumentReader(int argc, char* argv[], const char* help)
+  : Count(argc)
+  , Arguments(argv)
+  , Help(help)
+{
+}
+
+bool nprArgumentReader::Next()
+{
+  if (this->Index + 1 >= this->Count)
+  {
+    return false;
+  }
+  this->Argument = this->Arguments[++this->Index];
+  if (this->Argument == "-h" || this->Argument == "--help")
+  {
+    std::cout << this->Help;
+    std::exit(0);
+  }
+  return true;
+}
+
+std::string nprArgumentReader::Value()
+{
+  if (this->Index + 1 >= this->Count)
+  {
+    throw nprUsageError(this->Argument + " needs a value");
+  }
+  return this->Arguments[++this->Index];
+}
+
+double nprParseNumber(const std::string& flag, const std::string& text)
+{
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end || !std::isfinite(value))
+  {
+    throw nprUsageError(flag + " expects a number, got '" + text + "'");
+  }
+  return value;
+}
+
+double nprParseRange(const std::string& flag, const std::string& text, double low, double high)
+{
+  nprParseNumber(flag, text);
+  return nprParseNumberIn(flag, text, low, high);
+}
+
+double nprParseNumberIn(const std::string& flag, const std::string& text, double low, double high)
+{
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end || !(value >= low && value <= high)) // NaN is never in range
+  {
+    std::ostringstream range;
+    range << low << ".." << high;
+    throw nprUsageError(flag + " expects a number in " + range.str() + ", got '" + text + "'");
+  }
+  return value;
+}
+
+int nprParseInteger(const std::string& flag, const std::string& text, int low, int high)
+{
+  char* end = nullptr;
+  const long value = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end || value < low || value > high)
+  {
+    throw nprUsageError(flag + " expects an integer in " + std::to_string(low) + ".." +
+      std::to_string(high) + ", got '" + text + "'");
+  }
+  return static_cast<int>(value);
+}
+
+std::pair<int, int> nprParseSize(
+  const std::string& flag, const std::string& text, int low, int high, const std::string& format)
+{
+  const size_t x = text.find('x');
+  if (x == std::string::npos)
+  {
+    throw nprUsageError(flag + " expects " + format + ", got '" + text + "'");
+  }
+  // Both in turn, so that the width's problem is told first.
+  const int width = nprParseInteger(flag + " width", text.substr(0, x), low, high);
+  return { width, nprParseInteger(flag + " height", text.substr(x + 1), low, high) };
+}
+
+void nprParseColor(const std::string& flag, const std::string& text, double rgb[3])
+{
+  if (text.size() == 7 && text[0] == '#' &&
+    text.find_first_not_of("0123456789abcdefABCDEF", 1) == std::string::npos)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      rgb[i] = std::strtol(text.substr(1 + 2 * i, 2).c_str(), nullptr, 16) / 255.0;
+    }
+    return;
+  }
+  const std::string expected = flag + " expects r,g,b in 0..1 or #rrggbb, got '" + text + "'";
+  const std::vector<std::string> parts = nprSplitList(text);
+  for (size_t i = 0; i < parts.size(); ++i)
+  {
+    const double value = i < 3 ? nprParseNumber(flag, parts[i]) : -1.0;
+    if (i >= 3 || value < 0.0 || value > 1.0)
+    {
+      throw nprUsageError(expected);
+    }
+    rgb[i] = value;
+  }
+  if (parts.size() != 3)
+  {
+    throw nprUsageError(expected);
+  }
+}
+
+std::vector<std::string> nprSplitList(const std::string& text, bool dropEmpty)
+{
+  std::vector<std::string> parts;
+  std::stringstream stream(text);
+  std::string part;
+  while (std::getline(stream, part, ','))
+  {
+    if (!part.empty() || !dropEmpty)
+    {
+      parts.push_back(part);
+    }
+  }
+  return parts;
+}

@@ -1,0 +1,56 @@
+#include "nprModel.h"
+
+#include "vtkCellArray.h"
+#include "vtkNPRModelReader.h"
+#include "vtkNPRShadingNormals.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+
+#include <stdexcept>
+
+vtkSmartPointer<vtkPolyData> nprReadModel(const std::string& path, std::string* warning)
+{
+  vtkNew<vtkNPRModelReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (*reader->GetErrorMessage())
+  {
+    throw std::runtime_error(reader->GetErrorMessage());
+  }
+  if (warning)
+  {
+    *warning = reader->GetWarningMessage();
+  }
+  return reader->GetOutput();
+}
+
+vtkSmartPointer<vtkPolyData> nprPrepareMesh(vtkPolyData* raw)
+{
+  vtkNew<vtkNPRShadingNormals> normals;
+  normals->SetInputData(raw);
+  normals->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(normals->GetOutput());
+  return mesh;
+}
+
+long long nprCountTriangles(vtkPolyData* mesh)
+{
+  long long triangles = 0;
+  for (vtkCellArray* cells : { mesh->GetPolys(), mesh->GetStrips() })
+  {
+    triangles += cells->GetNumberOfConnectivityIds() - 2 * cells->GetNumberOfCells();
+  }
+  return triangles;
+}
+
+void nprApplyModelLook(vtkProperty* property, size_t index)
+{
+  static const double palette[][3] = { { 0.85, 0.82, 0.75 }, { 0.55, 0.70, 0.85 },
+    { 0.90, 0.60, 0.45 }, { 0.60, 0.80, 0.55 }, { 0.80, 0.65, 0.85 } };
+  const double* color = palette[index % (sizeof(palette) / sizeof(palette[0]))];
+  property->SetColor(color[0], color[1], color[2]);
+  property->SetSpecular(0.2);
+  property->SetSpecularPower(30.0);
+}

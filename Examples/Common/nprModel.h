@@ -1,0 +1,29 @@
+// A model as the command-line programs draw it: read with vtkNPRModelReader, shaded with
+// vtkNPRShadingNormals' normals, in one of a few surface colours.
+#ifndef nprModel_h
+#define nprModel_h
+
+#include "vtkSmartPointer.h"
+
+#include <cstddef>
+#include <string>
+
+class vtkPolyData;
+class vtkProperty;
+
+// Reads a model file (any format vtkNPRModelReader knows). Throws std::runtime_error with the
+// reader's one-line message; a warning (such as points dropped) goes to warning when given.
+vtkSmartPointer<vtkPolyData> nprReadModel(const std::string& path, std::string* warning = nullptr);
+
+// The mesh to draw: the file's normals when they are all usable; otherwise smooth shading that
+// keeps sharp (> 30 degree) edges sharp, as CAD users expect, over merged duplicate points.
+vtkSmartPointer<vtkPolyData> nprPrepareMesh(vtkPolyData* raw);
+
+// Triangles of the polygons and strips (a polygon of n points counts n - 2).
+long long nprCountTriangles(vtkPolyData* mesh);
+
+// The surface of the index-th model of a scene: pleasant, distinguishable colours, a little
+// specular.
+void nprApplyModelLook(vtkProperty* property, size_t index);
+
+#endif

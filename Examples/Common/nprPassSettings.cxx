@@ -1,0 +1,41 @@
+#include "nprPassSettings.h"
+
+#include "vtkNPRInkPass.h"
+#include "vtkNPRPass.h"
+#include "vtkNPRSketchPass.h"
+#include "vtkNPRToonPass.h"
+
+vtkSmartPointer<vtkNPRPass> nprMakePass(const nprPassSettings& settings)
+{
+  auto pass = vtkSmartPointer<vtkNPRPass>::New();
+  pass->SetStyle(vtkNPRPass::GetStyleFromName(settings.Style.c_str()));
+  vtkNPREdgePass* edges = pass->GetEdgePass();
+  edges->SetSilhouettes(settings.Silhouettes);
+  edges->SetCreases(settings.Creases);
+  edges->SetContours(settings.Contours);
+  edges->SetSilhouetteThreshold(settings.SilhouetteThreshold);
+  edges->SetCreaseAngle(settings.CreaseAngle);
+  edges->SetContourSide(settings.ContourSide);
+  edges->SetLineWidth(settings.LineWidth);
+  edges->SetSilhouetteColor(settings.SilhouetteColor);
+  edges->SetCreaseColor(settings.CreaseColor);
+  edges->SetContourColor(settings.ContourColor);
+  edges->SetAntiAliasing(settings.AntiAliasing);
+  edges->SetEncoding(settings.Encoding);
+  edges->SetPackedThreshold(settings.PackedThreshold);
+  edges->SetPackedBlur(settings.PackedBlur);
+  vtkNPRToonPass* toon = pass->GetToonPass();
+  toon->SetNumberOfBands(settings.ToonBands);
+  toon->SetPerVertex(settings.ToonPerVertex);
+  vtkNPRSketchPass* sketch = pass->GetSketchPass();
+  sketch->SetUncertainty(settings.Uncertainty);
+  sketch->SetNoiseSeed(static_cast<unsigned int>(settings.NoiseSeed));
+  sketch->SetNoiseFrequency(settings.NoiseFrequency);
+  sketch->SetPaper(settings.Paper);
+  sketch->SetPaperColor(settings.PaperColor);
+  pass->SetSketchToonShading(settings.SketchToon);
+  vtkNPRInkPass* ink = pass->GetInkPass();
+  ink->SetLineWidth(settings.LineWidth);
+  ink->SetInkColor(settings.SilhouetteColor);
+  return pass;
+}

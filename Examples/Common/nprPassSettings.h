@@ -1,0 +1,50 @@
+// The settings of a vtkNPRPass that the command-line programs expose, and the pass made from
+// them. The defaults are the passes' own.
+#ifndef nprPassSettings_h
+#define nprPassSettings_h
+
+#include "vtkNPREdgePass.h"
+#include "vtkSmartPointer.h"
+
+#include <string>
+
+class vtkNPRPass;
+
+struct nprPassSettings
+{
+  std::string Style = "shaded"; // vtkNPRPass::GetStyleName()
+
+  // Lines (edges, toon+edges, sketch); LineWidth and SilhouetteColor also ink (inked).
+  bool Silhouettes = true;
+  bool Creases = true;
+  bool Contours = true;
+  double SilhouetteThreshold = 0.005;
+  double CreaseAngle = 30.0;
+  int ContourSide = vtkNPREdgePass::INSIDE;
+  double LineWidth = 1.5;
+  double SilhouetteColor[3] = { 0.0, 0.0, 0.0 };
+  double CreaseColor[3] = { 0.0, 0.0, 0.0 };
+  double ContourColor[3] = { 0.0, 0.0, 0.0 };
+  bool AntiAliasing = true;
+  int Encoding = vtkNPREdgePass::FLOAT;
+  double PackedThreshold = 0.1;
+  bool PackedBlur = false;
+
+  // Toon shading (toon, toon+edges, and sketch with SketchToon)
+  int ToonBands = 3;
+  bool ToonPerVertex = false;
+
+  // Sketch
+  double Uncertainty = 3.0;
+  int NoiseSeed = 1;
+  double NoiseFrequency = 2.0;
+  bool Paper = false;
+  double PaperColor[3] = { 1.0, 0.98, 0.92 };
+  bool SketchToon = false;
+};
+
+// A vtkNPRPass of settings.Style with every setting applied (also for "shaded": whether to use
+// it, rather than VTK's own chain, is the caller's choice).
+vtkSmartPointer<vtkNPRPass> nprMakePass(const nprPassSettings& settings);
+
+#endif

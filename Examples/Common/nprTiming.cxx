@@ -1,0 +1,36 @@
+#include "nprTiming.h"
+
+#include "vtkCamera.h"
+#include "vtkRenderWindow.h"
+
+#include <algorithm>
+
+double nprSecondsSince(nprClock::time_point start)
+{
+  return std::chrono::duration<double>(nprClock::now() - start).count();
+}
+
+double nprMedian(std::vector<double> values)
+{
+  if (values.empty())
+  {
+    return 0.0;
+  }
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+double nprTimeFrame(
+  vtkRenderWindow* window, vtkCamera* camera, const std::function<void()>& prepare)
+{
+  const nprClock::time_point start = nprClock::now();
+  camera->Modified();
+  if (prepare)
+  {
+    prepare();
+  }
+  window->Render();
+  window->WaitForCompletion();
+  return std::chrono::duration<double, std::milli>(nprClock::now() - start).count();
+}

@@ -1,0 +1,47 @@
+#include "nprWindowImage.h"
+
+#include "vtkImageData.h"
+#include "vtkImageExtractComponents.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkRenderWindow.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <stdexcept>
+
+vtkSmartPointer<vtkImageData> nprReadWindowImage(vtkRenderWindow* window, bool rerender)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->SetShouldRerender(rerender);
+  grab->Update();
+  return grab->GetOutput();
+}
+
+void nprWritePNG(vtkImageData* image, const std::string& path)
+{
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(image);
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    throw std::runtime_error(path + ": cannot write the PNG");
+  }
+}
+
+void nprWriteWindowPNG(vtkRenderWindow* window, const std::string& path, bool grey)
+{
+  vtkSmartPointer<vtkImageData> image = nprReadWindowImage(window, true);
+  if (grey)
+  {
+    vtkNew<vtkImageExtractComponents> first;
+    first->SetInputData(image);
+    first->SetComponents(0);
+    first->Update();
+    image = first->GetOutput();
+  }
+  nprWritePNG(image, path);
+}

@@ -1,0 +1,35 @@
+// npr-render's command line: its options, --help and their parsing.
+#ifndef nprRenderOptions_h
+#define nprRenderOptions_h
+
+#include "nprPassSettings.h"
+
+#include <string>
+#include <vector>
+
+struct nprRenderOptions
+{
+  std::vector<std::string> Models;
+  std::string Output;
+  int Width = 1024;
+  int Height = 768;
+  bool SizeGiven = false;
+  double Azimuth = 0.0;
+  double Elevation = 0.0;
+  double Zoom = 1.0;
+  bool CameraMoved = false; // --azimuth, --elevation or --zoom given
+  double Background[3] = { 1.0, 1.0, 1.0 };
+  std::string CameraIn;
+  std::string CameraOut;
+  int Frames = 0;
+  std::string Backend;
+  std::string EdgeMask;
+  std::string ReferenceMask;
+  std::vector<std::string> CompareStyles;
+  nprPassSettings Pass; // --style and the flags of the styles
+};
+
+// Prints --help and exits for -h; throws nprUsageError for anything else that is wrong.
+nprRenderOptions nprParseRenderOptions(int argc, char* argv[]);
+
+#endif

@@ -1,0 +1,201 @@
+#include "nprBenchmarkOptions.h"
+
+#include "nprArguments.h"
+#include "nprBenchmarkScenes.h"
+
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace
+{
+const char* const Help = R"(usage: npr-benchmark --data DIR --out DIR [options]
+       npr-benchmark --stress --data DIR --out DIR [options]
+
+Times every line method against the plain shaded frame and scores its line mask against the
+object-space reference mask (precision, recall and F1 at 1 and 2 px, mean symmetric distance).
+Writes OUT/results.csv, OUT/results.md and OUT/time_vs_f1.png (plus one plot per size).
+With --stress: the edge pass on scaled, translated, near/far-stretched and degenerate versions of
+each scene, against the unit case; writes OUT/stress.csv and OUT/stress.md.
+
+  --data DIR         folder of cad_part.vtp, rotor.ply and bunny.ply
+  --out DIR          folder for the results (created)
+  --dense-mesh FILE  the 1M-triangle scene (default DIR/bunny_1m.ply; the scene is skipped
+                     with a warning when it is missing and --scenes does not name it)
+  --frames N         timed frames per method and view (default 10; a warm-up frame first)
+  --sizes LIST       WxH sizes, comma separated (default 1024x768,1920x1080)
+  --scenes LIST      of cad, rotor, bunny, isosurface, bunny1m (default all; --stress: cad,bunny)
+  --methods LIST     method names, or the families edges, inked, objectlines (default all)
+  --cameras N        the first N of the 3 cameras (default 3; --stress: 1)
+  --line-width PX    line width of every method (default 1.5)
+  --quick            one small scene (cad), one camera, 320x240, 2 frames, every method
+  --stress-cases LIST  --stress: only the cases whose name contains one of these (comma
+                     separated; the unit case always runs), e.g. scale,translate
+  --max-drift X      --stress: exit 1 when a case's F1@1 moves more than X from the unit
+                     case or a G-buffer pixel is non-finite or out of [near, far]
+  --save-masks       also write each reference and method mask as OUT/masks/*.png
+  -h, --help         this text
+)";
+
+void MakeFolder(const std::string& path)
+{
+  if (!vtksys::SystemTools::MakeDirectory(path))
+  {
+    throw std::runtime_error(path + ": cannot create the folder");
+  }
+}
+}
+
+nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
+{
+  nprBenchmarkOptions options;
+  bool framesGiven = false, sizesGiven = false, camerasGiven = false;
+  nprArgumentReader arguments(argc, argv, Help);
+  while (arguments.Next())
+  {
+    const std::string& arg = arguments.Current();
+    if (arg == "--data")
+    {
+      options.Data = arguments.Value();
+    }
+    else if (arg == "--out")
+    {
+      options.Out = arguments.Value();
+    }
+    else if (arg == "--dense-mesh")
+    {
+      options.DenseMesh = arguments.Value();
+    }
+    else if (arg == "--frames")
+    {
+      options.Frames = nprParseInteger(arg, arguments.Value(), 1, 10000);
+      framesGiven = true;
+    }
+    else if (arg == "--sizes")
+    {
+      options.Sizes.clear();
+      for (const std::string& size : nprSplitList(arguments.Value(), true))
+      {
+        options.Sizes.push_back(nprParseSize("--sizes", size, 16, 8192, "WxH[,WxH...]"));
+      }
+      sizesGiven = !options.Sizes.empty();
+      if (!sizesGiven)
+      {
+        throw nprUsageError("--sizes expects WxH[,WxH...]");
+      }
+    }
+    else if (arg == "--scenes")
+    {
+      options.Scenes = nprSplitList(arguments.Value(), true);
+      options.ScenesGiven = true;
+      for (const std::string& scene : options.Scenes)
+      {
+        const auto& names = nprBenchmarkSceneNames();
+        if (std::find(names.begin(), names.end(), scene) == names.end())
+        {
+          throw nprUsageError(
+            "unknown scene '" + scene + "' (cad, rotor, bunny, isosurface, bunny1m)");
+        }
+      }
+    }
+    else if (arg == "--methods")
+    {
+      options.Methods = nprSplitList(arguments.Value(), true);
+    }
+    else if (arg == "--cameras")
+    {
+      options.Cameras =
+        nprParseInteger(arg, arguments.Value(), 1, static_cast<int>(nprBenchmarkCameras().size()));
+      camerasGiven = true;
+    }
+    else if (arg == "--line-width")
+    {
+      options.LineWidth = nprParseNumberIn(arg, arguments.Value(), 0.5, 16.0);
+    }
+    else if (arg == "--quick")
+    {
+      options.Quick = true;
+    }
+    else if (arg == "--stress")
+    {
+      options.Stress = true;
+    }
+    else if (arg == "--stress-cases")
+    {
+      options.StressCases = nprSplitList(arguments.Value(), true);
+    }
+    else if (arg == "--max-drift")
+    {
+      options.MaxDrift = nprParseNumberIn(arg, arguments.Value(), 0.0, 1.0);
+    }
+    else if (arg == "--save-masks")
+    {
+      options.SaveMasks = true;
+    }
+    else
+    {
+      throw nprUsageError("unknown argument '" + arg + "' (see --help)");
+    }
+  }
+  if (options.Data.empty() || options.Out.empty())
+  {
+    throw nprUsageError("--data DIR and --out DIR are required (see --help)");
+  }
+  if (options.DenseMesh.empty())
+  {
+    options.DenseMesh = options.Data + "/bunny_1m.ply";
+  }
+  if (options.Quick)
+  {
+    if (!options.ScenesGiven)
+    {
+      options.Scenes = { "cad" };
+      options.ScenesGiven = true;
+    }
+    options.Cameras = camerasGiven ? options.Cameras : 1;
+    options.Frames = framesGiven ? options.Frames : 2;
+    if (!sizesGiven)
+    {
+      options.Sizes = { { 320, 240 } };
+    }
+  }
+  if (options.Stress)
+  {
+    if (!options.ScenesGiven)
+    {
+      options.Scenes = { "cad", "bunny" };
+      options.ScenesGiven = true;
+    }
+    options.Cameras = camerasGiven ? options.Cameras : 1;
+    if (!sizesGiven && !options.Quick)
+    {
+      options.Sizes = { { 1024, 768 } };
+    }
+  }
+  if (!options.ScenesGiven)
+  {
+    options.Scenes = nprBenchmarkSceneNames();
+  }
+  return options;
+}
+
+void nprMakeBenchmarkFolders(const nprBenchmarkOptions& options)
+{
+  MakeFolder(options.Out);
+  if (options.SaveMasks)
+  {
+    MakeFolder(options.Out + "/masks");
+  }
+}
+
+std::string nprBenchmarkSizesLine(const nprBenchmarkOptions& options)
+{
+  std::string text;
+  for (const auto& size : options.Sizes)
+  {
+    text +=
+      (text.empty() ? "" : ", ") + std::to_string(size.first) + "x" + std::to_string(size.second);
+  }
+  return text;
+}

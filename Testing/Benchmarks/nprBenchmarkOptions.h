@@ -1,0 +1,38 @@
+// npr-benchmark's command line: its options, --help and their parsing.
+#ifndef nprBenchmarkOptions_h
+#define nprBenchmarkOptions_h
+
+#include <string>
+#include <utility>
+#include <vector>
+
+struct nprBenchmarkOptions
+{
+  std::string Data;
+  std::string Out;
+  std::string DenseMesh; // bunny_1m.ply; default DATA/bunny_1m.ply
+  int Frames = 10;
+  std::vector<std::pair<int, int>> Sizes = { { 1024, 768 }, { 1920, 1080 } };
+  std::vector<std::string> Scenes;
+  bool ScenesGiven = false;
+  std::vector<std::string> Methods;
+  int Cameras = 3;
+  double LineWidth = 1.5;
+  bool Quick = false;
+  bool Stress = false;
+  std::vector<std::string> StressCases; // name parts; empty: every case
+  double MaxDrift = -1.0;               // < 0: report only
+  bool SaveMasks = false;
+};
+
+// Prints --help and exits for -h; throws nprUsageError for anything else that is wrong. The
+// defaults of --quick and --stress are filled in.
+nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[]);
+
+// Creates OUT (and OUT/masks with --save-masks); throws std::runtime_error when it cannot.
+void nprMakeBenchmarkFolders(const nprBenchmarkOptions& options);
+
+// The sizes for the report: "1024x768, 1920x1080".
+std::string nprBenchmarkSizesLine(const nprBenchmarkOptions& options);
+
+#endif
