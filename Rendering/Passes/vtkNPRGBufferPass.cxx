@@ -329,6 +329,7 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
 void vtkNPRGBufferPass::RenderDepthOnly(const vtkRenderState* state, int width, int height)
 {
   this->Internal->Valid = false; // a depth-only frame is never reused, nor a later one from it
+  this->HasLinePrimitives = false; // drawn by the delegate, with the rest
   if (width < 1 || height < 1)
   {
     this->HasContent = false;

@@ -129,12 +129,26 @@ struct nprMapperAccess : public vtkOpenGLPolyDataMapper
 
 struct nprShaderCacheAccess : public vtkOpenGLShaderCache
 {
+  // VTK 9.1-9.3: vertex, fragment, geometry; later also the tessellation stages. The member's
+  // type picks the overload, so no version check.
+  using Replace3 = unsigned int (vtkOpenGLShaderCache::*)(std::string&, std::string&, std::string&);
+  using Replace5 = unsigned int (vtkOpenGLShaderCache::*)(
+    std::string&, std::string&, std::string&, std::string&, std::string&);
+  static void Call(vtkOpenGLShaderCache* cache, Replace3 replace, std::string& vertex,
+    std::string& fragment, std::string& geometry)
+  {
+    (cache->*replace)(vertex, fragment, geometry);
+  }
+  static void Call(vtkOpenGLShaderCache* cache, Replace5 replace, std::string& vertex,
+    std::string& fragment, std::string& geometry)
+  {
+    std::string control, evaluation;
+    (cache->*replace)(vertex, fragment, geometry, control, evaluation);
+  }
   static void Replace(vtkOpenGLShaderCache* cache, std::string& vertex, std::string& fragment,
     std::string& geometry)
   {
-    unsigned int (vtkOpenGLShaderCache::*replace)(std::string&, std::string&, std::string&) =
-      &nprShaderCacheAccess::ReplaceShaderValues;
-    (cache->*replace)(vertex, fragment, geometry);
+    Call(cache, &nprShaderCacheAccess::ReplaceShaderValues, vertex, fragment, geometry);
   }
 };
 }

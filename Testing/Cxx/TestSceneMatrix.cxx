@@ -1,5 +1,5 @@
 // Ordinary VTK scenes under every style (issue 19): polygons with point, cell and no normals,
-// lines, points, a wireframe, an outline around an isosurface, cube axes with grid lines and
+// lines, points, a wireframe, tubes, an outline around an isosurface, cube axes with grid lines and
 // labels, text, glyphs and an image actor. Fails on any VTK error or warning and on a crash;
 // checks that line primitives keep their own colour and width: a white line stays white and
 // a 1-px outline stays about 1 px wide.
@@ -29,9 +29,11 @@
 #include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
 #include "vtkRTAnalyticSource.h"
+#include "vtkShaderProperty.h"
 #include "vtkSphereSource.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
+#include "vtkTubeFilter.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -118,6 +120,14 @@ void EveryKind()
   strokes->SetLines(lines);
   strokes->SetVerts(verts);
   ActorFor(renderer, strokes, 0.0, 0.0)->GetProperty()->SetPointSize(5);
+
+  // A tube around the strokes: polygons, so styled (vtkTubeFilter).
+  vtkNew<vtkTubeFilter> tube;
+  tube->SetInputData(strokes);
+  tube->SetRadius(0.03);
+  tube->SetNumberOfSides(8);
+  tube->Update();
+  ActorFor(renderer, tube->GetOutput(), 0.0, 0.3);
 
   // An isosurface inside its outline.
   vtkNew<vtkRTAnalyticSource> wavelet;
@@ -271,6 +281,36 @@ void LineLooks()
   NPR_CHECK(darkest > 40, "lines were drawn along the white line: " << darkest);
 }
 
+// A user's shader replacement that leaves VTK's shader intact and breaks the passes' code: the
+// sphere is drawn as VTK draws it, with one warning per pass, no error, no crash.
+int Failure()
+{
+  for (int style :
+    { vtkNPRPass::EDGES, vtkNPRPass::TOON, vtkNPRPass::TOON_EDGES, vtkNPRPass::INKED })
+  {
+    nprPassScene scene(120, 120);
+    scene.Pass->SetStyle(style);
+    auto sphere = ActorFor(scene.Renderer, Sphere(1), 0.0, 0.0);
+    sphere->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Output::Dec",
+      true,
+      "//VTK::Output::Dec\n#define nprGeometry 1.0\n#define nprColor 1.0\n#define nprInkColor "
+      "1.0\n",
+      false);
+    scene.Renderer->ResetCamera();
+    auto* output = nprCountingOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
+    const int warnings = output->Warnings;
+    auto shot = RenderTwice(scene);
+    const double white[3] = { 1, 1, 1 };
+    const nprPixelStatistics stats = nprComputePixelStatistics(shot, white);
+    const int warned = output->Warnings - warnings;
+    std::cout << vtkNPRPass::GetStyleName(style) << ": " << stats.ObjectPixels << " object pixels, "
+              << warned << " warnings\n";
+    NPR_CHECK(stats.ObjectPixels > 2000, "the sphere was not drawn");
+    NPR_CHECK(warned >= 1 && warned <= 2, warned << " warnings (one per pass that failed)");
+  }
+  return nprTestResult();
+}
+
 int RunStyle()
 {
   EveryKind();
@@ -296,5 +336,6 @@ int main(int argc, char* argv[])
       return RunStyle();
     };
   }
+  cases["failure"] = Failure;
   return nprRunTestCase(argc, argv, cases);
 }
