@@ -36,6 +36,7 @@
 #include "vtkTubeFilter.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <functional>
 #include <map>
@@ -221,10 +222,10 @@ void LineLooks()
   sphere->SetPhiResolution(16);
   sphere->Update();
   ActorFor(renderer, sphere->GetOutput(), 0.0, 0.0);
-  // The outline of a flat box: a rectangle from -0.8 to 0.8 in x, -0.1 to 0.8 in y.
+  // The outline of a flat box: a rectangle from -0.8 to 0.8 in x, -0.7 to 0.8 in y.
   vtkNew<vtkPlaneSource> rectangle;
-  rectangle->SetOrigin(-0.8, -0.1, 0.0);
-  rectangle->SetPoint1(0.8, -0.1, 0.0);
+  rectangle->SetOrigin(-0.8, -0.7, 0.0);
+  rectangle->SetPoint1(0.8, -0.7, 0.0);
   rectangle->SetPoint2(-0.8, 0.8, 0.0);
   vtkNew<vtkOutlineFilter> outline;
   outline->SetInputConnection(rectangle->GetOutputPort());
@@ -234,9 +235,9 @@ void LineLooks()
   box->GetProperty()->LightingOff();
   // A grey plane below with a white line in front of it (a grid line over a surface).
   vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-0.8, -0.8, -0.1);
-  plane->SetPoint1(0.8, -0.8, -0.1);
-  plane->SetPoint2(-0.8, -0.3, -0.1);
+  plane->SetOrigin(-0.9, -0.8, -0.1);
+  plane->SetPoint1(0.9, -0.8, -0.1);
+  plane->SetPoint2(-0.9, -0.3, -0.1);
   plane->Update();
   auto grey = ActorFor(renderer, plane->GetOutput(), 0.0, 0.0);
   grey->GetProperty()->SetColor(0.3, 0.3, 0.3);
@@ -265,6 +266,17 @@ void LineLooks()
   }
   std::cout << "outline: " << dark << " dark pixels across\n";
   NPR_CHECK(dark >= 1 && dark <= 2, "the 1-px outline is " << dark << " px wide");
+  // The same side in front of the grey plane (76): still 1 px, no lines traced beside it.
+  const double overPlane[3] = { -0.8, -0.45, 0.0 };
+  scene.Project(overPlane, p);
+  dark = 0;
+  for (int x = static_cast<int>(p[0]) - 6; x <= static_cast<int>(p[0]) + 6; ++x)
+  {
+    // Anything but the plane's grey: the outline, or lines traced beside it.
+    dark += std::abs(nprPixel(shot, x, static_cast<int>(p[1])) - 76) > 20 ? 1 : 0;
+  }
+  std::cout << "outline over the plane: " << dark << " pixels across\n";
+  NPR_CHECK(dark >= 1 && dark <= 2, "the 1-px outline over the plane is " << dark << " px wide");
 
   // The white line over the grey plane: white on its row, and no dark pixels around it.
   const double onLine[3] = { 0.0, -0.55, 0.0 };
@@ -311,10 +323,50 @@ int Failure()
   return nprTestResult();
 }
 
+// Bright pixels of white cube-axes grid lines on a dark background, around a dark sphere.
+long long GridLinePixels(int style)
+{
+  nprPassScene scene(240, 240);
+  scene.Pass->SetStyle(style);
+  scene.Renderer->SetBackground(0.1, 0.1, 0.1);
+  ActorFor(scene.Renderer, Sphere(1), 0.0, 0.0)->GetProperty()->SetColor(0.3, 0.2, 0.1);
+  vtkNew<vtkCubeAxesActor> axes;
+  axes->SetBounds(-1.0, 1.0, -1.0, 1.0, -1.0, 1.0);
+  axes->SetCamera(scene.Camera());
+  axes->DrawXGridlinesOn();
+  axes->DrawYGridlinesOn();
+  axes->DrawZGridlinesOn();
+  for (vtkProperty* lines : { axes->GetXAxesGridlinesProperty(),
+         axes->GetYAxesGridlinesProperty(),
+         axes->GetZAxesGridlinesProperty() })
+  {
+    lines->SetColor(1.0, 1.0, 1.0);
+  }
+  axes->XAxisLabelVisibilityOff(); // the grid lines alone
+  axes->YAxisLabelVisibilityOff();
+  axes->ZAxisLabelVisibilityOff();
+  axes->SetXTitle("");
+  axes->SetYTitle("");
+  axes->SetZTitle("");
+  scene.Renderer->AddActor(axes);
+  scene.Camera()->SetPosition(0.5, 0.8, 5.0);
+  scene.Camera()->SetFocalPoint(0.0, 0.0, 0.0);
+  scene.Camera()->SetViewUp(0.0, 1.0, 0.0);
+  scene.Renderer->ResetCamera();
+  return nprCountAbove(RenderTwice(scene), 200);
+}
+
 int RunStyle()
 {
   EveryKind();
   LineLooks();
+  // The grid lines stay white and thin: as many bright pixels as without the pass's style.
+  const long long plain = GridLinePixels(vtkNPRPass::SHADED);
+  const long long styled = GridLinePixels(Style);
+  std::cout << "grid lines: " << styled << " bright pixels, " << plain << " shaded\n";
+  NPR_CHECK(plain > 200, "no grid lines drawn");
+  NPR_CHECK(styled > 0.9 * plain && styled < 1.1 * plain,
+    "grid lines: " << styled << " bright pixels instead of " << plain);
   // Warnings count too: a pass that handles these scenes has nothing to say about them.
   auto* output = nprCountingOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
   NPR_CHECK(
