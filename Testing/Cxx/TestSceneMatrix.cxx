@@ -345,9 +345,10 @@ long long GridLinePixels(int style)
   axes->XAxisLabelVisibilityOff(); // the grid lines alone
   axes->YAxisLabelVisibilityOff();
   axes->ZAxisLabelVisibilityOff();
-  axes->SetXTitle("");
-  axes->SetYTitle("");
-  axes->SetZTitle("");
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    axes->GetTitleTextProperty(axis)->SetColor(0.3, 0.3, 0.3); // not bright
+  }
   scene.Renderer->AddActor(axes);
   scene.Camera()->SetPosition(0.5, 0.8, 5.0);
   scene.Camera()->SetFocalPoint(0.0, 0.0, 0.0);
