@@ -39,6 +39,7 @@ struct vtkNPRGBufferPass::Internals
   // Depth-only mode: geometry from depth, and the copy back into the caller's framebuffer.
   vtkNPRQuadProgram DepthGeometry;
   vtkNPRQuadProgram Copy;
+  vtkNPRShaderCheck Check;
 };
 
 vtkStandardNewMacro(vtkNPRGBufferPass);
@@ -288,6 +289,8 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   vtkOpenGLState::ScopedglEnableDisable blendSaver(glState, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
 
+  this->Internal->Check.Window = window;
+  this->HasLinePrimitives = false; // SetShaderParameters() sees them
   this->PreRender(state); // the mappers now call this pass's shader hooks
   glState->PushFramebufferBindings();
   this->Framebuffer->Bind();
@@ -326,6 +329,7 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
 void vtkNPRGBufferPass::RenderDepthOnly(const vtkRenderState* state, int width, int height)
 {
   this->Internal->Valid = false; // a depth-only frame is never reused, nor a later one from it
+  this->HasLinePrimitives = false; // drawn by the delegate, with the rest
   if (width < 1 || height < 1)
   {
     this->HasContent = false;
@@ -454,14 +458,22 @@ bool vtkNPRGBufferPass::PreReplaceShaderValues(
   return true;
 }
 
-bool vtkNPRGBufferPass::PostReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+bool vtkNPRGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) ||
     fragmentShader.find("//NPR::GBuffer::Impl") == std::string::npos)
   {
     return true;
   }
+  if (vtkNPRDrawsLinesOrPoints(mapper, prop))
+  {
+    // Not geometry: drawn after the effect (vtkNPRPass), so left out here.
+    vtkShaderProgram::Substitute(fragmentShader, "//NPR::GBuffer::Dec", "", false);
+    vtkShaderProgram::Substitute(fragmentShader, "//NPR::GBuffer::Impl", "  discard;\n", false);
+    return true;
+  }
+  std::string originalFragment = fragmentShader;
   const bool mapperNormal = fragmentShader.find("normalVCVSOutput") != std::string::npos;
   const bool vertexVC = fragmentShader.find("in vec4 vertexVCVSOutput;") != std::string::npos;
   std::string defines = std::string("#define NPR_WRITE_NORMALS ") +
@@ -474,6 +486,14 @@ bool vtkNPRGBufferPass::PostReplaceShaderValues(
   vtkShaderProgram::Substitute(
     fragmentShader, "//NPR::GBuffer::Dec", defines + vtkNPRGBufferDecl, false);
   vtkShaderProgram::Substitute(fragmentShader, "//NPR::GBuffer::Impl", vtkNPRGBufferImpl, false);
+  if (!this->Internal->Check.Compiles(vertexShader, geometryShader, fragmentShader))
+  {
+    // Colour and depth as VTK draws them; the effects see what it covers as background.
+    vtkShaderProgram::Substitute(originalFragment, "//NPR::GBuffer::Dec", "", false);
+    vtkShaderProgram::Substitute(originalFragment, "//NPR::GBuffer::Impl", "", false);
+    fragmentShader = originalFragment;
+    this->Internal->Check.WarnSkipped(this, prop, "the G-buffer output");
+  }
   return true;
 }
 
@@ -486,6 +506,7 @@ bool vtkNPRGBufferPass::SetShaderParameters(
   }
   if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
   {
+    this->HasLinePrimitives = this->HasLinePrimitives || vtkNPRDrawsLinesOrPoints(mapper, prop);
     this->Framebuffer->ActivateDrawBuffers(2);
     // The compiler drops the uniforms a variant does not read.
     if (program->IsUniformUsed("nprObjectId"))

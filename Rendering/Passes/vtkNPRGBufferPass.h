@@ -28,9 +28,12 @@
  *
  * The extra outputs are written by every vtkOpenGLPolyDataMapper (and its subclasses: composite,
  * glyph, point-Gaussian helpers) through the vtkOpenGLRenderPass shader hooks, as vtkSSAOPass does.
- * Lit actors give their shading normal; unlit actors, lines and points, and zero-length or NaN
- * normals give the face normal from the derivatives of the view-space position. Other mappers
- * draw colour and depth only; they appear as background to the effects.
+ * Lit actors give their shading normal; unlit actors and zero-length or NaN normals give the face
+ * normal from the derivatives of the view-space position. Line and point primitives (lines,
+ * vertices, the wireframe and points representations) are not geometry: they are left out of the
+ * G-buffer, so that no lines are traced along them, and vtkNPRPass draws them as VTK does after
+ * the effect, depth-tested against its depth sprite (GetHasLinePrimitives()). Tubes (vtkTubeFilter)
+ * are surfaces. Other mappers draw colour and depth only; they appear as background to the effects.
  *
  * Reuse: when neither the props (their MTime and redraw MTime, which includes their mapper and
  * its input), the camera, the lights, the renderer's lighting settings, the size, this pass nor
@@ -188,6 +191,11 @@ public:
   vtkGetMacro(NumberOfGeometryDraws, int);
 
   /**
+   * Whether the last G-buffer left out line or point primitives, which are to be drawn afterwards.
+   */
+  bool GetHasLinePrimitives() const { return this->HasContent && this->HasLinePrimitives; }
+
+  /**
    * Changes whenever the G-buffer's content changes: effects that derive images from it (the
    * line image of vtkNPREdgePass) recompute them only then.
    */
@@ -236,6 +244,7 @@ protected:
   bool Perspective = true;
   bool LastRenderWasSelection = false;
   int NumberOfGeometryDraws = 0;
+  bool HasLinePrimitives = false;
   unsigned long ContentVersion = 0;
   vtkTimeStamp ShaderStageTime; // the injected shader code changed
   float Viewport[4] = { 0, 0, 1, 1 };

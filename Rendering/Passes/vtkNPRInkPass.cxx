@@ -44,11 +44,15 @@ bool vtkNPRCallsInkHooks(vtkMapper* mapper)
 }
 }
 
-vtkNPRInkPass::vtkNPRInkPass() = default;
+vtkNPRInkPass::vtkNPRInkPass()
+  : Check(new vtkNPRShaderCheck)
+{
+}
 
 vtkNPRInkPass::~vtkNPRInkPass()
 {
   this->SetDelegatePass(nullptr);
+  delete this->Check;
 }
 
 double vtkNPRInkPass::GetEffectiveLineWidth(vtkRenderer* renderer) const
@@ -120,6 +124,7 @@ void vtkNPRInkPass::Render(const vtkRenderState* state)
     glState->vtkglClear(GL_COLOR_BUFFER_BIT);
   }
 
+  this->Check->Window = window;
   this->PreRender(state); // the mappers now call this pass's shader hooks
 
   // 1. The back faces' wireframe in ink.
@@ -171,13 +176,25 @@ bool vtkNPRInkPass::PreReplaceShaderValues(
   return true;
 }
 
-bool vtkNPRInkPass::PostReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+bool vtkNPRInkPass::PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
   if (fragmentShader.find("//NPR::Ink::Impl") != std::string::npos)
   {
+    std::string originalFragment = fragmentShader;
     vtkShaderProgram::Substitute(fragmentShader, "//NPR::Ink::Dec", vtkNPRInkDecl, false);
-    vtkShaderProgram::Substitute(fragmentShader, "//NPR::Ink::Impl", vtkNPRInkImpl, false);
+    // Lines and points are not inked: absent from the ink draw, as VTK draws them in the other.
+    vtkShaderProgram::Substitute(fragmentShader, "//NPR::Ink::Impl",
+      vtkNPRDrawsLinesOrPoints(mapper, prop) ? "  if (nprInkMode == 1) { discard; }\n"
+                                             : vtkNPRInkImpl,
+      false);
+    if (!this->Check->Compiles(vertexShader, geometryShader, fragmentShader))
+    {
+      vtkShaderProgram::Substitute(originalFragment, "//NPR::Ink::Dec", "", false);
+      vtkShaderProgram::Substitute(originalFragment, "//NPR::Ink::Impl", "", false);
+      fragmentShader = originalFragment;
+      this->Check->WarnSkipped(this, prop, "the ink");
+    }
   }
   return true;
 }

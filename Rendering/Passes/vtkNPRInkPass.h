@@ -45,6 +45,7 @@
 class vtkRenderer;
 
 class vtkOpenGLState;
+class vtkNPRShaderCheck;
 
 class VTKRENDERINGNPR_EXPORT vtkNPRInkPass : public vtkOpenGLRenderPass
 {
@@ -121,6 +122,7 @@ protected:
   bool CoverageOnly = false;
   int DrawMode = DrawShaded;
   bool WarnedAboutWidth = false;
+  vtkNPRShaderCheck* Check; // tries the ink's shaders before VTK uses them
   // GL_ALIASED_LINE_WIDTH_RANGE's upper end, read once per context (0: not read yet). Not VTK's
   // cached GetMaximumHardwareLineWidth(): some windows (ParaView's X window on VTK 9.2) leave it 1.
   double WidestLine = 0.0;

@@ -4,6 +4,7 @@
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
 #include "vtkNPRInkPass.h"
+#include "vtkNPRLinePrimitivesPass.h"
 #include "vtkNPRSketchPass.h"
 #include "vtkNPRToonPass.h"
 #include "vtkNew.h"
@@ -38,15 +39,22 @@ vtkNPRPass::vtkNPRPass()
   this->SketchPass->SetEdgePass(this->EdgePass);
   this->InkPass = vtkNPRInkPass::New();
   this->InkPass->SetDelegatePass(this->OpaquePass);
+  // Line and point primitives, left out of the G-buffer, drawn after the effect.
+  this->LinePrimitivesPass = vtkNPRLinePrimitivesPass::New();
+  this->LinePrimitivesPass->DelegatePass = this->OpaquePass;
+  this->LinePrimitivesPass->GBufferPass = this->GBufferPass;
+  this->LinePrimitivesPass->EdgePass = this->EdgePass;
   this->EdgesSequence = vtkSequencePass::New();
   vtkNew<vtkRenderPassCollection> passes;
   passes->AddItem(this->GBufferPass);
   passes->AddItem(this->EdgePass);
+  passes->AddItem(this->LinePrimitivesPass);
   this->EdgesSequence->SetPasses(passes);
   this->SketchSequence = vtkSequencePass::New();
   vtkNew<vtkRenderPassCollection> sketchPasses;
   sketchPasses->AddItem(this->GBufferPass);
   sketchPasses->AddItem(this->SketchPass);
+  sketchPasses->AddItem(this->LinePrimitivesPass);
   this->SketchSequence->SetPasses(sketchPasses);
   this->TranslucentPass = vtkTranslucentPass::New();
   this->DepthPeelingPass = vtkDualDepthPeelingPass::New();
@@ -58,6 +66,7 @@ vtkNPRPass::~vtkNPRPass()
   this->RenderStepsPass->Delete();
   this->EdgesSequence->Delete();
   this->SketchSequence->Delete();
+  this->LinePrimitivesPass->Delete();
   this->SketchPass->Delete();
   this->InkPass->Delete();
   this->ToonPass->Delete();
@@ -155,6 +164,7 @@ void vtkNPRPass::ReleaseGraphicsResources(vtkWindow* window)
   this->FlatPass->ReleaseGraphicsResources(window);
   this->SketchPass->ReleaseGraphicsResources(window);
   this->InkPass->ReleaseGraphicsResources(window);
+  this->LinePrimitivesPass->ReleaseGraphicsResources(window);
   this->OpaquePass->ReleaseGraphicsResources(window);
   this->DepthPeelingPass->ReleaseGraphicsResources(window);
   this->TranslucentPass->ReleaseGraphicsResources(window);

@@ -123,6 +123,7 @@ protected:
   vtkNPRToonPass* FlatPass; // one band, no highlight: the flat colours a sketch fills with
   vtkNPRSketchPass* SketchPass;
   vtkNPRInkPass* InkPass;
+  class vtkNPRLinePrimitivesPass* LinePrimitivesPass;
   vtkSequencePass* EdgesSequence;
   vtkSequencePass* SketchSequence;
   vtkTranslucentPass* TranslucentPass;

@@ -1,12 +1,20 @@
 #include "vtkNPRPassUtilities.h"
 
+#include "vtkActor.h"
 #include "vtkHardwareSelector.h"
+#include "vtkNew.h"
 #include "vtkNPROpenGL.h"
 #include "vtkObject.h"
 #include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkShader.h"
 #include "vtkShaderProgram.h"
 
 #include <algorithm>
@@ -98,4 +106,105 @@ void vtkNPRCompositeState::Apply(const int origin[2], int width, int height)
 double vtkNPREffectiveLineWidth(vtkRenderer* renderer, double width)
 {
   return std::min(std::max(width * vtkNPRWindowScale(renderer), 0.5), 32.0);
+}
+
+namespace
+{
+// The primitive a mapper has bound and the cache's last substitutions are protected members of
+// VTK 9.1-9.6; a pointer to member taken through a derived class reads them.
+struct nprMapperAccess : public vtkOpenGLPolyDataMapper
+{
+  static int BoundMode(vtkOpenGLPolyDataMapper* mapper, int representation)
+  {
+    vtkOpenGLHelper* vtkOpenGLPolyDataMapper::*bound = &nprMapperAccess::LastBoundBO;
+    const vtkOpenGLHelper* helper = mapper->*bound;
+    if (!helper)
+    {
+      return -1;
+    }
+    int (vtkOpenGLPolyDataMapper::*mode)(int, int) = &nprMapperAccess::GetOpenGLMode;
+    return (mapper->*mode)(representation, helper->PrimitiveType);
+  }
+};
+
+struct nprShaderCacheAccess : public vtkOpenGLShaderCache
+{
+  // VTK 9.1-9.3: vertex, fragment, geometry; later also the tessellation stages. The member's
+  // type picks the overload, so no version check.
+  using Replace3 = unsigned int (vtkOpenGLShaderCache::*)(std::string&, std::string&, std::string&);
+  using Replace5 = unsigned int (vtkOpenGLShaderCache::*)(
+    std::string&, std::string&, std::string&, std::string&, std::string&);
+  static void Call(vtkOpenGLShaderCache* cache, Replace3 replace, std::string& vertex,
+    std::string& fragment, std::string& geometry)
+  {
+    (cache->*replace)(vertex, fragment, geometry);
+  }
+  static void Call(vtkOpenGLShaderCache* cache, Replace5 replace, std::string& vertex,
+    std::string& fragment, std::string& geometry)
+  {
+    std::string control, evaluation;
+    (cache->*replace)(vertex, fragment, geometry, control, evaluation);
+  }
+  static void Replace(vtkOpenGLShaderCache* cache, std::string& vertex, std::string& fragment,
+    std::string& geometry)
+  {
+    Call(cache, &nprShaderCacheAccess::ReplaceShaderValues, vertex, fragment, geometry);
+  }
+};
+}
+
+bool vtkNPRDrawsLinesOrPoints(vtkAbstractMapper* mapper, vtkProp* prop)
+{
+  auto* polyDataMapper = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
+  auto* actor = vtkActor::SafeDownCast(prop);
+  if (!polyDataMapper || !actor)
+  {
+    return false;
+  }
+  const int mode =
+    nprMapperAccess::BoundMode(polyDataMapper, actor->GetProperty()->GetRepresentation());
+  return mode == GL_LINES || mode == GL_POINTS;
+}
+
+bool vtkNPRShaderCheck::Compiles(
+  const std::string& vertex, const std::string& geometry, const std::string& fragment)
+{
+  if (!this->Window || !this->Window->GetShaderCache())
+  {
+    return true;
+  }
+  const std::string key = vertex + '\0' + geometry + '\0' + fragment;
+  const auto known = this->Known.find(key);
+  if (known != this->Known.end())
+  {
+    return known->second;
+  }
+  std::string sources[3] = { vertex, geometry, fragment };
+  nprShaderCacheAccess::Replace(this->Window->GetShaderCache(), sources[0], sources[2], sources[1]);
+  const vtkShader::Type types[3] = { vtkShader::Vertex, vtkShader::Geometry, vtkShader::Fragment };
+  bool compiles = true;
+  for (int i = 0; i < 3 && compiles; ++i)
+  {
+    if (sources[i].empty())
+    {
+      continue;
+    }
+    vtkNew<vtkShader> shader;
+    shader->SetType(types[i]);
+    shader->SetSource(sources[i]);
+    compiles = shader->Compile();
+    shader->Cleanup();
+  }
+  this->Known[key] = compiles;
+  return compiles;
+}
+
+void vtkNPRShaderCheck::WarnSkipped(vtkObject* pass, vtkProp* prop, const char* what)
+{
+  const std::string name = prop ? prop->GetClassName() : "prop";
+  if (this->Warned.insert(name).second)
+  {
+    vtkWarningWithObjectMacro(pass, << what << " does not compile with the shader of a " << name
+                                    << ": it is drawn without it");
+  }
 }

@@ -4,9 +4,14 @@
 
 #include "vtkOpenGLState.h" // for the scoped state savers
 
-#include <string> // for std::string
+#include <set>           // for std::set
+#include <string>        // for std::string
+#include <unordered_map> // for std::unordered_map
 
+class vtkAbstractMapper;
 class vtkObject;
+class vtkOpenGLRenderWindow;
+class vtkProp;
 class vtkRenderState;
 class vtkRenderer;
 
@@ -32,6 +37,30 @@ void vtkNPRViewportOrigin(const vtkRenderState* state, int origin[2]);
 // effect. Returns whether the tag was inserted.
 bool vtkNPRInsertAfterShaderTag(
   std::string& source, const char* vtkTag, const char* tag, vtkObject* pass, const char* stage);
+
+// Whether the vtkOpenGLPolyDataMapper `mapper` is building or drawing a line or point primitive
+// (lines, vertices, or polygons in the wireframe or points representation) for `prop`: those keep
+// their own look, as VTK draws them. Valid from the mapper's shader hooks (its bound primitive).
+bool vtkNPRDrawsLinesOrPoints(vtkAbstractMapper* mapper, vtkProp* prop);
+
+// Tries a pass's changed shaders before VTK uses them: VTK 9.1 crashes on a shader that does not
+// compile. Compiles them the way VTK's shader cache would (results kept per source), and warns
+// once per pass and prop class when they do not, so that the prop is drawn as VTK draws it.
+class vtkNPRShaderCheck
+{
+public:
+  // The window of the frame being drawn (whose context the hooks run in).
+  vtkOpenGLRenderWindow* Window = nullptr;
+  // Whether the three stages compile (an empty geometry shader is none). Without a window, true.
+  bool Compiles(
+    const std::string& vertex, const std::string& geometry, const std::string& fragment);
+  // One warning per prop class: `pass` could not apply `what` to the prop's shader.
+  void WarnSkipped(vtkObject* pass, vtkProp* prop, const char* what);
+
+private:
+  std::unordered_map<std::string, bool> Known;
+  std::set<std::string> Warned;
+};
 
 // The state a full-screen depth-sprite composite changes, restored when this goes out of scope.
 // Apply() sets what the composites need: the viewport (callers such as ParaView's image-processing

@@ -50,6 +50,7 @@ struct vtkNPRToonPass::Internals
   float Intensity[MaximumNumberOfLights];
   bool WarnedAboutLights = false;
   std::string ShaderSettings;
+  vtkNPRShaderCheck Check;
 };
 
 vtkStandardNewMacro(vtkNPRToonPass);
@@ -226,6 +227,7 @@ void vtkNPRToonPass::Render(const vtkRenderState* state)
   vtkRenderer* renderer = state->GetRenderer();
 
   this->UpdateTable(renderer->GetRenderWindow());
+  this->Internal->Check.Window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   this->UpdateLights(state);
   // What is compiled into the shaders: the mappers rebuild them when it changes.
   const std::string settings = std::string(this->PerVertex ? "v" : "p") +
@@ -248,13 +250,16 @@ void vtkNPRToonPass::Render(const vtkRenderState* state)
 
 namespace
 {
-// The lit fragment shaders of vtkOpenGLPolyDataMapper (Gouraud, Phong, flat), not PBR.
+// The lit fragment shaders of vtkOpenGLPolyDataMapper (Gouraud, Phong, flat), not PBR. VTK's
+// declarations, not mere mentions: the G-buffer's code, already in place when this pass is its
+// delegate, names normalVCVSOutput too; and VTK 9.1 declares lightColor0 in unlit shaders.
 bool IsLitPolyDataShader(const std::string& fragmentShader)
 {
   return fragmentShader.find("uniform vec3 lightColor0;") != std::string::npos &&
     fragmentShader.find("vec3 diffuseColor") != std::string::npos &&
     fragmentShader.find("vec3 ambientColor") != std::string::npos &&
-    fragmentShader.find("normalVCVSOutput") != std::string::npos &&
+    fragmentShader.find("vec3 normalVCVSOutput") != std::string::npos &&
+    fragmentShader.find("float specularPower") != std::string::npos &&
     fragmentShader.find("albedo") == std::string::npos;
 }
 }
@@ -279,12 +284,15 @@ bool vtkNPRToonPass::PostReplaceShaderValues(std::string& vertexShader,
   {
     return true;
   }
-  if (!IsLitPolyDataShader(fragmentShader))
+  // Lines and points keep their own colours: no bands on them.
+  if (!IsLitPolyDataShader(fragmentShader) || vtkNPRDrawsLinesOrPoints(mapper, prop))
   {
     vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Impl", "", false);
     vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Dec", "", false);
     return true;
   }
+  const std::string originalVertex = vertexShader;
+  std::string originalFragment = fragmentShader;
   const bool perVertex = this->PerVertex && geometryShader.empty() &&
     vertexShader.find("normalVCVSOutput = normalMatrix * normalMC") != std::string::npos &&
     vertexShader.find("vertexVCVSOutput = MCVCMatrix * vertexMC") != std::string::npos &&
@@ -311,6 +319,15 @@ bool vtkNPRToonPass::PostReplaceShaderValues(std::string& vertexShader,
       std::string("//VTK::Light::Dec\n") + defines + vtkNPRToonLighting + vtkNPRToonVertexDecl, false);
     vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Impl",
       std::string("//VTK::Light::Impl\n") + vtkNPRToonVertexImpl, false);
+  }
+  if (!this->Internal->Check.Compiles(vertexShader, geometryShader, fragmentShader))
+  {
+    // The prop as VTK draws it, rather than no prop (or a crash).
+    vertexShader = originalVertex;
+    vtkShaderProgram::Substitute(originalFragment, "//NPR::Toon::Impl", "", false);
+    vtkShaderProgram::Substitute(originalFragment, "//NPR::Toon::Dec", "", false);
+    fragmentShader = originalFragment;
+    this->Internal->Check.WarnSkipped(this, prop, "toon shading");
   }
   return true;
 }

@@ -1,6 +1,7 @@
 // The edge pass over every kind of opaque actor: point normals, cell normals only, no normals,
 // flat, unlit, zero-length normals, scalar colours, a texture, the wireframe and points
-// representations, a composite (multiblock) mapper and glyphs. Each is drawn and has lines.
+// representations, a composite (multiblock) mapper and glyphs. Each is drawn; each surface has
+// lines, the wireframe and points none (they are line and point primitives, not geometry).
 //
 // usage: TestEdgePassActorKinds CASE [DATA_DIR]   (CASE: see the table at the end of this file)
 #include "nprTesting.h"
@@ -205,7 +206,16 @@ int ActorKinds()
     std::cout << kind.Name << ": " << stats.ObjectPixels << " object pixels, " << lines
               << " line pixels\n";
     NPR_CHECK(stats.ObjectPixels > 500, kind.Name << ": the actor was not drawn");
-    NPR_CHECK(lines > 40, kind.Name << ": no lines");
+    // Line and point primitives are not geometry: no lines traced around them (issue 19).
+    const std::string name = kind.Name;
+    if (name == "wireframe lines" || name == "points")
+    {
+      NPR_CHECK(lines < 10, kind.Name << ": lines traced along line or point primitives");
+    }
+    else
+    {
+      NPR_CHECK(lines > 40, kind.Name << ": no lines");
+    }
   }
   return nprTestResult();
 }

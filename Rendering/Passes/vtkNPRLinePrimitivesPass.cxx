@@ -1,0 +1,41 @@
+#include "vtkNPRLinePrimitivesPass.h"
+
+#include "vtkNPREdgePass.h"
+#include "vtkNPRGBufferPass.h"
+#include "vtkNPRPassUtilities.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+
+vtkStandardNewMacro(vtkNPRLinePrimitivesPass);
+
+void vtkNPRLinePrimitivesPass::Render(const vtkRenderState* state)
+{
+  this->NumberOfRenderedProps = 0;
+  if (!this->DelegatePass || !this->GBufferPass || !this->GBufferPass->GetHasLinePrimitives() ||
+    state->GetRenderer()->GetSelector() || (this->EdgePass && this->EdgePass->GetCoverageOnly()))
+  {
+    return; // a picking render draws everything in the G-buffer pass
+  }
+  this->PreRender(state);
+  this->DelegatePass->Render(state);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  this->PostRender(state);
+}
+
+bool vtkNPRLinePrimitivesPass::PostReplaceShaderValues(
+  std::string& vertexShader, std::string&, std::string&, vtkAbstractMapper* mapper, vtkProp* prop)
+{
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) || vtkNPRDrawsLinesOrPoints(mapper, prop))
+  {
+    return true;
+  }
+  // Polygons were drawn in the G-buffer: every vertex beyond the far plane, nothing rasterised.
+  const std::string::size_type end = vertexShader.rfind('}');
+  if (end != std::string::npos)
+  {
+    vertexShader.insert(end, "  gl_Position = vec4(0.0, 0.0, 2.0, 1.0);\n");
+  }
+  return true;
+}

@@ -1,0 +1,394 @@
+// Ordinary VTK scenes under every style (issue 19): polygons with point, cell and no normals,
+// lines, points, a wireframe, tubes, an outline around an isosurface, cube axes with grid lines and
+// labels, text, glyphs and an image actor. Fails on any VTK error or warning and on a crash;
+// checks that line primitives keep their own colour and width: a white line stays white and
+// a 1-px outline stays about 1 px wide.
+//
+// usage: TestSceneMatrix STYLE [DATA_DIR]   (STYLE: a vtkNPRPass style name, '+' written '-')
+#include "nprTesting.h"
+
+#include "vtkActor.h"
+#include "vtkBillboardTextActor3D.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkConeSource.h"
+#include "vtkContourFilter.h"
+#include "vtkCubeAxesActor.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkImageActor.h"
+#include "vtkImageData.h"
+#include "vtkImageMapper3D.h"
+#include "vtkLineSource.h"
+#include "vtkNew.h"
+#include "vtkOutlineFilter.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkShaderProperty.h"
+#include "vtkSphereSource.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
+#include "vtkTubeFilter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <map>
+#include <string>
+
+namespace
+{
+int Style = vtkNPRPass::SHADED;
+
+vtkSmartPointer<vtkActor> ActorFor(vtkRenderer* renderer, vtkPolyData* data, double x, double y)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(data);
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->SetPosition(x, y, 0.0);
+  actor->GetProperty()->SetColor(0.8, 0.6, 0.4);
+  renderer->AddActor(actor);
+  return actor;
+}
+
+vtkSmartPointer<vtkPolyData> Sphere(int normals) // 0 none, 1 point, 2 cell
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(0.4);
+  sphere->SetThetaResolution(16);
+  sphere->SetPhiResolution(8);
+  sphere->Update();
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->DeepCopy(sphere->GetOutput());
+  data->GetPointData()->SetNormals(nullptr);
+  if (normals > 0)
+  {
+    vtkNew<vtkPolyDataNormals> filter;
+    filter->SetInputData(data);
+    filter->SetComputePointNormals(normals == 1);
+    filter->SetComputeCellNormals(normals == 2);
+    filter->Update();
+    data->DeepCopy(filter->GetOutput());
+  }
+  return data;
+}
+
+// Renders twice (the second frame may reuse the G-buffer) and returns the last image.
+vtkSmartPointer<vtkImageData> RenderTwice(nprPassScene& scene)
+{
+  scene.Render();
+  return scene.Render();
+}
+
+// Every kind of prop in one scene: nothing reported, nothing crashes, something drawn.
+void EveryKind()
+{
+  nprPassScene scene(360, 280);
+  scene.Pass->SetStyle(Style);
+  vtkRenderer* renderer = scene.Renderer;
+  ActorFor(renderer, Sphere(1), -1.0, 1.0);
+  ActorFor(renderer, Sphere(2), 0.0, 1.0);
+  ActorFor(renderer, Sphere(0), 1.0, 1.0);
+  ActorFor(renderer, Sphere(1), 2.0, 1.0)->GetProperty()->SetRepresentationToWireframe();
+  auto points = ActorFor(renderer, Sphere(1), 2.0, 0.0);
+  points->GetProperty()->SetRepresentationToPoints();
+  points->GetProperty()->SetPointSize(4);
+
+  // Lines and vertices of their own.
+  vtkNew<vtkPolyData> strokes;
+  vtkNew<vtkPoints> strokePoints;
+  vtkNew<vtkCellArray> lines, verts;
+  for (int i = 0; i < 8; ++i)
+  {
+    strokePoints->InsertNextPoint(-1.4 + 0.1 * i, -1.0 + 0.05 * i, 0.0);
+    verts->InsertNextCell(1);
+    verts->InsertCellPoint(i);
+  }
+  lines->InsertNextCell(8);
+  for (int i = 0; i < 8; ++i)
+  {
+    lines->InsertCellPoint(i);
+  }
+  strokes->SetPoints(strokePoints);
+  strokes->SetLines(lines);
+  strokes->SetVerts(verts);
+  ActorFor(renderer, strokes, 0.0, 0.0)->GetProperty()->SetPointSize(5);
+
+  // A tube around the strokes: polygons, so styled (vtkTubeFilter).
+  vtkNew<vtkTubeFilter> tube;
+  tube->SetInputData(strokes);
+  tube->SetRadius(0.03);
+  tube->SetNumberOfSides(8);
+  tube->Update();
+  ActorFor(renderer, tube->GetOutput(), 0.0, 0.3);
+
+  // An isosurface inside its outline.
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-8, 8, -8, 8, -8, 8);
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputConnection(wavelet->GetOutputPort());
+  contour->SetValue(0, 160.0);
+  contour->Update();
+  auto iso = ActorFor(renderer, contour->GetOutput(), -0.5, -0.5);
+  iso->SetScale(0.05);
+  vtkNew<vtkOutlineFilter> outline;
+  outline->SetInputConnection(wavelet->GetOutputPort());
+  outline->Update();
+  auto box = ActorFor(renderer, outline->GetOutput(), -0.5, -0.5);
+  box->SetScale(0.05);
+  box->GetProperty()->SetColor(0.0, 0.0, 0.0);
+
+  // Glyphs.
+  vtkNew<vtkPlaneSource> grid;
+  grid->SetResolution(2, 2);
+  grid->SetCenter(1.0, -1.0, 0.0);
+  vtkNew<vtkConeSource> cone;
+  cone->SetHeight(0.2);
+  cone->SetRadius(0.1);
+  vtkNew<vtkGlyph3DMapper> glyphs;
+  glyphs->SetInputConnection(grid->GetOutputPort());
+  glyphs->SetSourceConnection(cone->GetOutputPort());
+  vtkNew<vtkActor> glyphActor;
+  glyphActor->SetMapper(glyphs);
+  renderer->AddActor(glyphActor);
+
+  // An image actor.
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(8, 8, 1);
+  image->SetSpacing(0.05, 0.05, 1.0);
+  image->SetOrigin(-2.0, -0.5, 0.0);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  for (int i = 0; i < 64; ++i)
+  {
+    static_cast<unsigned char*>(image->GetScalarPointer())[i] = static_cast<unsigned char>(4 * i);
+  }
+  vtkNew<vtkImageActor> imageActor;
+  imageActor->GetMapper()->SetInputData(image);
+  renderer->AddActor(imageActor);
+
+  // Text, flat and in the scene.
+  vtkNew<vtkTextActor> text;
+  text->SetInput("vtkTextActor");
+  text->GetTextProperty()->SetColor(0.0, 0.0, 0.0);
+  text->SetPosition(10, 10);
+  renderer->AddActor2D(text);
+  vtkNew<vtkBillboardTextActor3D> billboard;
+  billboard->SetInput("billboard");
+  billboard->SetPosition(0.0, -1.5, 0.0);
+  billboard->GetTextProperty()->SetColor(0.0, 0.0, 1.0);
+  renderer->AddActor(billboard);
+
+  // Cube axes with grid lines and 3D labels.
+  vtkNew<vtkCubeAxesActor> axes;
+  axes->SetBounds(-1.5, 2.5, -1.5, 1.5, -0.5, 0.5);
+  axes->SetCamera(scene.Camera());
+  axes->DrawXGridlinesOn();
+  axes->DrawYGridlinesOn();
+  axes->DrawZGridlinesOn();
+  axes->SetUse2DMode(false);
+  renderer->AddActor(axes);
+
+  renderer->ResetCamera();
+  auto shot = RenderTwice(scene);
+  if (const char* dump = std::getenv("NPR_TEST_DUMP")) // a look at the scene
+  {
+    nprWritePNG(shot, std::string(dump) + vtkNPRPass::GetStyleName(Style) + ".png");
+  }
+  const double white[3] = { 1, 1, 1 };
+  const nprPixelStatistics stats = nprComputePixelStatistics(shot, white);
+  std::cout << "every kind: " << stats.ObjectPixels << " object pixels\n";
+  NPR_CHECK(stats.ObjectPixels > 2000, "the scene was not drawn");
+}
+
+// A 1-px black outline (a flat box seen head-on) around a sphere, and a 1-px white line over a
+// grey plane: the line primitives keep their colour and width.
+void LineLooks()
+{
+  nprPassScene scene(200, 200);
+  scene.Pass->SetStyle(Style);
+  vtkRenderer* renderer = scene.Renderer;
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(0.3);
+  sphere->SetCenter(0.0, 0.3, 0.0);
+  sphere->SetThetaResolution(32);
+  sphere->SetPhiResolution(16);
+  sphere->Update();
+  ActorFor(renderer, sphere->GetOutput(), 0.0, 0.0);
+  // The outline of a flat box: a rectangle from -0.8 to 0.8 in x, -0.7 to 0.8 in y.
+  vtkNew<vtkPlaneSource> rectangle;
+  rectangle->SetOrigin(-0.8, -0.7, 0.0);
+  rectangle->SetPoint1(0.8, -0.7, 0.0);
+  rectangle->SetPoint2(-0.8, 0.8, 0.0);
+  vtkNew<vtkOutlineFilter> outline;
+  outline->SetInputConnection(rectangle->GetOutputPort());
+  outline->Update();
+  auto box = ActorFor(renderer, outline->GetOutput(), 0.0, 0.0);
+  box->GetProperty()->SetColor(0.0, 0.0, 0.0);
+  box->GetProperty()->LightingOff();
+  // A grey plane below with a white line in front of it (a grid line over a surface).
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-0.9, -0.8, -0.1);
+  plane->SetPoint1(0.9, -0.8, -0.1);
+  plane->SetPoint2(-0.9, -0.3, -0.1);
+  plane->Update();
+  auto grey = ActorFor(renderer, plane->GetOutput(), 0.0, 0.0);
+  grey->GetProperty()->SetColor(0.3, 0.3, 0.3);
+  grey->GetProperty()->LightingOff();
+  vtkNew<vtkLineSource> line;
+  line->SetPoint1(-0.6, -0.55, 0.0);
+  line->SetPoint2(0.6, -0.55, 0.0);
+  line->Update();
+  auto whiteLine = ActorFor(renderer, line->GetOutput(), 0.0, 0.0);
+  whiteLine->GetProperty()->SetColor(1.0, 1.0, 1.0);
+  whiteLine->GetProperty()->LightingOff();
+  scene.LookAtOrigin(4.0);
+  scene.Camera()->ParallelProjectionOn();
+  scene.Camera()->SetParallelScale(1.0);
+  auto shot = RenderTwice(scene);
+
+  // Dark pixels across the outline's left side, on a row between the sphere and the plane.
+  double p[2];
+  const double left[3] = { -0.8, 0.0, 0.0 };
+  scene.Project(left, p);
+  const int row = static_cast<int>(p[1]);
+  int dark = 0;
+  for (int x = static_cast<int>(p[0]) - 6; x <= static_cast<int>(p[0]) + 6; ++x)
+  {
+    dark += nprPixel(shot, x, row) < 128 ? 1 : 0;
+  }
+  std::cout << "outline: " << dark << " dark pixels across\n";
+  NPR_CHECK(dark >= 1 && dark <= 2, "the 1-px outline is " << dark << " px wide");
+  // The same side in front of the grey plane (76): still 1 px, no lines traced beside it.
+  const double overPlane[3] = { -0.8, -0.45, 0.0 };
+  scene.Project(overPlane, p);
+  dark = 0;
+  for (int x = static_cast<int>(p[0]) - 6; x <= static_cast<int>(p[0]) + 6; ++x)
+  {
+    // Anything but the plane's grey: the outline, or lines traced beside it.
+    dark += std::abs(nprPixel(shot, x, static_cast<int>(p[1])) - 76) > 20 ? 1 : 0;
+  }
+  std::cout << "outline over the plane: " << dark << " pixels across\n";
+  NPR_CHECK(dark >= 1 && dark <= 2, "the 1-px outline over the plane is " << dark << " px wide");
+
+  // The white line over the grey plane: white on its row, and no dark pixels around it.
+  const double onLine[3] = { 0.0, -0.55, 0.0 };
+  scene.Project(onLine, p);
+  int brightest = 0, darkest = 255;
+  for (int y = static_cast<int>(p[1]) - 4; y <= static_cast<int>(p[1]) + 4; ++y)
+  {
+    const int value = nprPixel(shot, static_cast<int>(p[0]), y);
+    brightest = std::max(brightest, value);
+    darkest = std::min(darkest, value);
+  }
+  std::cout << "white line: brightest " << brightest << ", darkest " << darkest << "\n";
+  NPR_CHECK(brightest > 240, "the white line is not white: " << brightest);
+  NPR_CHECK(darkest > 40, "lines were drawn along the white line: " << darkest);
+}
+
+// A user's shader replacement that leaves VTK's shader intact and breaks the passes' code: the
+// sphere is drawn as VTK draws it, with one warning per pass, no error, no crash.
+int Failure()
+{
+  for (int style :
+    { vtkNPRPass::EDGES, vtkNPRPass::TOON, vtkNPRPass::TOON_EDGES, vtkNPRPass::INKED })
+  {
+    nprPassScene scene(120, 120);
+    scene.Pass->SetStyle(style);
+    auto sphere = ActorFor(scene.Renderer, Sphere(1), 0.0, 0.0);
+    sphere->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Output::Dec",
+      true,
+      "//VTK::Output::Dec\n#define nprGeometry 1.0\n#define nprColor 1.0\n#define nprInkColor "
+      "1.0\n",
+      false);
+    scene.Renderer->ResetCamera();
+    auto* output = nprCountingOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
+    const int warnings = output->Warnings;
+    auto shot = RenderTwice(scene);
+    const double white[3] = { 1, 1, 1 };
+    const nprPixelStatistics stats = nprComputePixelStatistics(shot, white);
+    const int warned = output->Warnings - warnings;
+    std::cout << vtkNPRPass::GetStyleName(style) << ": " << stats.ObjectPixels << " object pixels, "
+              << warned << " warnings\n";
+    NPR_CHECK(stats.ObjectPixels > 2000, "the sphere was not drawn");
+    NPR_CHECK(warned >= 1 && warned <= 2, warned << " warnings (one per pass that failed)");
+  }
+  return nprTestResult();
+}
+
+// Bright pixels of white cube-axes grid lines on a dark background, around a dark sphere.
+long long GridLinePixels(int style)
+{
+  nprPassScene scene(240, 240);
+  scene.Pass->SetStyle(style);
+  scene.Renderer->SetBackground(0.1, 0.1, 0.1);
+  ActorFor(scene.Renderer, Sphere(1), 0.0, 0.0)->GetProperty()->SetColor(0.3, 0.2, 0.1);
+  vtkNew<vtkCubeAxesActor> axes;
+  axes->SetBounds(-1.0, 1.0, -1.0, 1.0, -1.0, 1.0);
+  axes->SetCamera(scene.Camera());
+  axes->DrawXGridlinesOn();
+  axes->DrawYGridlinesOn();
+  axes->DrawZGridlinesOn();
+  for (vtkProperty* lines : { axes->GetXAxesGridlinesProperty(),
+         axes->GetYAxesGridlinesProperty(),
+         axes->GetZAxesGridlinesProperty() })
+  {
+    lines->SetColor(1.0, 1.0, 1.0);
+  }
+  axes->XAxisLabelVisibilityOff(); // the grid lines alone
+  axes->YAxisLabelVisibilityOff();
+  axes->ZAxisLabelVisibilityOff();
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    axes->GetTitleTextProperty(axis)->SetColor(0.3, 0.3, 0.3); // not bright
+  }
+  scene.Renderer->AddActor(axes);
+  scene.Camera()->SetPosition(0.5, 0.8, 5.0);
+  scene.Camera()->SetFocalPoint(0.0, 0.0, 0.0);
+  scene.Camera()->SetViewUp(0.0, 1.0, 0.0);
+  scene.Renderer->ResetCamera();
+  return nprCountAbove(RenderTwice(scene), 200);
+}
+
+int RunStyle()
+{
+  EveryKind();
+  LineLooks();
+  // The grid lines stay white and thin: as many bright pixels as without the pass's style.
+  const long long plain = GridLinePixels(vtkNPRPass::SHADED);
+  const long long styled = GridLinePixels(Style);
+  std::cout << "grid lines: " << styled << " bright pixels, " << plain << " shaded\n";
+  NPR_CHECK(plain > 200, "no grid lines drawn");
+  NPR_CHECK(styled > 0.9 * plain && styled < 1.1 * plain,
+    "grid lines: " << styled << " bright pixels instead of " << plain);
+  // Warnings count too: a pass that handles these scenes has nothing to say about them.
+  auto* output = nprCountingOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
+  NPR_CHECK(
+    output && output->Warnings == 0, (output ? output->Warnings : -1) << " VTK warnings reported");
+  return nprTestResult();
+}
+}
+
+int main(int argc, char* argv[])
+{
+  std::map<std::string, std::function<int()>> cases;
+  for (int style = vtkNPRPass::SHADED; style <= vtkNPRPass::INKED; ++style)
+  {
+    std::string name = vtkNPRPass::GetStyleName(style);
+    std::replace(name.begin(), name.end(), '+', '-');
+    cases[name] = [style]
+    {
+      Style = style;
+      return RunStyle();
+    };
+  }
+  cases["failure"] = Failure;
+  return nprRunTestCase(argc, argv, cases);
+}
