@@ -291,7 +291,7 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
 
   this->Internal->Check.Window = window;
   this->HasLinePrimitives = false; // SetShaderParameters() sees them
-  this->PreRender(state); // the mappers now call this pass's shader hooks
+  this->PreRender(state);          // the mappers now call this pass's shader hooks
   glState->PushFramebufferBindings();
   this->Framebuffer->Bind();
   this->Framebuffer->AddColorAttachment(0, this->ColorTexture);
@@ -328,7 +328,7 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
 
 void vtkNPRGBufferPass::RenderDepthOnly(const vtkRenderState* state, int width, int height)
 {
-  this->Internal->Valid = false; // a depth-only frame is never reused, nor a later one from it
+  this->Internal->Valid = false;   // a depth-only frame is never reused, nor a later one from it
   this->HasLinePrimitives = false; // drawn by the delegate, with the rest
   if (width < 1 || height < 1)
   {
@@ -459,7 +459,8 @@ bool vtkNPRGBufferPass::PreReplaceShaderValues(
 }
 
 bool vtkNPRGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
-  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper,
+  vtkProp* prop)
 {
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) ||
     fragmentShader.find("//NPR::GBuffer::Impl") == std::string::npos)
@@ -473,7 +474,7 @@ bool vtkNPRGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
     vtkShaderProgram::Substitute(fragmentShader, "//NPR::GBuffer::Impl", "  discard;\n", false);
     return true;
   }
-  std::string originalFragment = fragmentShader;
+  const std::string fragmentBefore = fragmentShader;
   const bool mapperNormal = fragmentShader.find("normalVCVSOutput") != std::string::npos;
   const bool vertexVC = fragmentShader.find("in vec4 vertexVCVSOutput;") != std::string::npos;
   std::string defines = std::string("#define NPR_WRITE_NORMALS ") +
@@ -486,14 +487,10 @@ bool vtkNPRGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
   vtkShaderProgram::Substitute(
     fragmentShader, "//NPR::GBuffer::Dec", defines + vtkNPRGBufferDecl, false);
   vtkShaderProgram::Substitute(fragmentShader, "//NPR::GBuffer::Impl", vtkNPRGBufferImpl, false);
-  if (!this->Internal->Check.Compiles(vertexShader, geometryShader, fragmentShader))
-  {
-    // Colour and depth as VTK draws them; the effects see what it covers as background.
-    vtkShaderProgram::Substitute(originalFragment, "//NPR::GBuffer::Dec", "", false);
-    vtkShaderProgram::Substitute(originalFragment, "//NPR::GBuffer::Impl", "", false);
-    fragmentShader = originalFragment;
-    this->Internal->Check.WarnSkipped(this, prop, "the G-buffer output");
-  }
+  // If not: colour and depth as VTK draws them; the effects see what it covers as background.
+  this->Internal->Check.KeepOrRevert(this, prop, "the G-buffer output", vertexShader,
+    geometryShader, fragmentShader, vertexShader, fragmentBefore,
+    { "//NPR::GBuffer::Dec", "//NPR::GBuffer::Impl" });
   return true;
 }
 

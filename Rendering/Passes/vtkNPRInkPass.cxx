@@ -181,20 +181,15 @@ bool vtkNPRInkPass::PostReplaceShaderValues(std::string& vertexShader, std::stri
 {
   if (fragmentShader.find("//NPR::Ink::Impl") != std::string::npos)
   {
-    std::string originalFragment = fragmentShader;
+    const std::string fragmentBefore = fragmentShader;
     vtkShaderProgram::Substitute(fragmentShader, "//NPR::Ink::Dec", vtkNPRInkDecl, false);
     // Lines and points are not inked: absent from the ink draw, as VTK draws them in the other.
     vtkShaderProgram::Substitute(fragmentShader, "//NPR::Ink::Impl",
       vtkNPRDrawsLinesOrPoints(mapper, prop) ? "  if (nprInkMode == 1) { discard; }\n"
                                              : vtkNPRInkImpl,
       false);
-    if (!this->Check->Compiles(vertexShader, geometryShader, fragmentShader))
-    {
-      vtkShaderProgram::Substitute(originalFragment, "//NPR::Ink::Dec", "", false);
-      vtkShaderProgram::Substitute(originalFragment, "//NPR::Ink::Impl", "", false);
-      fragmentShader = originalFragment;
-      this->Check->WarnSkipped(this, prop, "the ink");
-    }
+    this->Check->KeepOrRevert(this, prop, "the ink", vertexShader, geometryShader, fragmentShader,
+      vertexShader, fragmentBefore, { "//NPR::Ink::Dec", "//NPR::Ink::Impl" });
   }
   return true;
 }

@@ -2,8 +2,8 @@
 
 #include "vtkActor.h"
 #include "vtkHardwareSelector.h"
-#include "vtkNew.h"
 #include "vtkNPROpenGL.h"
+#include "vtkNew.h"
 #include "vtkObject.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLHelper.h"
@@ -145,8 +145,8 @@ struct nprShaderCacheAccess : public vtkOpenGLShaderCache
     std::string control, evaluation;
     (cache->*replace)(vertex, fragment, geometry, control, evaluation);
   }
-  static void Replace(vtkOpenGLShaderCache* cache, std::string& vertex, std::string& fragment,
-    std::string& geometry)
+  static void Replace(
+    vtkOpenGLShaderCache* cache, std::string& vertex, std::string& fragment, std::string& geometry)
   {
     Call(cache, &nprShaderCacheAccess::ReplaceShaderValues, vertex, fragment, geometry);
   }
@@ -199,12 +199,26 @@ bool vtkNPRShaderCheck::Compiles(
   return compiles;
 }
 
-void vtkNPRShaderCheck::WarnSkipped(vtkObject* pass, vtkProp* prop, const char* what)
+bool vtkNPRShaderCheck::KeepOrRevert(vtkObject* pass, vtkProp* prop, const char* what,
+  std::string& vertex, const std::string& geometry, std::string& fragment,
+  const std::string& vertexBefore, std::string fragmentBefore,
+  std::initializer_list<const char*> tags)
 {
+  if (this->Compiles(vertex, geometry, fragment))
+  {
+    return true;
+  }
+  for (const char* tag : tags)
+  {
+    vtkShaderProgram::Substitute(fragmentBefore, tag, "", false);
+  }
+  vertex = vertexBefore;
+  fragment = fragmentBefore;
   const std::string name = prop ? prop->GetClassName() : "prop";
   if (this->Warned.insert(name).second)
   {
-    vtkWarningWithObjectMacro(pass, << what << " does not compile with the shader of a " << name
-                                    << ": it is drawn without it");
+    vtkWarningWithObjectMacro(pass,
+      << what << " does not compile with the shader of a " << name << ": it is drawn without it");
   }
+  return false;
 }

@@ -4,9 +4,10 @@
 
 #include "vtkOpenGLState.h" // for the scoped state savers
 
-#include <set>           // for std::set
-#include <string>        // for std::string
-#include <unordered_map> // for std::unordered_map
+#include <initializer_list> // for the tags
+#include <set>              // for std::set
+#include <string>           // for std::string
+#include <unordered_map>    // for std::unordered_map
 
 class vtkAbstractMapper;
 class vtkObject;
@@ -54,8 +55,13 @@ public:
   // Whether the three stages compile (an empty geometry shader is none). Without a window, true.
   bool Compiles(
     const std::string& vertex, const std::string& geometry, const std::string& fragment);
-  // One warning per prop class: `pass` could not apply `what` to the prop's shader.
-  void WarnSkipped(vtkObject* pass, vtkProp* prop, const char* what);
+  // Keeps the shaders a pass filled in when they compile. Otherwise puts back the sources the pass
+  // started from (`vertexBefore`, `fragmentBefore`, with its own `tags` emptied) and warns once per
+  // prop class that `pass` could not apply `what`: the prop is drawn as VTK draws it. Returns
+  // whether the pass's code was kept.
+  bool KeepOrRevert(vtkObject* pass, vtkProp* prop, const char* what, std::string& vertex,
+    const std::string& geometry, std::string& fragment, const std::string& vertexBefore,
+    std::string fragmentBefore, std::initializer_list<const char*> tags);
 
 private:
   std::unordered_map<std::string, bool> Known;

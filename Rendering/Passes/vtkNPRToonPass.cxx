@@ -5,6 +5,7 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
+#include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
@@ -17,7 +18,6 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkTransform.h"
-#include "vtkNPROpenGL.h"
 
 #include "vtkNPRToonDecl.h"
 #include "vtkNPRToonImpl.h"
@@ -161,8 +161,8 @@ void vtkNPRToonPass::UpdateLights(const vtkRenderState* state)
     const int i = internal.LightCount++;
     const double* color = light->GetDiffuseColor();
     // Rec. 709 luminance: a white light of intensity 1 gives 1.
-    internal.Intensity[i] = static_cast<float>(light->GetIntensity() *
-      (0.2126 * color[0] + 0.7152 * color[1] + 0.0722 * color[2]));
+    internal.Intensity[i] = static_cast<float>(
+      light->GetIntensity() * (0.2126 * color[0] + 0.7152 * color[1] + 0.0722 * color[2]));
     double direction[3], position[3], viewDirection[3], viewPosition[3];
     light->GetTransformedFocalPoint(direction);
     light->GetTransformedPosition(position);
@@ -270,14 +270,16 @@ bool vtkNPRToonPass::PreReplaceShaderValues(
   if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
   {
     // Tags of our own right after VTK's lighting, filled in once VTK's code is in place.
-    vtkNPRInsertAfterShaderTag(fragmentShader, "//VTK::Light::Impl", "//NPR::Toon::Impl", this, "fragment");
-    vtkNPRInsertAfterShaderTag(fragmentShader, "//VTK::Output::Dec", "//NPR::Toon::Dec", this, "fragment");
+    vtkNPRInsertAfterShaderTag(
+      fragmentShader, "//VTK::Light::Impl", "//NPR::Toon::Impl", this, "fragment");
+    vtkNPRInsertAfterShaderTag(
+      fragmentShader, "//VTK::Output::Dec", "//NPR::Toon::Dec", this, "fragment");
   }
   return true;
 }
 
-bool vtkNPRToonPass::PostReplaceShaderValues(std::string& vertexShader,
-  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
+bool vtkNPRToonPass::PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) ||
     fragmentShader.find("//NPR::Toon::Impl") == std::string::npos)
@@ -291,8 +293,8 @@ bool vtkNPRToonPass::PostReplaceShaderValues(std::string& vertexShader,
     vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Dec", "", false);
     return true;
   }
-  const std::string originalVertex = vertexShader;
-  std::string originalFragment = fragmentShader;
+  const std::string vertexBefore = vertexShader;
+  const std::string fragmentBefore = fragmentShader;
   const bool perVertex = this->PerVertex && geometryShader.empty() &&
     vertexShader.find("normalVCVSOutput = normalMatrix * normalMC") != std::string::npos &&
     vertexShader.find("vertexVCVSOutput = MCVCMatrix * vertexMC") != std::string::npos &&
@@ -305,30 +307,26 @@ bool vtkNPRToonPass::PostReplaceShaderValues(std::string& vertexShader,
     fragmentShader.find("float specularPower") != std::string::npos;
   const bool vertexVC = fragmentShader.find("vec4 vertexVC = ") != std::string::npos;
   const Internals& internal = *this->Internal;
-  const std::string defines = std::string("#define NPR_TOON_PER_VERTEX ") + (perVertex ? "1" : "0") +
-    "\n#define NPR_TOON_SPECULAR " + (specular ? "1" : "0") + "\n#define NPR_TOON_HAVE_VERTEX_VC " +
-    (vertexVC ? "1" : "0") + "\n#define NPR_TOON_LIGHTS " + std::to_string(internal.LightCount) +
-    "\n#define NPR_TOON_LIGHT_ARRAY " + std::to_string(std::max(1, internal.LightCount)) +
-    "\n#define NPR_TOON_POSITIONAL " + (internal.AnyPositional ? "1" : "0") + "\n";
-  vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Dec",
-    defines + vtkNPRToonLighting + vtkNPRToonDecl, false);
+  const std::string defines = std::string("#define NPR_TOON_PER_VERTEX ") +
+    (perVertex ? "1" : "0") + "\n#define NPR_TOON_SPECULAR " + (specular ? "1" : "0") +
+    "\n#define NPR_TOON_HAVE_VERTEX_VC " + (vertexVC ? "1" : "0") + "\n#define NPR_TOON_LIGHTS " +
+    std::to_string(internal.LightCount) + "\n#define NPR_TOON_LIGHT_ARRAY " +
+    std::to_string(std::max(1, internal.LightCount)) + "\n#define NPR_TOON_POSITIONAL " +
+    (internal.AnyPositional ? "1" : "0") + "\n";
+  vtkShaderProgram::Substitute(
+    fragmentShader, "//NPR::Toon::Dec", defines + vtkNPRToonLighting + vtkNPRToonDecl, false);
   vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Impl", vtkNPRToonImpl, false);
   if (perVertex)
   {
     vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Dec",
-      std::string("//VTK::Light::Dec\n") + defines + vtkNPRToonLighting + vtkNPRToonVertexDecl, false);
+      std::string("//VTK::Light::Dec\n") + defines + vtkNPRToonLighting + vtkNPRToonVertexDecl,
+      false);
     vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Impl",
       std::string("//VTK::Light::Impl\n") + vtkNPRToonVertexImpl, false);
   }
-  if (!this->Internal->Check.Compiles(vertexShader, geometryShader, fragmentShader))
-  {
-    // The prop as VTK draws it, rather than no prop (or a crash).
-    vertexShader = originalVertex;
-    vtkShaderProgram::Substitute(originalFragment, "//NPR::Toon::Impl", "", false);
-    vtkShaderProgram::Substitute(originalFragment, "//NPR::Toon::Dec", "", false);
-    fragmentShader = originalFragment;
-    this->Internal->Check.WarnSkipped(this, prop, "toon shading");
-  }
+  // If not: the prop as VTK draws it, rather than no prop (or a crash).
+  this->Internal->Check.KeepOrRevert(this, prop, "toon shading", vertexShader, geometryShader,
+    fragmentShader, vertexBefore, fragmentBefore, { "//NPR::Toon::Impl", "//NPR::Toon::Dec" });
   return true;
 }
 
