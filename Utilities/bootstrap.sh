@@ -142,7 +142,10 @@ run_chroot_stage() {
     ctest_options="--repeat until-pass:2"
   else
     configure="-DPython3_EXECUTABLE=/usr/bin/python3"
-    ctest_options="-j 2"
+    # VTK 9.6's own EGL window sometimes draws garbage in the frame after ReleaseGraphicsResources
+    # while a second window is alive (npr.egl.windows, 7 of 40 runs): a failed test is run again,
+    # up to twice; one that fails three times still fails the stage (Documentation/releases.md).
+    ctest_options="-j 2 --repeat until-pass:3"
   fi
   mkdir -p "$build_dir/$stage"
   NPR_CHROOT_BUILD=$build_dir/$stage bash "$source_dir/Utilities/debian-chroot.sh" "$name" run "
