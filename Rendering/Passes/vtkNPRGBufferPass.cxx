@@ -467,7 +467,7 @@ bool vtkNPRGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
   {
     return true;
   }
-  if (vtkNPRDrawsLinesOrPoints(mapper, prop))
+  if (vtkNPRKeepsOwnLook(mapper, prop))
   {
     // Not geometry: drawn after the effect (vtkNPRPass), so left out here.
     vtkShaderProgram::Substitute(fragmentShader, "//NPR::GBuffer::Dec", "", false);
@@ -503,7 +503,7 @@ bool vtkNPRGBufferPass::SetShaderParameters(
   }
   if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
   {
-    this->HasLinePrimitives = this->HasLinePrimitives || vtkNPRDrawsLinesOrPoints(mapper, prop);
+    this->HasLinePrimitives = this->HasLinePrimitives || vtkNPRKeepsOwnLook(mapper, prop);
     this->Framebuffer->ActivateDrawBuffers(2);
     // The compiler drops the uniforms a variant does not read.
     if (program->IsUniformUsed("nprObjectId"))

@@ -77,13 +77,13 @@ void vtkNPRInkPass::Render(const vtkRenderState* state)
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   vtkOpenGLState* glState = window->GetState();
 
-  // Ink only for the props whose mapper calls this pass's shader hooks: any other prop would be
+  // Ink only for the surfaces whose mapper calls this pass's shader hooks: any other prop would be
   // drawn as a wireframe in its own colours.
   std::vector<vtkProp*> inked;
   for (int i = 0; i < state->GetPropArrayCount(); ++i)
   {
     vtkActor* actor = vtkActor::SafeDownCast(state->GetPropArray()[i]);
-    if (actor && vtkNPRCallsInkHooks(actor->GetMapper()))
+    if (actor && vtkNPRCallsInkHooks(actor->GetMapper()) && !vtkNPRIsAnnotation(actor))
     {
       inked.push_back(actor);
     }
@@ -185,8 +185,7 @@ bool vtkNPRInkPass::PostReplaceShaderValues(std::string& vertexShader, std::stri
     vtkShaderProgram::Substitute(fragmentShader, "//NPR::Ink::Dec", vtkNPRInkDecl, false);
     // Lines and points are not inked: absent from the ink draw, as VTK draws them in the other.
     vtkShaderProgram::Substitute(fragmentShader, "//NPR::Ink::Impl",
-      vtkNPRDrawsLinesOrPoints(mapper, prop) ? "  if (nprInkMode == 1) { discard; }\n"
-                                             : vtkNPRInkImpl,
+      vtkNPRKeepsOwnLook(mapper, prop) ? "  if (nprInkMode == 1) { discard; }\n" : vtkNPRInkImpl,
       false);
     this->Check->KeepOrRevert(this, prop, "the ink", vertexShader, geometryShader, fragmentShader,
       vertexShader, fragmentBefore, { "//NPR::Ink::Dec", "//NPR::Ink::Impl" });

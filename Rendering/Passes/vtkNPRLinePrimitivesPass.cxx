@@ -2,6 +2,7 @@
 
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
+#include "vtkNPROpaquePass.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLPolyDataMapper.h"
@@ -13,8 +14,10 @@ vtkStandardNewMacro(vtkNPRLinePrimitivesPass);
 void vtkNPRLinePrimitivesPass::Render(const vtkRenderState* state)
 {
   this->NumberOfRenderedProps = 0;
-  if (!this->DelegatePass || !this->GBufferPass || !this->GBufferPass->GetHasLinePrimitives() ||
-    state->GetRenderer()->GetSelector() || (this->EdgePass && this->EdgePass->GetCoverageOnly()))
+  const bool leftOut = (this->GBufferPass && this->GBufferPass->GetHasLinePrimitives()) ||
+    (this->SurfacePass && this->SurfacePass->GetLeftOutAnnotations());
+  if (!this->DelegatePass || !leftOut || state->GetRenderer()->GetSelector() ||
+    (this->EdgePass && this->EdgePass->GetCoverageOnly()))
   {
     return; // a picking render draws everything in the G-buffer pass
   }
@@ -27,7 +30,7 @@ void vtkNPRLinePrimitivesPass::Render(const vtkRenderState* state)
 bool vtkNPRLinePrimitivesPass::PostReplaceShaderValues(
   std::string& vertexShader, std::string&, std::string&, vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) || vtkNPRDrawsLinesOrPoints(mapper, prop))
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) || vtkNPRKeepsOwnLook(mapper, prop))
   {
     return true;
   }

@@ -1,7 +1,8 @@
-// Draws the line and point primitives of the opaque props as VTK does, after a G-buffer effect
-// left them out (vtkNPRGBufferPass), depth-tested against the effect's depth sprite: they keep
-// their own colours and widths, and hide behind the styled surfaces. Polygons are not drawn (their
-// vertices are moved out of the clip volume). Private to the module: vtkNPRPass runs it.
+// Draws the line and point primitives of the opaque props, and the annotations (vtkNPROpaquePass),
+// as VTK does, after a G-buffer effect left them out (vtkNPRGBufferPass), depth-tested against the
+// effect's depth sprite: they keep their own colours and widths, and hide behind the styled
+// surfaces. Polygons are not drawn (their vertices are moved out of the clip volume). Private to
+// the module: vtkNPRPass runs it.
 #ifndef vtkNPRLinePrimitivesPass_h
 #define vtkNPRLinePrimitivesPass_h
 
@@ -10,6 +11,7 @@
 
 class vtkNPREdgePass;
 class vtkNPRGBufferPass;
+class vtkNPROpaquePass;
 
 class VTKRENDERINGNPR_NO_EXPORT vtkNPRLinePrimitivesPass : public vtkOpenGLRenderPass
 {
@@ -21,6 +23,8 @@ public:
   vtkRenderPass* DelegatePass = nullptr;
   // Asked whether its last G-buffer left line primitives out; nothing is drawn otherwise.
   vtkNPRGBufferPass* GBufferPass = nullptr;
+  // The pass that drew the G-buffer's props, asked whether it left annotations out.
+  vtkNPROpaquePass* SurfacePass = nullptr;
   // Its coverage-only mask (the lines alone) gets nothing from here.
   vtkNPREdgePass* EdgePass = nullptr;
 

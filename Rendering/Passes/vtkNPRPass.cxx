@@ -5,6 +5,7 @@
 #include "vtkNPRGBufferPass.h"
 #include "vtkNPRInkPass.h"
 #include "vtkNPRLinePrimitivesPass.h"
+#include "vtkNPROpaquePass.h"
 #include "vtkNPRSketchPass.h"
 #include "vtkNPRToonPass.h"
 #include "vtkNew.h"
@@ -24,15 +25,17 @@ vtkStandardNewMacro(vtkNPRPass);
 vtkNPRPass::vtkNPRPass()
 {
   this->RenderStepsPass = vtkRenderStepsPass::New();
-  this->OpaquePass = vtkOpaquePass::New();
+  this->OpaquePass = vtkNPROpaquePass::New();
+  this->SurfacePass = vtkNPROpaquePass::New();
+  this->SurfacePass->SetSurfacesOnly(true);
   this->GBufferPass = vtkNPRGBufferPass::New();
-  this->GBufferPass->SetDelegatePass(this->OpaquePass);
+  this->GBufferPass->SetDelegatePass(this->SurfacePass);
   this->EdgePass = vtkNPREdgePass::New();
   this->EdgePass->SetGBufferPass(this->GBufferPass);
   this->ToonPass = vtkNPRToonPass::New();
   this->ToonPass->SetDelegatePass(this->OpaquePass);
   this->FlatPass = vtkNPRToonPass::New();
-  this->FlatPass->SetDelegatePass(this->OpaquePass);
+  this->FlatPass->SetDelegatePass(this->SurfacePass);
   this->FlatPass->SetNumberOfBands(1);
   this->FlatPass->SetSpecular(false);
   this->SketchPass = vtkNPRSketchPass::New();
@@ -43,6 +46,7 @@ vtkNPRPass::vtkNPRPass()
   this->LinePrimitivesPass = vtkNPRLinePrimitivesPass::New();
   this->LinePrimitivesPass->DelegatePass = this->OpaquePass;
   this->LinePrimitivesPass->GBufferPass = this->GBufferPass;
+  this->LinePrimitivesPass->SurfacePass = this->SurfacePass;
   this->LinePrimitivesPass->EdgePass = this->EdgePass;
   this->EdgesSequence = vtkSequencePass::New();
   vtkNew<vtkRenderPassCollection> passes;
@@ -74,6 +78,7 @@ vtkNPRPass::~vtkNPRPass()
   this->EdgePass->Delete();
   this->GBufferPass->Delete();
   this->OpaquePass->Delete();
+  this->SurfacePass->Delete();
   this->DepthPeelingPass->Delete();
   this->TranslucentPass->Delete();
 }
@@ -123,21 +128,24 @@ void vtkNPRPass::Render(const vtkRenderState* state)
       this->RenderStepsPass->SetOpaquePass(this->OpaquePass);
       break;
     case TOON:
+      this->ToonPass->SetDelegatePass(this->OpaquePass);
       this->RenderStepsPass->SetOpaquePass(this->ToonPass);
       break;
     case INKED:
       this->RenderStepsPass->SetOpaquePass(this->InkPass);
       break;
     case TOON_EDGES:
+      this->ToonPass->SetDelegatePass(this->SurfacePass);
       this->GBufferPass->SetDelegatePass(this->ToonPass);
       this->RenderStepsPass->SetOpaquePass(this->EdgesSequence);
       break;
     case SKETCH:
+      this->ToonPass->SetDelegatePass(this->SurfacePass);
       this->GBufferPass->SetDelegatePass(this->SketchToonShading ? this->ToonPass : this->FlatPass);
       this->RenderStepsPass->SetOpaquePass(this->SketchSequence);
       break;
     default: // EDGES
-      this->GBufferPass->SetDelegatePass(this->OpaquePass);
+      this->GBufferPass->SetDelegatePass(this->SurfacePass);
       this->RenderStepsPass->SetOpaquePass(this->EdgesSequence);
       break;
   }
@@ -166,6 +174,7 @@ void vtkNPRPass::ReleaseGraphicsResources(vtkWindow* window)
   this->InkPass->ReleaseGraphicsResources(window);
   this->LinePrimitivesPass->ReleaseGraphicsResources(window);
   this->OpaquePass->ReleaseGraphicsResources(window);
+  this->SurfacePass->ReleaseGraphicsResources(window);
   this->DepthPeelingPass->ReleaseGraphicsResources(window);
   this->TranslucentPass->ReleaseGraphicsResources(window);
 }

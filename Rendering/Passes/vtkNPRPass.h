@@ -116,7 +116,8 @@ protected:
   int Style = EDGES;
   bool SketchToonShading = false;
   vtkRenderStepsPass* RenderStepsPass;
-  vtkOpaquePass* OpaquePass;
+  vtkOpaquePass* OpaquePass;           // every prop
+  class vtkNPROpaquePass* SurfacePass; // the G-buffer's: annotations are drawn after the effect
   vtkNPRGBufferPass* GBufferPass;
   vtkNPREdgePass* EdgePass;
   vtkNPRToonPass* ToonPass;

@@ -2,6 +2,7 @@
 
 #include "vtkActor.h"
 #include "vtkHardwareSelector.h"
+#include "vtkNPROpaquePass.h"
 #include "vtkNPROpenGL.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
@@ -153,13 +154,41 @@ struct nprShaderCacheAccess : public vtkOpenGLShaderCache
 };
 }
 
-bool vtkNPRDrawsLinesOrPoints(vtkAbstractMapper* mapper, vtkProp* prop)
+vtkProp* vtkNPRUserProp(vtkProp* prop)
+{
+  vtkProp* drawn = vtkNPROpaquePass::GetPropBeingDrawn();
+  return drawn ? drawn : prop;
+}
+
+bool vtkNPRIsAnnotation(vtkProp* prop)
+{
+  if (!prop)
+  {
+    return false;
+  }
+  // vtkActor subclasses that annotate (their labels are followers, drawn through inner actors).
+  for (const char* annotation :
+    { "vtkFollower", "vtkProp3DFollower", "vtkCubeAxesActor", "vtkPolarAxesActor", "vtkAxisActor" })
+  {
+    if (prop->IsA(annotation))
+    {
+      return true;
+    }
+  }
+  return !(prop->IsA("vtkActor") || prop->IsA("vtkAssembly") || prop->IsA("vtkPropAssembly"));
+}
+
+bool vtkNPRKeepsOwnLook(vtkAbstractMapper* mapper, vtkProp* prop)
 {
   auto* polyDataMapper = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
   auto* actor = vtkActor::SafeDownCast(prop);
   if (!polyDataMapper || !actor)
   {
     return false;
+  }
+  if (vtkNPRIsAnnotation(vtkNPRUserProp(prop)))
+  {
+    return true;
   }
   const int mode =
     nprMapperAccess::BoundMode(polyDataMapper, actor->GetProperty()->GetRepresentation());
@@ -214,7 +243,8 @@ bool vtkNPRShaderCheck::KeepOrRevert(vtkObject* pass, vtkProp* prop, const char*
   }
   vertex = vertexBefore;
   fragment = fragmentBefore;
-  const std::string name = prop ? prop->GetClassName() : "prop";
+  vtkProp* userProp = vtkNPRUserProp(prop);
+  const std::string name = userProp ? userProp->GetClassName() : "prop";
   if (this->Warned.insert(name).second)
   {
     vtkWarningWithObjectMacro(pass,

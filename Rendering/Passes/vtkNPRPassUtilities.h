@@ -39,10 +39,20 @@ void vtkNPRViewportOrigin(const vtkRenderState* state, int origin[2]);
 bool vtkNPRInsertAfterShaderTag(
   std::string& source, const char* vtkTag, const char* tag, vtkObject* pass, const char* stage);
 
-// Whether the vtkOpenGLPolyDataMapper `mapper` is building or drawing a line or point primitive
-// (lines, vertices, or polygons in the wireframe or points representation) for `prop`: those keep
-// their own look, as VTK draws them. Valid from the mapper's shader hooks (its bound primitive).
-bool vtkNPRDrawsLinesOrPoints(vtkAbstractMapper* mapper, vtkProp* prop);
+// The prop a user added that `prop` is drawn for: the top-level prop a vtkNPROpaquePass is
+// drawing (a follower, an LOD actor, an axes actor), or `prop` itself outside one.
+vtkProp* vtkNPRUserProp(vtkProp* prop);
+
+// Whether the top-level prop `prop` is an annotation rather than a surface: followers (3D text
+// labels), VTK's axes actors, image slices and any other prop that is neither a vtkActor nor an
+// assembly. Annotations keep their own look; actors, LOD actors, glyphs and assemblies get styled.
+bool vtkNPRIsAnnotation(vtkProp* prop);
+
+// Whether the vtkOpenGLPolyDataMapper `mapper`, drawing for `prop`, keeps its own look, as VTK
+// draws it: a line or point primitive (lines, vertices, or polygons in the wireframe or points
+// representation), or anything drawn for an annotation (vtkNPRIsAnnotation of vtkNPRUserProp).
+// Valid from the mapper's shader hooks (its bound primitive).
+bool vtkNPRKeepsOwnLook(vtkAbstractMapper* mapper, vtkProp* prop);
 
 // Tries a pass's changed shaders before VTK uses them: VTK 9.1 crashes on a shader that does not
 // compile. Compiles them the way VTK's shader cache would (results kept per source), and warns

@@ -287,7 +287,7 @@ bool vtkNPRToonPass::PostReplaceShaderValues(std::string& vertexShader, std::str
     return true;
   }
   // Lines and points keep their own colours: no bands on them.
-  if (!IsLitPolyDataShader(fragmentShader) || vtkNPRDrawsLinesOrPoints(mapper, prop))
+  if (!IsLitPolyDataShader(fragmentShader) || vtkNPRKeepsOwnLook(mapper, prop))
   {
     vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Impl", "", false);
     vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Dec", "", false);

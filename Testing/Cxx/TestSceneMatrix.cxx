@@ -1,19 +1,24 @@
 // Ordinary VTK scenes under every style (issue 19): polygons with point, cell and no normals,
 // lines, points, a wireframe, tubes, an outline around an isosurface, cube axes with grid lines and
-// labels, text, glyphs and an image actor. Fails on any VTK error or warning and on a crash;
-// checks that line primitives keep their own colour and width: a white line stays white and
-// a 1-px outline stays about 1 px wide.
+// labels, text, glyphs, an image actor, a vtkAxesActor, a volume, a translucent actor with and
+// without depth peeling and two layers. Fails on any VTK error or warning and on a crash; checks
+// that lines and annotations keep their own look: a white line stays white, a 1-px outline stays
+// about 1 px wide, white grid lines and 3D labels stay white, and the translucent blend, the
+// volume, the axes and the second layer keep their colours.
 //
 // usage: TestSceneMatrix STYLE [DATA_DIR]   (STYLE: a vtkNPRPass style name, '+' written '-')
 #include "nprTesting.h"
 
 #include "vtkActor.h"
+#include "vtkAxesActor.h"
 #include "vtkBillboardTextActor3D.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkConeSource.h"
 #include "vtkContourFilter.h"
 #include "vtkCubeAxesActor.h"
+#include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageActor.h"
 #include "vtkImageData.h"
@@ -21,6 +26,7 @@
 #include "vtkLineSource.h"
 #include "vtkNew.h"
 #include "vtkOutlineFilter.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -33,7 +39,10 @@
 #include "vtkSphereSource.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
+#include "vtkTransform.h"
 #include "vtkTubeFilter.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 
 #include <algorithm>
 #include <cmath>
@@ -303,8 +312,7 @@ int Failure()
     nprPassScene scene(120, 120);
     scene.Pass->SetStyle(style);
     auto sphere = ActorFor(scene.Renderer, Sphere(1), 0.0, 0.0);
-    sphere->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Output::Dec",
-      true,
+    sphere->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Output::Dec", true,
       "//VTK::Output::Dec\n#define nprGeometry 1.0\n#define nprColor 1.0\n#define nprInkColor "
       "1.0\n",
       false);
@@ -323,8 +331,9 @@ int Failure()
   return nprTestResult();
 }
 
-// Bright pixels of white cube-axes grid lines on a dark background, around a dark sphere.
-long long GridLinePixels(int style)
+// Bright pixels of a vtkCubeAxesActor's white grid lines, or of its white 3D labels and titles
+// (vector-text followers, drawn through inner actors), on a dark background around a dark sphere.
+long long CubeAxesPixels(int style, bool labels)
 {
   nprPassScene scene(240, 240);
   scene.Pass->SetStyle(style);
@@ -333,41 +342,186 @@ long long GridLinePixels(int style)
   vtkNew<vtkCubeAxesActor> axes;
   axes->SetBounds(-1.0, 1.0, -1.0, 1.0, -1.0, 1.0);
   axes->SetCamera(scene.Camera());
-  axes->DrawXGridlinesOn();
-  axes->DrawYGridlinesOn();
-  axes->DrawZGridlinesOn();
-  for (vtkProperty* lines : { axes->GetXAxesGridlinesProperty(),
-         axes->GetYAxesGridlinesProperty(),
+  axes->SetDrawXGridlines(!labels);
+  axes->SetDrawYGridlines(!labels);
+  axes->SetDrawZGridlines(!labels);
+  axes->SetUse2DMode(false);
+  for (vtkProperty* lines : { axes->GetXAxesGridlinesProperty(), axes->GetYAxesGridlinesProperty(),
          axes->GetZAxesGridlinesProperty() })
   {
     lines->SetColor(1.0, 1.0, 1.0);
   }
-  axes->XAxisLabelVisibilityOff(); // the grid lines alone
-  axes->YAxisLabelVisibilityOff();
-  axes->ZAxisLabelVisibilityOff();
+  for (vtkProperty* lines :
+    { axes->GetXAxesLinesProperty(), axes->GetYAxesLinesProperty(), axes->GetZAxesLinesProperty() })
+  {
+    lines->SetColor(0.3, 0.3, 0.3); // not bright: the grid lines or the text alone
+  }
+  axes->SetXAxisLabelVisibility(labels);
+  axes->SetYAxisLabelVisibility(labels);
+  axes->SetZAxisLabelVisibility(labels);
   for (int axis = 0; axis < 3; ++axis)
   {
-    axes->GetTitleTextProperty(axis)->SetColor(0.3, 0.3, 0.3); // not bright
+    const double grey = labels ? 1.0 : 0.3;
+    axes->GetTitleTextProperty(axis)->SetColor(grey, grey, grey);
+    axes->GetLabelTextProperty(axis)->SetColor(grey, grey, grey);
   }
   scene.Renderer->AddActor(axes);
   scene.Camera()->SetPosition(0.5, 0.8, 5.0);
   scene.Camera()->SetFocalPoint(0.0, 0.0, 0.0);
   scene.Camera()->SetViewUp(0.0, 1.0, 0.0);
   scene.Renderer->ResetCamera();
-  return nprCountAbove(RenderTwice(scene), 200);
+  auto shot = RenderTwice(scene);
+  if (const char* dump = std::getenv("NPR_TEST_DUMP"))
+  {
+    nprWritePNG(shot,
+      std::string(dump) + vtkNPRPass::GetStyleName(style) + (labels ? "-labels.png" : "-grid.png"));
+  }
+  return nprCountAbove(shot, 200);
+}
+
+// Pixels whose colour is within 60 (each channel) of rgb (0..255).
+long long CountNear(vtkImageData* image, int r, int g, int b)
+{
+  long long count = 0;
+  const int* dims = image->GetDimensions();
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    for (int x = 0; x < dims[0]; ++x)
+    {
+      count += std::abs(nprPixel(image, x, y, 0) - r) < 60 &&
+          std::abs(nprPixel(image, x, y, 1) - g) < 60 && std::abs(nprPixel(image, x, y, 2) - b) < 60
+        ? 1
+        : 0;
+    }
+  }
+  return count;
+}
+
+// What composites with the styled surfaces: a translucent red sphere in front of a flat blue box,
+// a GPU ray-cast volume (green), a vtkAxesActor (its X shaft red, Z shaft blue) and a yellow cone
+// on a second layer; with and without depth peeling. Returns the image.
+vtkSmartPointer<vtkImageData> Composited(int style, bool peeling)
+{
+  nprPassScene scene(300, 200);
+  scene.Pass->SetStyle(style);
+  scene.Renderer->SetUseDepthPeeling(peeling);
+  scene.Renderer->SetMaximumNumberOfPeels(8);
+  scene.Renderer->SetOcclusionRatio(0.0);
+  vtkNew<vtkPlaneSource> box;
+  box->SetOrigin(-1.6, -0.6, -0.5);
+  box->SetPoint1(-0.4, -0.6, -0.5);
+  box->SetPoint2(-1.6, 0.6, -0.5);
+  box->Update();
+  auto blue = ActorFor(scene.Renderer, box->GetOutput(), 0.0, 0.0);
+  blue->GetProperty()->SetColor(0.0, 0.0, 1.0);
+  blue->GetProperty()->LightingOff();
+  auto glass = ActorFor(scene.Renderer, Sphere(1), -1.0, 0.0);
+  glass->GetProperty()->SetColor(1.0, 0.0, 0.0);
+  glass->GetProperty()->SetOpacity(0.5);
+  glass->GetProperty()->LightingOff();
+
+  vtkNew<vtkImageData> field;
+  field->SetDimensions(16, 16, 16);
+  field->SetSpacing(0.05, 0.05, 0.05);
+  field->SetOrigin(0.6, -0.4, -0.4);
+  field->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  std::fill_n(static_cast<unsigned char*>(field->GetScalarPointer()), 16 * 16 * 16, 200);
+  vtkNew<vtkGPUVolumeRayCastMapper> volumeMapper;
+  volumeMapper->SetInputData(field);
+  vtkNew<vtkColorTransferFunction> green;
+  green->AddRGBPoint(0.0, 0.0, 1.0, 0.0);
+  green->AddRGBPoint(255.0, 0.0, 1.0, 0.0);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 1.0);
+  opacity->AddPoint(255.0, 1.0);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(volumeMapper);
+  volume->GetProperty()->SetColor(green);
+  volume->GetProperty()->SetScalarOpacity(opacity);
+  volume->GetProperty()->ShadeOff();
+  scene.Renderer->AddVolume(volume);
+
+  vtkNew<vtkAxesActor> axes;
+  axes->SetTotalLength(0.8, 0.8, 0.8);
+  axes->AxisLabelsOff();
+  vtkNew<vtkTransform> place;
+  place->Translate(-0.2, -0.9, 0.0);
+  axes->SetUserTransform(place);
+  scene.Renderer->AddActor(axes);
+
+  vtkNew<vtkConeSource> cone;
+  cone->SetCenter(0.1, 0.6, 0.0);
+  cone->SetRadius(0.25);
+  cone->SetHeight(0.5);
+  cone->Update();
+  auto yellow = ActorFor(scene.AddOverlay(), cone->GetOutput(), 0.0, 0.0);
+  yellow->GetProperty()->SetColor(1.0, 1.0, 0.0);
+  yellow->GetProperty()->LightingOff();
+
+  scene.LookAtOrigin(5.0);
+  scene.Camera()->ParallelProjectionOn();
+  scene.Camera()->SetParallelScale(1.1);
+  auto shot = RenderTwice(scene);
+  if (const char* dump = std::getenv("NPR_TEST_DUMP"))
+  {
+    nprWritePNG(shot,
+      std::string(dump) + vtkNPRPass::GetStyleName(style) +
+        (peeling ? "-peeled.png" : "-layers.png"));
+  }
+  return shot;
+}
+
+// Each composited kind keeps, within 15 %, the pixels of its colour it has in the shaded style.
+void CompositedKinds()
+{
+  struct Kind
+  {
+    const char* Name;
+    int Color[3];
+  };
+  for (bool peeling : { false, true })
+  {
+    auto plain = Composited(vtkNPRPass::SHADED, peeling);
+    auto styled = Composited(Style, peeling);
+    // The blend VTK makes of the translucent sphere over the box (at the sphere's centre: the
+    // view is 2.2 units high, 200 px, centred on the origin).
+    const int blendX = 150 - 100 / 1.1, blendY = 100;
+    const Kind kinds[] = { { "translucent red over blue",
+                             { nprPixel(plain, blendX, blendY, 0),
+                               nprPixel(plain, blendX, blendY, 1),
+                               nprPixel(plain, blendX, blendY, 2) } },
+      { "green volume", { 0, 255, 0 } }, { "axes' red shaft", { 255, 0, 0 } },
+      { "yellow cone on layer 1", { 255, 255, 0 } } };
+    for (const Kind& kind : kinds)
+    {
+      const long long expected = CountNear(plain, kind.Color[0], kind.Color[1], kind.Color[2]);
+      const long long got = CountNear(styled, kind.Color[0], kind.Color[1], kind.Color[2]);
+      std::cout << kind.Name << (peeling ? " (peeled)" : "") << ": " << got << " pixels, "
+                << expected << " shaded\n";
+      NPR_CHECK(expected > 40, kind.Name << " not drawn in the shaded style");
+      NPR_CHECK(got > 0.85 * expected && got < 1.15 * expected,
+        kind.Name << ": " << got << " pixels instead of " << expected);
+    }
+  }
 }
 
 int RunStyle()
 {
   EveryKind();
   LineLooks();
-  // The grid lines stay white and thin: as many bright pixels as without the pass's style.
-  const long long plain = GridLinePixels(vtkNPRPass::SHADED);
-  const long long styled = GridLinePixels(Style);
-  std::cout << "grid lines: " << styled << " bright pixels, " << plain << " shaded\n";
-  NPR_CHECK(plain > 200, "no grid lines drawn");
-  NPR_CHECK(styled > 0.9 * plain && styled < 1.1 * plain,
-    "grid lines: " << styled << " bright pixels instead of " << plain);
+  CompositedKinds();
+  // The grid lines and the 3D labels stay white and thin: as many bright pixels as without the
+  // pass's style (no lines traced along them, no toon bands, nothing darkened).
+  for (bool labels : { false, true })
+  {
+    const char* what = labels ? "labels" : "grid lines";
+    const long long plain = CubeAxesPixels(vtkNPRPass::SHADED, labels);
+    const long long styled = CubeAxesPixels(Style, labels);
+    std::cout << what << ": " << styled << " bright pixels, " << plain << " shaded\n";
+    NPR_CHECK(plain > 200, "no " << what << " drawn");
+    NPR_CHECK(styled > 0.9 * plain && styled < 1.1 * plain,
+      what << ": " << styled << " bright pixels instead of " << plain);
+  }
   // Warnings count too: a pass that handles these scenes has nothing to say about them.
   auto* output = nprCountingOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
   NPR_CHECK(
