@@ -1,6 +1,6 @@
 // Ordinary VTK scenes under every style (issue 19): polygons with point, cell and no normals,
 // lines, points, a wireframe, tubes, an outline around an isosurface, cube axes with grid lines and
-// labels, text, glyphs, an image actor, a vtkAxesActor, a volume, a translucent actor with and
+// labels, text, a scalar bar, glyphs, an image actor, a vtkAxesActor, a volume, a translucent actor with and
 // without depth peeling and two layers. Fails on any VTK error or warning and on a crash; checks
 // that lines and annotations keep their own look: a white line stays white, a 1-px outline stays
 // about 1 px wide, white grid lines and 3D labels stay white, and the translucent blend, the
@@ -34,7 +34,9 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
+#include "vtkLookupTable.h"
 #include "vtkRTAnalyticSource.h"
+#include "vtkScalarBarActor.h"
 #include "vtkShaderProperty.h"
 #include "vtkSphereSource.h"
 #include "vtkTextActor.h"
@@ -189,6 +191,14 @@ void EveryKind()
   text->GetTextProperty()->SetColor(0.0, 0.0, 0.0);
   text->SetPosition(10, 10);
   renderer->AddActor2D(text);
+  vtkNew<vtkLookupTable> table;
+  table->Build();
+  vtkNew<vtkScalarBarActor> scalarBar;
+  scalarBar->SetLookupTable(table);
+  scalarBar->SetPosition(0.88, 0.1);
+  scalarBar->SetWidth(0.1);
+  scalarBar->SetHeight(0.8);
+  renderer->AddActor2D(scalarBar);
   vtkNew<vtkBillboardTextActor3D> billboard;
   billboard->SetInput("billboard");
   billboard->SetPosition(0.0, -1.5, 0.0);
