@@ -49,6 +49,8 @@ common=(cmake ninja-build g++ xvfb xauth libegl-mesa0 libgl1-mesa-dri libopengl-
 # VTK and its Python bindings; EGL's development files for the module's own EGL window (VTK < 9.4).
 # The ParaView plugin compiles the passes only and needs neither.
 vtk=(libvtk9-dev python3-vtk9 libegl-dev)
+# PyVista on that VTK, for the vtknpr.pyvista entry point and PyVista's examples as clients.
+pyvista=(python3-pyvista)
 # ParaView's development files and the -dev packages its CMake configuration needs without
 # depending on them (HDF5 and NetCDF: ParaView 5.13 reaches them through IOSS); MPI to run
 # pvbatch in parallel.
@@ -57,10 +59,10 @@ paraview=(paraview paraview-dev python3-paraview libx11-dev libxcursor-dev libpn
   liblz4-dev liblzma-dev libtiff-dev libdouble-conversion-dev libpython3-dev python3-numpy
   libhdf5-dev libnetcdf-dev)
 case $name in
-  trixie-vtk) suite=trixie packages=("${common[@]}" "${vtk[@]}" libosmesa6-dev) ;;
+  trixie-vtk) suite=trixie packages=("${common[@]}" "${vtk[@]}" "${pyvista[@]}" libosmesa6-dev) ;;
   trixie-paraview) suite=trixie packages=("${common[@]}" "${paraview[@]}") ;;
   bookworm-paraview) suite=bookworm packages=("${common[@]}" "${paraview[@]}") ;;
-  sid) suite=sid packages=("${common[@]}" "${vtk[@]}" "${paraview[@]}") ;;
+  sid) suite=sid packages=("${common[@]}" "${vtk[@]}" "${paraview[@]}" "${pyvista[@]}") ;;
   list)
     for known in trixie-vtk trixie-paraview bookworm-paraview sid; do
       state="not created"

@@ -1,6 +1,8 @@
 #include "vtkNPRInkPass.h"
 
 #include "vtkActor.h"
+#include "vtkDataSetMapper.h"
+#include "vtkGlyph3DMapper.h"
 #include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkObjectFactory.h"
@@ -30,7 +32,10 @@ namespace
 // Whether the mapper draws through a vtkOpenGLPolyDataMapper, which calls this pass's hooks.
 bool vtkNPRCallsInkHooks(vtkMapper* mapper)
 {
-  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  // A vtkDataSetMapper (PyVista's mapper for every data set) and a glyph mapper draw through
+  // inner ones.
+  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper) || vtkDataSetMapper::SafeDownCast(mapper) ||
+    vtkGlyph3DMapper::SafeDownCast(mapper))
   {
     return true;
   }

@@ -18,6 +18,7 @@
 #include "vtkConeSource.h"
 #include "vtkContourFilter.h"
 #include "vtkCubeAxesActor.h"
+#include "vtkDataSetMapper.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageActor.h"
@@ -515,11 +516,46 @@ void CompositedKinds()
   }
 }
 
+// Dark (line) pixels of a light sphere drawn through a vtkDataSetMapper (PyVista's mapper for every
+// data set) or a vtkPolyDataMapper.
+long long SphereLinePixels(bool dataSetMapper)
+{
+  nprPassScene scene(160, 160);
+  scene.Pass->SetStyle(Style);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(32);
+  sphere->SetPhiResolution(16);
+  vtkSmartPointer<vtkMapper> mapper;
+  if (dataSetMapper)
+  {
+    mapper = vtkSmartPointer<vtkDataSetMapper>::New();
+  }
+  else
+  {
+    mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  }
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(1.0, 0.9, 0.7);
+  actor->GetProperty()->SetAmbient(0.6);
+  scene.Renderer->AddActor(actor);
+  scene.Renderer->ResetCamera();
+  auto shot = RenderTwice(scene);
+  return static_cast<long long>(shot->GetNumberOfPoints()) - nprCountAbove(shot, 60);
+}
+
 int RunStyle()
 {
   EveryKind();
   LineLooks();
   CompositedKinds();
+  // A vtkDataSetMapper gets the same lines (or ink) as a vtkPolyDataMapper.
+  const long long polyData = SphereLinePixels(false), dataSet = SphereLinePixels(true);
+  std::cout << "sphere lines: " << dataSet << " dark pixels through a vtkDataSetMapper, " << polyData
+            << " through a vtkPolyDataMapper\n";
+  NPR_CHECK(std::abs(dataSet - polyData) <= polyData / 10 + 5,
+    "vtkDataSetMapper: " << dataSet << " dark pixels instead of " << polyData);
   // The grid lines and the 3D labels stay white and thin: as many bright pixels as without the
   // pass's style (no lines traced along them, no toon bands, nothing darkened).
   for (bool labels : { false, true })

@@ -1,0 +1,245 @@
+"""vtkNPR for PyVista: one call turns a style on for a plotter's renderer.
+
+    import pyvista as pv
+    from vtknpr.pyvista import enable_npr
+
+    plotter = pv.Plotter(off_screen=True)
+    plotter.add_mesh(pv.Sphere())
+    enable_npr(plotter, "toon+edges", line_width=2, line_color="navy")
+    plotter.screenshot("sphere.png")
+
+The style belongs to one renderer (the plotter's active one, or the renderer given), so each
+subplot has its own. It takes the place of the vtkRenderStepsPass in PyVista's own chain of
+passes, so PyVista's eye-dome lighting, anti-aliasing (SSAA, FXAA), blur and depth of field are
+applied over the styled image. SSAO and shadows draw the scene themselves with their own shaders:
+they cannot be combined with a style, and enabling one refuses (RuntimeError) or, when enabled
+afterwards, turns the style off with a warning.
+"""
+import warnings
+import weakref
+
+import pyvista
+from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
+
+from .vtkRenderingNPR import vtkNPRPass
+
+__all__ = ["enable_npr", "disable_npr", "npr_pass", "SETTINGS"]
+
+STYLES = ("shaded", "edges", "toon", "toon+edges", "sketch", "inked")
+
+# PyVista's names for the passes' settings: name -> (what it sets, kind).
+SETTINGS = {
+    "line_width": "width of every line in pixels at 72 DPI (edges and ink)",
+    "line_color": "colour of every line (silhouettes, creases, contours, ink)",
+    "silhouette_color": "colour of the silhouette lines",
+    "crease_color": "colour of the crease lines",
+    "contour_color": "colour of the object contour lines",
+    "silhouettes": "whether depth discontinuities are drawn (bool)",
+    "creases": "whether normal discontinuities are drawn (bool)",
+    "contours": "whether object outlines are drawn (bool)",
+    "crease_angle": "angle in degrees between normals above which a crease is drawn",
+    "line_anti_aliasing": "whether lines are anti-aliased (bool)",
+    "bands": "number of toon bands",
+    "specular": "whether toon shading keeps a specular band (bool)",
+    "sketch_toon_shading": "whether sketches are filled with toon bands instead of flat colours",
+    "uncertainty": "how far sketch strokes wander, in pixels",
+    "noise_frequency": "how quickly sketch strokes wander",
+    "noise_seed": "seed of the sketch noise (int)",
+    "paper": "whether sketches are drawn on paper (bool)",
+    "paper_color": "colour of the sketch's paper",
+}
+
+# The PyVista passes that draw the scene with their own shaders.
+_INCOMPATIBLE = {"vtkSSAOPass": "SSAO (enable_ssao)"}
+
+_BINDINGS = weakref.WeakKeyDictionary()  # renderer -> _Binding
+
+
+def _color(value):
+    return pyvista.Color(value).float_rgb
+
+
+def _apply(npr, settings):
+    edges, toon, sketch, ink = (npr.GetEdgePass(), npr.GetToonPass(), npr.GetSketchPass(),
+                                npr.GetInkPass())
+    unknown = sorted(set(settings) - set(SETTINGS))
+    if unknown:
+        raise TypeError("enable_npr: unknown setting(s) %s; known: %s"
+                        % (", ".join(unknown), ", ".join(sorted(SETTINGS))))
+    for name, value in settings.items():
+        if name == "line_width":
+            edges.SetLineWidth(float(value))
+            ink.SetLineWidth(float(value))
+        elif name == "line_color":
+            rgb = _color(value)
+            for setter in (edges.SetSilhouetteColor, edges.SetCreaseColor,
+                           edges.SetContourColor, ink.SetInkColor):
+                setter(*rgb)
+        elif name == "silhouette_color":
+            edges.SetSilhouetteColor(*_color(value))
+        elif name == "crease_color":
+            edges.SetCreaseColor(*_color(value))
+        elif name == "contour_color":
+            edges.SetContourColor(*_color(value))
+        elif name == "silhouettes":
+            edges.SetSilhouettes(bool(value))
+        elif name == "creases":
+            edges.SetCreases(bool(value))
+        elif name == "contours":
+            edges.SetContours(bool(value))
+        elif name == "crease_angle":
+            edges.SetCreaseAngle(float(value))
+        elif name == "line_anti_aliasing":
+            edges.SetAntiAliasing(bool(value))
+        elif name == "bands":
+            toon.SetNumberOfBands(int(value))
+        elif name == "specular":
+            toon.SetSpecular(bool(value))
+        elif name == "sketch_toon_shading":
+            npr.SetSketchToonShading(bool(value))
+        elif name == "uncertainty":
+            sketch.SetUncertainty(float(value))
+        elif name == "noise_frequency":
+            sketch.SetNoiseFrequency(float(value))
+        elif name == "noise_seed":
+            sketch.SetNoiseSeed(int(value))
+        elif name == "paper":
+            sketch.SetPaper(bool(value))
+        elif name == "paper_color":
+            sketch.SetPaperColor(*_color(value))
+
+
+def _renderer_of(target):
+    """The vtkRenderer of a plotter (its active renderer) or the renderer itself."""
+    renderer = getattr(target, "renderer", target)
+    if not hasattr(renderer, "SetPass"):
+        raise TypeError("enable_npr: expected a pyvista.Plotter or a renderer, got %r"
+                        % type(target).__name__)
+    return renderer
+
+
+def _pyvista_passes(renderer):
+    """PyVista's pass manager of the renderer (pyvista.Renderer), or None for a plain one."""
+    return getattr(renderer, "_render_passes", None)
+
+
+class _Binding:
+    """Keeps a vtkNPRPass in a renderer's chain of passes whatever PyVista does to it."""
+
+    def __init__(self, renderer, npr):
+        # Weak: the renderer owns the observer that owns this binding.
+        self._renderer = weakref.ref(renderer)
+        self.npr = npr
+        self.observer = renderer.AddObserver("StartEvent", self._keep_in_chain)
+        self._keep_in_chain()
+
+    @property
+    def renderer(self):
+        return self._renderer()
+
+    def _collection(self):
+        passes = _pyvista_passes(self.renderer)
+        return None if passes is None else passes._pass_collection
+
+    def _keep_in_chain(self, *unused):
+        passes = _pyvista_passes(self.renderer)
+        if passes is None:  # a plain vtkRenderer
+            if self.renderer.GetPass() is not self.npr:
+                self.renderer.SetPass(self.npr)
+            return
+        clash = [label for name, label in _INCOMPATIBLE.items() if name in passes._passes]
+        if passes._shadow_map_pass is not None:
+            clash.append("shadows (enable_shadows)")
+        if clash:
+            warnings.warn("vtknpr: %s cannot be combined with the style %r: the style is off "
+                          "for this renderer" % (", ".join(clash), self.npr.GetStyleName(
+                              self.npr.GetStyle())), RuntimeWarning, stacklevel=2)
+            self.release()
+            return
+        collection = self._collection()
+        items = [collection.GetItemAsObject(i) for i in range(collection.GetNumberOfItems())]
+        if self.npr not in items:
+            for item in items:
+                if item.IsA("vtkRenderStepsPass"):
+                    collection.ReplaceItem(items.index(item), self.npr)
+                    break
+            else:
+                collection.AddItem(self.npr)
+        # With no pass of its own PyVista gives the renderer none, which would drop the style.
+        if self.renderer.GetPass() is None:
+            self.renderer.SetPass(passes._camera_pass)
+
+    def release(self):
+        """Takes the style out of the renderer and frees its graphics resources."""
+        self.renderer.RemoveObserver(self.observer)
+        _BINDINGS.pop(self.renderer, None)
+        passes = _pyvista_passes(self.renderer)
+        if passes is None:
+            if self.renderer.GetPass() is self.npr:
+                self.renderer.SetPass(None)
+        else:
+            collection = self._collection()
+            for i in range(collection.GetNumberOfItems()):
+                if collection.GetItemAsObject(i) is self.npr:
+                    # Put back what PyVista started from.
+                    collection.ReplaceItem(i, vtkRenderStepsPass())
+            passes._update_passes()
+        window = self.renderer.GetRenderWindow()
+        if window is not None:
+            self.npr.ReleaseGraphicsResources(window)
+
+
+def enable_npr(target, style="edges", **settings):
+    """Draws a plotter's active renderer (or the renderer given) in an NPR style.
+
+    Parameters
+    ----------
+    target : pyvista.Plotter or pyvista.Renderer or vtkRenderer
+        With a plotter, its active renderer (select a subplot with ``plotter.subplot``).
+    style : str
+        One of "shaded", "edges", "toon", "toon+edges", "sketch", "inked".
+    **settings
+        The names in ``vtknpr.pyvista.SETTINGS``; colours as anything ``pyvista.Color`` takes.
+
+    Returns
+    -------
+    vtkNPRPass
+        The pass, for further tuning. Calling again on the same renderer changes its style and
+        settings.
+    """
+    if style not in STYLES:
+        raise ValueError("enable_npr: unknown style %r; one of %s" % (style, ", ".join(STYLES)))
+    renderer = _renderer_of(target)
+    passes = _pyvista_passes(renderer)
+    if passes is not None:
+        clash = [label for name, label in _INCOMPATIBLE.items() if name in passes._passes]
+        if passes._shadow_map_pass is not None:
+            clash.append("shadows (enable_shadows)")
+        if clash:
+            raise RuntimeError("enable_npr: %s cannot be combined with an NPR style; disable it "
+                               "first" % ", ".join(clash))
+    binding = _BINDINGS.get(renderer)
+    npr = binding.npr if binding is not None else vtkNPRPass()
+    _apply(npr, settings)
+    npr.SetStyle(vtkNPRPass.GetStyleFromName(style))
+    if binding is None:
+        _BINDINGS[renderer] = _Binding(renderer, npr)
+    return npr
+
+
+def disable_npr(target):
+    """Draws the renderer as PyVista does again, and frees the style's graphics resources.
+
+    Returns whether a style was on.
+    """
+    binding = _BINDINGS.get(_renderer_of(target))
+    if binding is None:
+        return False
+    binding.release()
+    return True
+
+
+def npr_pass(target):
+    """The vtkNPRPass of the renderer, or None when no style is on."""
+    binding = _BINDINGS.get(_renderer_of(target))
+    return None if binding is None else binding.npr
