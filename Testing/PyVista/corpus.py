@@ -65,7 +65,7 @@ def streamlines():
     angles = np.linspace(0.0, 2.0 * np.pi, 12, endpoint=False)
     seeds = pv.PolyData(np.column_stack((0.6 * np.cos(angles), 0.6 * np.sin(angles),
                                          np.full_like(angles, -0.8))))
-    lines = grid.streamlines_from_source(seeds, vectors="vectors", max_time=8.0)
+    lines = grid.streamlines_from_source(seeds, vectors="vectors")
     plotter = pv.Plotter()
     plotter.add_mesh(lines, line_width=2, color="navy")
     plotter.add_mesh(lines.tube(radius=0.02), color="orange")
@@ -89,7 +89,8 @@ def volume():
     plotter = pv.Plotter()
     plotter.add_volume(channels, cmap="viridis", opacity="linear")
     plotter.add_mesh(channels.outline(), color="black")
-    plotter.add_mesh(pv.Sphere(radius=30, center=channels.center), color="white")
+    above = np.array(channels.center) + (0.0, 0.0, 60.0)  # a surface clear of the volume
+    plotter.add_mesh(pv.Sphere(radius=40, center=above), color="white")
     plotter.show()
 
 
