@@ -1,6 +1,6 @@
 """Tests of vtknpr.pyvista: enable_npr and disable_npr on PyVista plotters, off screen.
 
-    test_enable_npr.py CASE      (CASE: subplots, settings, compose, toggle, screenshot, all)
+    test_enable_npr.py CASE   (CASE: subplots, settings, compose, toggle, screenshot, snippet, all)
 
 Each case fails (exit 1) on a failed check and on any VTK error or warning printed. Exits 77 (a
 skipped test) when PyVista is not installed.
@@ -144,6 +144,22 @@ def case_compose():
           % (with_fxaa, lines))
     p.close()
 
+    # Blur processes the styled image: it differs from the blur alone. (Depth of field is not
+    # tested: off screen on llvmpipe PyVista's depth-of-field image is black, with or without a
+    # style.)
+    for name, turn_on in (("blur", lambda p: p.add_blurring()),):
+        images = []
+        for style in (None, "edges"):
+            p = sphere_plotter()
+            if style:
+                enable_npr(p, style, line_color="red", line_width=2)
+            turn_on(p)
+            images.append(shot(p))
+            p.close()
+        check(differing(images[0], images[1]) > 0.01,
+              "%s over the style: %.1f %% of the pixels differ from %s alone"
+              % (name, 100 * differing(images[0], images[1]), name))
+
     p = sphere_plotter()
     enable_npr(p, "edges")
     with warnings.catch_warnings(record=True) as caught:
@@ -221,8 +237,26 @@ def case_screenshot():
     p.close()
 
 
+def case_snippet():
+    """The first Python block of Documentation/pyvista.md runs and writes its image."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    with open(os.path.join(here, "..", "..", "Documentation", "pyvista.md")) as page:
+        text = page.read()
+    code = text.split("```python\n", 1)[1].split("```", 1)[0]
+    folder = tempfile.mkdtemp()
+    cwd = os.getcwd()
+    os.chdir(folder)
+    try:
+        exec(compile(code, "pyvista.md", "exec"), {})
+    finally:
+        os.chdir(cwd)
+    written = [name for name in os.listdir(folder) if name.endswith(".png")]
+    check(len(written) == 1 and os.path.getsize(os.path.join(folder, written[0])) > 1000,
+          "the documentation's snippet wrote %s" % written)
+
+
 CASES = {"subplots": case_subplots, "settings": case_settings, "compose": case_compose,
-         "toggle": case_toggle, "screenshot": case_screenshot}
+         "toggle": case_toggle, "screenshot": case_screenshot, "snippet": case_snippet}
 
 
 def main():
