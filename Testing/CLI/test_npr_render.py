@@ -208,7 +208,7 @@ errors = [
     ([os.path.join(models, "empty.stl"), "-o", out("x.png")], "is empty"),
     ([os.path.join(models, "truncated.ply"), "-o", out("x.png")], "truncated"),
     ([os.path.join(models, "bad_keyword.off"), "-o", out("x.png")], "is no OFF keyword"),
-    ([os.path.join(models, "bad.gltf"), "-o", out("x.png")], "malformed or unreadable gltf"),
+    ([os.path.join(models, "bad.gltf"), "-o", out("x.png")], "malformed glTF file: invalid JSON"),
     ([os.path.join(models, "cube.xyz"), "-o", out("x.png")], "unknown model format"),
     ([rotor, "--style", "watercolour", "-o", out("x.png")], "unknown style 'watercolour' (valid styles: shaded, edges, toon, toon+edges, sketch, inked)"),
     ([rotor, "--style", "toon", "--toon-bands", "0", "-o", out("x.png")], "--toon-bands expects an integer in 1..64"),
