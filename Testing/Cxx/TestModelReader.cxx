@@ -57,8 +57,8 @@ int main(int argc, char* argv[])
   const GoodCase good[] = { { "cube.stl", 36, 12 }, { "cube_binary.stl", 36, 12 },
     { "cube.obj", 8, 6 }, { "cube.ply", 8, 6 }, { "cube_binary.ply", 8, 6 }, { "cube.vtp", 8, 6 },
     { "cube.vtk", 8, 6 }, { "cube_hexahedron.vtk", 8, 6 }, { "cube.gltf", 8, 12 },
-    { "cube.glb", 8, 12 }, { "cube.off", 8, 6 }, { "cube_colors.off", 8, 6 },
-    { "CUBE_UPPER.OFF", 8, 6 } };
+    { "cube.glb", 8, 12 }, { "cube_external.gltf", 8, 12 }, { "cube.off", 8, 6 },
+    { "cube_colors.off", 8, 6 }, { "CUBE_UPPER.OFF", 8, 6 } };
   // An upper-case extension is the same format.
   {
     std::ifstream in(dir + "/cube.off");
@@ -125,6 +125,29 @@ int main(int argc, char* argv[])
     out->GetBounds(bounds);
     NPR_CHECK(std::isfinite(bounds[0] + bounds[1] + bounds[2] + bounds[3] + bounds[4] + bounds[5]),
       file << ": bounds not finite");
+  }
+
+  // Partly bad files: what is valid is kept, with one warning saying what was dropped.
+  {
+    vtkSmartPointer<vtkNPRModelReader> reader = Read(dir + "/part_nan.obj");
+    const std::string warning = reader->GetWarningMessage();
+    NPR_CHECK(std::string(reader->GetErrorMessage()).empty(),
+      "part_nan.obj: " << reader->GetErrorMessage());
+    NPR_CHECK(reader->GetOutput()->GetNumberOfCells() == 1 &&
+        reader->GetNumberOfDroppedPoints() == 2 && reader->GetNumberOfDroppedCells() == 2,
+      "part_nan.obj: " << reader->GetOutput()->GetNumberOfCells() << " cells kept, dropped "
+                       << reader->GetNumberOfDroppedPoints() << " points, "
+                       << reader->GetNumberOfDroppedCells() << " cells");
+    NPR_CHECK(warning.find("dropped 2 points with NaN/Inf") != std::string::npos &&
+        warning.find("part_nan.obj") != std::string::npos,
+      "part_nan.obj: warning '" << warning << "'");
+    reader = Read(dir + "/part_bad_index.vtp");
+    NPR_CHECK(reader->GetOutput()->GetNumberOfCells() == 5 &&
+        reader->GetNumberOfOutOfRangeCells() == 1 &&
+        std::string(reader->GetWarningMessage())
+            .find("1 cells that use a point index past the 8 points") != std::string::npos,
+      "part_bad_index.vtp: " << reader->GetOutput()->GetNumberOfCells() << " cells, warning '"
+                             << reader->GetWarningMessage() << "'");
   }
 
   mkdir((std::string(argv[2]) + "/a_directory.ply").c_str(), 0755);
