@@ -69,6 +69,8 @@ bool ReadInteger(std::istream& in, int size, bool isSigned, bool swap, long long
   return true;
 }
 
+bool ParseInteger(const std::string& token, long long& value);
+
 bool IsIndexList(const PLYElement& element, const PLYProperty& property)
 {
   return element.Name == "face" && property.CountSize &&
@@ -103,7 +105,10 @@ std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
     else if (keyword == "element")
     {
       PLYElement element;
-      if (!(words >> element.Name >> element.Count) || element.Count < 0)
+      std::string count;
+      if (!(words >> element.Name >> count) ||
+        count.find_first_not_of("0123456789") != std::string::npos ||
+        !ParseInteger(count, element.Count))
       {
         return "malformed PLY header: bad element line '" + line + "'";
       }
@@ -153,6 +158,38 @@ std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
   if (!ended)
   {
     return "malformed PLY header: no end_header";
+  }
+  // Without a vertex element of x, y and z, vtkPLYReader uses the file it has just closed.
+  const auto vertex = std::find_if(elements.begin(), elements.end(),
+    [](const PLYElement& element) { return element.Name == "vertex"; });
+  for (const char* axis : { "x", "y", "z" })
+  {
+    if (vertex == elements.end() ||
+      std::none_of(vertex->Properties.begin(), vertex->Properties.end(),
+        [&](const PLYProperty& property) { return property.Name == axis && !property.CountSize; }))
+    {
+      return std::string("malformed PLY header: no vertex element with a property ") + axis;
+    }
+  }
+  for (const PLYElement& element : elements)
+  {
+    // vtkPLYReader frees the face's index list whether the file gave one or not.
+    if (element.Name == "face" &&
+      std::none_of(element.Properties.begin(), element.Properties.end(),
+        [&](const PLYProperty& property) { return IsIndexList(element, property); }))
+    {
+      return "malformed PLY header: the face element has no vertex_indices list";
+    }
+    for (const PLYProperty& property : element.Properties)
+    {
+      // Lists other than the face's indices are read into memory the reader never set up.
+      if (property.CountSize && !IsIndexList(element, property) &&
+        !(element.Name == "face" && property.Name == "texcoord"))
+      {
+        return "malformed PLY header: unsupported list property '" + property.Name + "' of " +
+          element.Name;
+      }
+    }
   }
   const bool ascii = format == "ascii";
   const bool little = format == "binary_little_endian";
@@ -233,7 +270,18 @@ std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
           }
         }
       }
+      std::string extra;
+      if (ascii && row >> extra)
+      {
+        return "malformed PLY file: " + element.Name + " " + std::to_string(i) +
+          " has more values than its properties ('" + extra + "')";
+      }
     }
+  }
+  std::string rest;
+  if (ascii && in >> rest)
+  {
+    return "malformed PLY file: content after the last element ('" + rest.substr(0, 20) + "')";
   }
   return "";
 }
@@ -717,6 +765,143 @@ std::string vtkNPRModelFormatChecks::CheckLegacyVTK(const std::string& fileName)
   if (!indexError.empty())
   {
     return indexError; // CELLS without CELL_TYPES
+  }
+  return "";
+}
+
+namespace
+{
+// The value of attribute `name` in the XML tag that starts at `tag`; "" when absent.
+std::string XMLAttribute(const std::string& text, size_t tag, const std::string& name)
+{
+  const size_t end = text.find('>', tag);
+  for (size_t at = text.find(name + "=\"", tag); at < end; at = text.find(name + "=\"", at + 1))
+  {
+    if (std::isspace(static_cast<unsigned char>(text[at - 1])))
+    {
+      const size_t start = at + name.size() + 2;
+      const size_t close = text.find('"', start);
+      return close < end ? text.substr(start, close - start) : "";
+    }
+  }
+  return "";
+}
+}
+
+std::string vtkNPRModelFormatChecks::CheckVTP(const std::string& fileName)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  const std::string text(std::istreambuf_iterator<char>(in), {});
+  const std::string bad = "malformed VTP file: ";
+  const size_t file = text.find("<VTKFile");
+  if (file == std::string::npos)
+  {
+    return bad + "no VTKFile element";
+  }
+  const bool compressed = !XMLAttribute(text, file, "compressor").empty();
+  const bool bigEndian = XMLAttribute(text, file, "byte_order") == "BigEndian";
+  const std::string headerType = XMLAttribute(text, file, "header_type");
+  const size_t headerSize = headerType == "UInt64" ? 8 : 4;
+  if (!headerType.empty() && headerType != "UInt64" && headerType != "UInt32")
+  {
+    return bad + "unknown header_type '" + headerType + "'";
+  }
+  // zlib, LZ4 and LZMA expand at most about 1032 times; raw data not at all.
+  const long long most = static_cast<long long>(text.size()) * (compressed ? 1100 : 1);
+  const size_t appended = text.find("<AppendedData");
+  const size_t body = text.find("<AppendedData") == std::string::npos ? text.size() : appended;
+  for (size_t piece = text.find("<Piece"); piece < body; piece = text.find("<Piece", piece + 1))
+  {
+    for (const char* count :
+      { "NumberOfPoints", "NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys" })
+    {
+      const std::string value = XMLAttribute(text, piece, count);
+      long long number = 0;
+      if (!value.empty() &&
+        (value.find_first_not_of("0123456789") != std::string::npos ||
+          !ParseInteger(value, number) || number > most))
+      {
+        return bad + count + "=\"" + value + "\" is not a count this file can hold";
+      }
+    }
+  }
+  if (appended == std::string::npos || XMLAttribute(text, appended, "encoding") != "raw")
+  {
+    return ""; // inline and base64 data: the reader checks their lengths against the text
+  }
+  const size_t underscore = text.find('_', text.find('>', appended));
+  if (underscore == std::string::npos)
+  {
+    return bad + "AppendedData without its '_' marker";
+  }
+  const size_t start = underscore + 1;
+  auto readHeader = [&](size_t at, unsigned long long& value)
+  {
+    if (at > text.size() || text.size() - at < headerSize)
+    {
+      return false;
+    }
+    unsigned char bytes[8] = { 0 };
+    for (size_t i = 0; i < headerSize; ++i)
+    {
+      bytes[bigEndian ? headerSize - 1 - i : i] = static_cast<unsigned char>(text[at + i]);
+    }
+    uint64_t raw = 0;
+    std::memcpy(&raw, bytes, 8);
+    value = raw;
+    return true;
+  };
+  const unsigned long long available = text.size() - start;
+  for (size_t array = text.find("<DataArray"); array < appended;
+       array = text.find("<DataArray", array + 1))
+  {
+    if (XMLAttribute(text, array, "format") != "appended")
+    {
+      continue;
+    }
+    const std::string name = "array '" + XMLAttribute(text, array, "Name") + "'";
+    long long offset = 0;
+    if (!ParseInteger(XMLAttribute(text, array, "offset"), offset) || offset < 0 ||
+      static_cast<unsigned long long>(offset) > available)
+    {
+      return bad + name + " has an offset outside the appended data";
+    }
+    size_t at = start + static_cast<size_t>(offset);
+    unsigned long long value = 0;
+    if (!compressed)
+    {
+      if (!readHeader(at, value) || value > available - offset - headerSize)
+      {
+        return bad + name + " declares more bytes than the appended data holds";
+      }
+      continue;
+    }
+    unsigned long long blocks = 0, blockSize = 0, lastSize = 0;
+    if (!readHeader(at, blocks) || !readHeader(at + headerSize, blockSize) ||
+      !readHeader(at + 2 * headerSize, lastSize) || blocks > available / headerSize)
+    {
+      return bad + name + " has a broken compression header";
+    }
+    at += 3 * headerSize;
+    unsigned long long compressedBytes = 0;
+    for (unsigned long long b = 0; b < blocks; ++b, at += headerSize)
+    {
+      if (!readHeader(at, value) || value > available)
+      {
+        return bad + name + " has a broken compression header";
+      }
+      compressedBytes += value;
+    }
+    const unsigned long long bytes =
+      blocks ? (blocks - 1) * blockSize + (lastSize ? lastSize : blockSize) : 0;
+    if (compressedBytes > text.size() - std::min(at, text.size()) || lastSize > blockSize ||
+      blockSize > static_cast<unsigned long long>(most) ||
+      (blocks && bytes / blocks > 1100 * (compressedBytes / blocks + 64)))
+    {
+      return bad + name + " declares " + std::to_string(bytes) + " bytes in " +
+        std::to_string(compressedBytes) + " compressed bytes (the file has " +
+        std::to_string(text.size()) + ")";
+    }
   }
   return "";
 }

@@ -25,6 +25,11 @@ std::string CheckOBJ(
 // sections (VERTICES, LINES, POLYGONS, TRIANGLE_STRIPS, CELLS, CELL_TYPES) that the file holds
 // every value the section declares and that every cell's point index names a point.
 std::string CheckLegacyVTK(const std::string& fileName);
+
+// VTK XML polydata: the piece's counts and every appended raw array's header (byte count, or
+// the blocks of a compressed array) within what the file can hold. vtkXMLPolyDataReader
+// allocates what they say before it reads: a mutated size asks for terabytes.
+std::string CheckVTP(const std::string& fileName);
 }
 
 #endif

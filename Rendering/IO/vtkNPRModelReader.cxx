@@ -271,6 +271,10 @@ bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
   {
     structureError = vtkNPRModelFormatChecks::CheckOBJ(name, nonFiniteOBJVertices, objVertices);
   }
+  else if (extension == ".vtp")
+  {
+    structureError = vtkNPRModelFormatChecks::CheckVTP(name);
+  }
   else if (extension == ".vtk")
   {
     structureError = vtkNPRModelFormatChecks::CheckLegacyVTK(name);
