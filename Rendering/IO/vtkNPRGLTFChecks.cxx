@@ -351,6 +351,9 @@ private:
     }
     a.Components = ComponentCount(accessor["type"].asString());
     a.Count = Integer(accessor["count"], what + " count", 1, 1LL << 32);
+    // vtkGLTFDocumentLoader copies min and max by the component count.
+    this->CheckNumbers(accessor["min"], what + " min", static_cast<unsigned int>(a.Components));
+    this->CheckNumbers(accessor["max"], what + " max", static_cast<unsigned int>(a.Components));
     if (!accessor["sparse"].isNull())
     {
       throw Invalid(what + " is sparse (not supported)");

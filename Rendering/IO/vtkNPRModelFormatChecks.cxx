@@ -283,6 +283,16 @@ std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
   {
     return "malformed PLY file: content after the last element ('" + rest.substr(0, 20) + "')";
   }
+  if (ascii)
+  {
+    // vtkPLYReader frees a line twice when the last one has no end of line.
+    std::ifstream end(fileName, std::ios::binary | std::ios::ate);
+    char last = '\n';
+    if (end.tellg() > 0 && end.seekg(-1, std::ios::end) && end.get(last) && last != '\n')
+    {
+      return "malformed PLY file: its last line has no end of line";
+    }
+  }
   return "";
 }
 
@@ -482,6 +492,8 @@ public:
     return !token.empty();
   }
 
+  size_t Size() const { return this->Text.size(); }
+
   // Binary data starts after the keyword line.
   void StartBinary() { this->Line(); }
 
@@ -570,7 +582,19 @@ std::string vtkNPRModelFormatChecks::CheckLegacyVTK(const std::string& fileName)
   {
     return bad + "it does not start with '# vtk DataFile Version'";
   }
-  const double version = std::atof(header.c_str() + 22);
+  // "M.m" as vtkDataReader reads it (major 5 and later: OFFSETS and CONNECTIVITY).
+  const std::string versionText = header.substr(22);
+  const size_t digits = versionText.find_first_not_of(" ");
+  const size_t dot = versionText.find('.', digits);
+  if (digits == std::string::npos || dot == std::string::npos || dot == digits ||
+    versionText.find_first_not_of("0123456789", digits) != dot ||
+    versionText.find_first_not_of("0123456789", dot + 1) != std::string::npos ||
+    dot + 1 == versionText.size() || dot - digits > 2 ||
+    std::atoi(versionText.c_str() + digits) < 1 || std::atoi(versionText.c_str() + digits) > 5)
+  {
+    return bad + "unknown file version '" + versionText + "'";
+  }
+  const double version = std::atoi(versionText.c_str() + digits);
   walker.Line(); // the title
   const std::string format = Upper(walker.Line());
   const bool binary = format.compare(0, 6, "BINARY") == 0;
@@ -611,6 +635,11 @@ std::string vtkNPRModelFormatChecks::CheckLegacyVTK(const std::string& fileName)
       {
         return bad + "bad POINTS line";
       }
+      if (first > static_cast<long long>(walker.Size()))
+      {
+        return bad + "POINTS declares " + std::to_string(first) +
+          " points, more than the file holds";
+      }
       if (binary)
       {
         walker.StartBinary();
@@ -631,7 +660,7 @@ std::string vtkNPRModelFormatChecks::CheckLegacyVTK(const std::string& fileName)
       keyword == "TRIANGLE_STRIPS" || keyword == "CELLS";
     if (keyword == "CELL_TYPES")
     {
-      if (!walker.Token(a) || !ParseInteger(a, first) || first != cells)
+      if (!walker.Token(a) || !ParseInteger(a, first) || first != cells || cells < 0)
       {
         return bad + "CELL_TYPES does not count the " + std::to_string(cells) + " cells";
       }
@@ -669,6 +698,11 @@ std::string vtkNPRModelFormatChecks::CheckLegacyVTK(const std::string& fileName)
       !ParseInteger(b, second) || second < 0)
     {
       return bad + "bad " + keyword + " line";
+    }
+    if (first > static_cast<long long>(walker.Size()) ||
+      second > static_cast<long long>(walker.Size()))
+    {
+      return bad + keyword + " declares more values than the file holds";
     }
     std::vector<long long> offsets, connectivity;
     if (version < 5.0)
@@ -825,12 +859,27 @@ std::string vtkNPRModelFormatChecks::CheckVTP(const std::string& fileName)
       }
     }
   }
+  for (size_t array = text.find("<DataArray"); array < body;
+       array = text.find("<DataArray", array + 1))
+  {
+    // vtkXMLReader sizes a vector by it before anything else.
+    const std::string components = XMLAttribute(text, array, "NumberOfComponents");
+    long long number = 1;
+    if (!components.empty() &&
+      (components.find_first_not_of("0123456789") != std::string::npos ||
+        !ParseInteger(components, number) || number < 1 || number > 4096))
+    {
+      return bad + "a DataArray has NumberOfComponents=\"" + components.substr(0, 20) + "\"";
+    }
+  }
   if (appended == std::string::npos || XMLAttribute(text, appended, "encoding") != "raw")
   {
     return ""; // inline and base64 data: the reader checks their lengths against the text
   }
-  const size_t underscore = text.find('_', text.find('>', appended));
-  if (underscore == std::string::npos)
+  const size_t tagEnd = text.find('>', appended);
+  const size_t underscore =
+    tagEnd == std::string::npos ? tagEnd : text.find_first_not_of(" \t\r\n", tagEnd + 1);
+  if (underscore == std::string::npos || text[underscore] != '_')
   {
     return bad + "AppendedData without its '_' marker";
   }

@@ -204,8 +204,13 @@ bool vtkNPRModelReader::IsSupportedFileName(const char* fileName)
 
 bool vtkNPRModelReader::Fail(const std::string& message)
 {
+  // One line, whatever the file put into it (an attribute value, VTK's message).
   this->ErrorMessage = message;
-  vtkErrorMacro(<< message);
+  for (char& c : this->ErrorMessage)
+  {
+    c = (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) ? ' ' : c;
+  }
+  vtkErrorMacro(<< this->ErrorMessage);
   return false;
 }
 
