@@ -621,6 +621,16 @@ std::string vtkNPRModelFormatChecks::CheckLegacyVTK(const std::string& fileName)
     keyword = Upper(keyword);
     std::string a, b;
     long long first = 0, second = 0;
+    if (keyword == "METADATA") // information keys of the array before: up to a blank line
+    {
+      walker.Line();
+      for (std::string line = walker.Line();
+           !line.empty() && line.find_first_not_of(" \t") != std::string::npos;
+           line = walker.Line())
+      {
+      }
+      continue;
+    }
     if (keyword == "DIMENSIONS")
     {
       walker.Token(a), walker.Token(a), walker.Token(a);

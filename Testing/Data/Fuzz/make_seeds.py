@@ -40,6 +40,10 @@ writer.SetFileName("sphere_binary.ply")
 writer.SetFileTypeToBinary()
 writer.Write()
 
+with open("triangle_metadata.vtk", "w") as f:  # a METADATA block between sections
+    f.write("# vtk DataFile Version 5.1\ntriangle\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n"
+            "0 0 0 1 0 0 0 1 0\nMETADATA\nINFORMATION 0\n\nPOLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\n"
+            "CONNECTIVITY vtktypeint64\n0 1 2\n")
 with open("square_vt_vn.obj", "w") as f:
     f.write("# a square with texture coordinates and normals, a line and points\n"
             "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
