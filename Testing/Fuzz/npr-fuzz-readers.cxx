@@ -51,9 +51,28 @@ std::string ReadFile(const std::string& path)
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
+// A mutant that cannot be written would be "rejected" as a missing file: stop instead.
 void WriteFile(const std::string& path, const std::string& bytes)
 {
-  std::ofstream(path, std::ios::binary | std::ios::trunc).write(bytes.data(), bytes.size());
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())) || !out.flush())
+  {
+    std::cerr << "npr-fuzz-readers: cannot write " << path << "\n";
+    std::exit(2);
+  }
+}
+
+// mkdir -p.
+void MakeDirectories(const std::string& path)
+{
+  for (size_t slash = path.find('/', 1);; slash = path.find('/', slash + 1))
+  {
+    mkdir(path.substr(0, slash).c_str(), 0755);
+    if (slash == std::string::npos)
+    {
+      break;
+    }
+  }
 }
 
 std::vector<std::string> ListFiles(const std::string& dir)
@@ -479,10 +498,10 @@ int main(int argc, char* argv[])
     formats.push_back(formatList.substr(start, comma - start));
     start = comma + 1;
   }
-  mkdir(work.c_str(), 0755);
+  MakeDirectories(work);
   if (!crashes.empty())
   {
-    mkdir(crashes.c_str(), 0755);
+    MakeDirectories(crashes);
   }
 
   Mutator mutator(seed, pool);
@@ -499,7 +518,23 @@ int main(int argc, char* argv[])
       return 2;
     }
     const std::string dir = work + "/" + format;
-    mkdir(dir.c_str(), 0755);
+    MakeDirectories(dir);
+    // Every seed, unmutated, must read where the mutants are written: else nothing is fuzzed.
+    for (const Seed& s : candidates)
+    {
+      WriteFile(dir + "/seed." + format, s.Data);
+      if (!s.Companion.empty())
+      {
+        WriteFile(dir + "/" + s.Companion, s.CompanionData);
+      }
+      std::string problem;
+      if (Run(dir + "/seed." + format, problem) != Outcome::Read)
+      {
+        std::cerr << "npr-fuzz-readers: the seed " << s.Name << " does not read from " << dir
+                  << (problem.empty() ? "" : ": " + problem) << "\n";
+        return 2;
+      }
+    }
     const bool text = format != "glb";
     Counts counts;
     const auto formatStart = std::chrono::steady_clock::now();
