@@ -11,6 +11,9 @@
 # `test` runs these stages, in this order (NPR_STAGES, a comma-separated list, picks some; the
 # default is all of them, which CI runs; NPR_STAGES=host is the quick local run):
 #   host           Debian 12, VTK 9.1: build and all tests, in $NPR_BUILD_DIR
+#   fuzz           Debian 12: npr-fuzz-readers (AddressSanitizer, UBSan) on mutants of every model
+#                  format for NPR_FUZZ_SECONDS (default 120) from NPR_FUZZ_SEED (default 1);
+#                  mutants that crash or hang land in $NPR_BUILD_DIR/fuzz/crashes
 #   vtk-9.3        Debian 13, VTK 9.3: the same build and tests in a chroot, in $NPR_BUILD_DIR/vtk-9.3
 #   vtk-9.6        Debian unstable, VTK 9.6 (no OSMesa): the same, in $NPR_BUILD_DIR/vtk-9.6
 #   paraview-5.11  Debian 12, ParaView 5.11: the plugin and its tests, in $NPR_BUILD_DIR/paraview-5.11
@@ -52,7 +55,7 @@ if ((${#missing[@]})); then
   "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-all_stages=(host vtk-9.3 vtk-9.6 paraview-5.11 paraview-5.13 paraview-6.1)
+all_stages=(host fuzz vtk-9.3 vtk-9.6 paraview-5.11 paraview-5.13 paraview-6.1)
 IFS=, read -r -a stages <<<"${NPR_STAGES:-$(IFS=,; echo "${all_stages[*]}")}"
 for stage in "${stages[@]}"; do
   if [[ " ${all_stages[*]} " != *" $stage "* ]]; then
@@ -96,6 +99,12 @@ record_ctest() {
     stage_total[$stage]=${BASH_REMATCH[2]}
     stage_passed[$stage]=$((BASH_REMATCH[2] - BASH_REMATCH[1]))
   fi
+  # The fuzz stage: "...; 8 of 8 formats passed".
+  line=$(grep -E "[0-9]+ of [0-9]+ formats passed" "$log" 2>/dev/null | tail -n 1 || true)
+  if [[ $line =~ ([0-9]+)\ of\ ([0-9]+)\ formats\ passed ]]; then
+    stage_total[$stage]=${BASH_REMATCH[2]}
+    stage_passed[$stage]=${BASH_REMATCH[1]}
+  fi
 }
 
 build_host() {
@@ -113,6 +122,18 @@ run_host_stage() {
     return 1
   fi
   ctest --test-dir "$build_dir" --output-on-failure -j 2 2>&1 | tee -a "$build_dir/logs/host.log"
+  return "${PIPESTATUS[0]}"
+}
+
+# The reader fuzzer (Documentation/input.md), on the host build; its summary line gives the
+# table's "formats passed/total".
+run_fuzz_stage() {
+  build_host >"$build_dir/logs/fuzz.log" 2>&1 || { cat "$build_dir/logs/fuzz.log"; return 1; }
+  rm -rf "$build_dir/fuzz"
+  ASAN_OPTIONS=detect_leaks=0:exitcode=86 "$build_dir/bin/npr-fuzz-readers" \
+    --seeds "$source_dir/Testing/Data/Fuzz/seeds" --work "$build_dir/fuzz/work" \
+    --crashes "$build_dir/fuzz/crashes" --seconds "${NPR_FUZZ_SECONDS:-120}" \
+    --seed "${NPR_FUZZ_SEED:-1}" 2>&1 | tee -a "$build_dir/logs/fuzz.log"
   return "${PIPESTATUS[0]}"
 }
 
@@ -165,6 +186,8 @@ run_test_stages() {
     start=$SECONDS
     if [[ $stage == host ]]; then
       run_host_stage && stage_status[$stage]=passed || stage_status[$stage]=FAILED
+    elif [[ $stage == fuzz ]]; then
+      run_fuzz_stage && stage_status[$stage]=passed || stage_status[$stage]=FAILED
     else
       run_chroot_stage "$stage" && stage_status[$stage]=passed || stage_status[$stage]=FAILED
     fi

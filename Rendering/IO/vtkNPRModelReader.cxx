@@ -5,11 +5,13 @@
 #include "vtkCellData.h"
 #include "vtkCompositeDataGeometryFilter.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
 #include "vtkDataSetReader.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkGLTFReader.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNPRGLTFChecks.h"
 #include "vtkNPRModelFormatChecks.h"
 #include "vtkNPROFFReader.h"
 #include "vtkNew.h"
@@ -134,30 +136,36 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& extension, const std
   return nullptr;
 }
 
-// Copies the cells of one kind whose points are all finite, renumbering their points.
-void CopyFiniteCells(vtkCellArray* cells, const std::vector<vtkIdType>& newPointIds,
+// Copies the cells of one kind whose points all exist and are finite, renumbering their points;
+// counts those dropped for a non-finite point and for a point index out of range.
+void CopyDrawableCells(vtkCellArray* cells, const std::vector<vtkIdType>& newPointIds,
   vtkIdType& inputCellId, vtkCellData* inputData, vtkCellData* outputData, vtkCellArray* kept,
-  vtkIdType& dropped)
+  vtkIdType& nonFinite, vtkIdType& outOfRange)
 {
+  const vtkIdType numberOfPoints = static_cast<vtkIdType>(newPointIds.size());
   vtkIdType size = 0;
   const vtkIdType* ids = nullptr;
   std::vector<vtkIdType> renumbered;
   for (cells->InitTraversal(); cells->GetNextCell(size, ids); ++inputCellId)
   {
     renumbered.resize(static_cast<size_t>(size));
-    bool finite = true;
-    for (vtkIdType k = 0; k < size && finite; ++k)
+    bool exists = true, finite = true;
+    for (vtkIdType k = 0; k < size && exists; ++k)
     {
-      renumbered[static_cast<size_t>(k)] = newPointIds[static_cast<size_t>(ids[k])];
-      finite = renumbered[static_cast<size_t>(k)] >= 0;
+      exists = ids[k] >= 0 && ids[k] < numberOfPoints;
+      renumbered[static_cast<size_t>(k)] = exists ? newPointIds[static_cast<size_t>(ids[k])] : -1;
+      finite = finite && renumbered[static_cast<size_t>(k)] >= 0;
     }
-    if (!finite)
+    if (!exists || !finite)
     {
-      ++dropped;
+      ++(exists ? nonFinite : outOfRange);
       continue;
     }
     kept->InsertNextCell(size, renumbered.data());
-    outputData->CopyData(inputData, inputCellId, outputData->GetNumberOfTuples());
+    if (outputData)
+    {
+      outputData->CopyData(inputData, inputCellId, outputData->GetNumberOfTuples());
+    }
   }
 }
 }
@@ -179,6 +187,7 @@ void vtkNPRModelReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ErrorMessage: " << this->ErrorMessage << "\n";
   os << indent << "NumberOfDroppedPoints: " << this->NumberOfDroppedPoints << "\n";
   os << indent << "NumberOfDroppedCells: " << this->NumberOfDroppedCells << "\n";
+  os << indent << "NumberOfOutOfRangeCells: " << this->NumberOfOutOfRangeCells << "\n";
 }
 
 const char* vtkNPRModelReader::GetSupportedExtensions()
@@ -195,8 +204,13 @@ bool vtkNPRModelReader::IsSupportedFileName(const char* fileName)
 
 bool vtkNPRModelReader::Fail(const std::string& message)
 {
+  // One line, whatever the file put into it (an attribute value, VTK's message).
   this->ErrorMessage = message;
-  vtkErrorMacro(<< message);
+  for (char& c : this->ErrorMessage)
+  {
+    c = (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) ? ' ' : c;
+  }
+  vtkErrorMacro(<< this->ErrorMessage);
   return false;
 }
 
@@ -208,6 +222,7 @@ int vtkNPRModelReader::RequestData(
   this->WarningMessage.clear();
   this->NumberOfDroppedPoints = 0;
   this->NumberOfDroppedCells = 0;
+  this->NumberOfOutOfRangeCells = 0;
   if (!this->Read(this->FileName ? this->FileName : "", output))
   {
     output->Initialize();
@@ -243,12 +258,36 @@ bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
   vtkSmartPointer<vtkAlgorithm> reader = MakeReader(extension, name);
   if (!reader)
   {
-    return this->Fail(name + ": unknown model format '" + extension + "' (supported: " +
-      GetSupportedExtensions() + ")");
+    return this->Fail(name + ": unknown model format '" + extension +
+      "' (supported: " + GetSupportedExtensions() + ")");
   }
-  const std::string structureError = extension == ".ply" ? vtkNPRModelFormatChecks::CheckPLY(name)
-    : extension == ".stl"                               ? vtkNPRModelFormatChecks::CheckSTL(name)
-                                                        : std::string();
+  std::vector<long long> nonFiniteOBJVertices;
+  long long objVertices = 0;
+  std::string structureError;
+  if (extension == ".ply")
+  {
+    structureError = vtkNPRModelFormatChecks::CheckPLY(name);
+  }
+  else if (extension == ".stl")
+  {
+    structureError = vtkNPRModelFormatChecks::CheckSTL(name);
+  }
+  else if (extension == ".obj")
+  {
+    structureError = vtkNPRModelFormatChecks::CheckOBJ(name, nonFiniteOBJVertices, objVertices);
+  }
+  else if (extension == ".vtp")
+  {
+    structureError = vtkNPRModelFormatChecks::CheckVTP(name);
+  }
+  else if (extension == ".vtk")
+  {
+    structureError = vtkNPRModelFormatChecks::CheckLegacyVTK(name);
+  }
+  else if (extension == ".gltf" || extension == ".glb")
+  {
+    structureError = vtkNPRGLTFChecks::CheckGLTF(name);
+  }
   if (!structureError.empty())
   {
     return this->Fail(name + ": " + structureError);
@@ -266,8 +305,8 @@ bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
   }
   if (!messages.Error.empty())
   {
-    return this->Fail(name + ": malformed or unreadable " + extension.substr(1) + " file: " +
-      messages.Error);
+    return this->Fail(
+      name + ": malformed or unreadable " + extension.substr(1) + " file: " + messages.Error);
   }
 
   // Every format ends as one polydata: composite (glTF) and non-polygonal (legacy) data too.
@@ -295,9 +334,43 @@ bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
     return this->Fail(name + ": contains no geometry (no points or no cells)");
   }
 
-  // Drop points with NaN or infinite coordinates, and the cells that use them.
+  for (vtkCellArray* cells :
+    { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })
+  {
+    if (cells && !cells->IsValid()) // offsets that run past the connectivity (a VTP file's)
+    {
+      return this->Fail(name + ": malformed " + extension.substr(1) +
+        " file: inconsistent cell offsets and connectivity");
+    }
+  }
   vtkPoints* points = surface->GetPoints();
   const vtkIdType numberOfPoints = points->GetNumberOfPoints();
+  if (!nonFiniteOBJVertices.empty())
+  {
+    // vtkOBJReader reads "nan" and "inf" as numbers of its own: mark those vertices, which it
+    // keeps in file order unless faces give texture or normal indices of their own per corner.
+    if (numberOfPoints != objVertices || points->GetData()->GetNumberOfComponents() != 3)
+    {
+      return this->Fail(name +
+        ": NaN/Inf vertices in an OBJ file whose faces give per-corner "
+        "texture or normal indices are not supported");
+    }
+    vtkNew<vtkPoints> marked;
+    marked->DeepCopy(points);
+    for (long long vertex : nonFiniteOBJVertices)
+    {
+      const double nan = std::nan("");
+      marked->SetPoint(static_cast<vtkIdType>(vertex), nan, nan, nan);
+    }
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->ShallowCopy(surface);
+    copy->SetPoints(marked);
+    surface = copy;
+    points = marked;
+  }
+
+  // Drop points with NaN or infinite coordinates, the cells that use them, and cells that name
+  // a point that does not exist (VTP and VTK files, which VTK's readers take as they are).
   std::vector<vtkIdType> newPointIds(static_cast<size_t>(numberOfPoints), -1);
   vtkIdType finitePoints = 0;
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
@@ -309,53 +382,118 @@ bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
       newPointIds[static_cast<size_t>(i)] = finitePoints++;
     }
   }
-  if (finitePoints == numberOfPoints)
+  vtkIdType nonFiniteCells = 0, outOfRangeCells = 0;
   {
-    output->ShallowCopy(surface);
-    return true;
-  }
-
-  vtkNew<vtkPoints> keptPoints;
-  keptPoints->SetDataType(points->GetDataType());
-  keptPoints->SetNumberOfPoints(finitePoints);
-  output->GetPointData()->CopyAllocate(surface->GetPointData(), finitePoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    const vtkIdType target = newPointIds[static_cast<size_t>(i)];
-    if (target >= 0)
+    vtkIdType cellId = 0;
+    vtkNew<vtkCellArray> scratch;
+    for (vtkCellArray* cells :
+      { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })
     {
-      keptPoints->SetPoint(target, points->GetPoint(i));
-      output->GetPointData()->CopyData(surface->GetPointData(), i, target);
+      CopyDrawableCells(
+        cells, newPointIds, cellId, nullptr, nullptr, scratch, nonFiniteCells, outOfRangeCells);
+      scratch->Reset();
     }
   }
-  output->SetPoints(keptPoints);
-  output->GetCellData()->CopyAllocate(surface->GetCellData(), surface->GetNumberOfCells());
+  if (finitePoints == numberOfPoints && outOfRangeCells == 0)
+  {
+    output->ShallowCopy(surface);
+  }
+  else
+  {
+    vtkNew<vtkPoints> keptPoints;
+    keptPoints->SetDataType(points->GetDataType());
+    keptPoints->SetNumberOfPoints(finitePoints);
+    output->GetPointData()->CopyAllocate(surface->GetPointData(), finitePoints);
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    {
+      const vtkIdType target = newPointIds[static_cast<size_t>(i)];
+      if (target >= 0)
+      {
+        keptPoints->SetPoint(target, points->GetPoint(i));
+        output->GetPointData()->CopyData(surface->GetPointData(), i, target);
+      }
+    }
+    output->SetPoints(keptPoints);
+    output->GetCellData()->CopyAllocate(surface->GetCellData(), surface->GetNumberOfCells());
 
-  // vtkPolyData numbers its cells vertices first, then lines, polygons, strips.
-  vtkIdType inputCellId = 0;
-  vtkNew<vtkCellArray> verts, lines, polys, strips;
-  CopyFiniteCells(surface->GetVerts(), newPointIds, inputCellId, surface->GetCellData(),
-    output->GetCellData(), verts, this->NumberOfDroppedCells);
-  CopyFiniteCells(surface->GetLines(), newPointIds, inputCellId, surface->GetCellData(),
-    output->GetCellData(), lines, this->NumberOfDroppedCells);
-  CopyFiniteCells(surface->GetPolys(), newPointIds, inputCellId, surface->GetCellData(),
-    output->GetCellData(), polys, this->NumberOfDroppedCells);
-  CopyFiniteCells(surface->GetStrips(), newPointIds, inputCellId, surface->GetCellData(),
-    output->GetCellData(), strips, this->NumberOfDroppedCells);
-  output->SetVerts(verts);
-  output->SetLines(lines);
-  output->SetPolys(polys);
-  output->SetStrips(strips);
-  this->NumberOfDroppedPoints = numberOfPoints - finitePoints;
+    // vtkPolyData numbers its cells vertices first, then lines, polygons, strips.
+    vtkIdType inputCellId = 0;
+    nonFiniteCells = outOfRangeCells = 0;
+    vtkNew<vtkCellArray> verts, lines, polys, strips;
+    CopyDrawableCells(surface->GetVerts(), newPointIds, inputCellId, surface->GetCellData(),
+      output->GetCellData(), verts, nonFiniteCells, outOfRangeCells);
+    CopyDrawableCells(surface->GetLines(), newPointIds, inputCellId, surface->GetCellData(),
+      output->GetCellData(), lines, nonFiniteCells, outOfRangeCells);
+    CopyDrawableCells(surface->GetPolys(), newPointIds, inputCellId, surface->GetCellData(),
+      output->GetCellData(), polys, nonFiniteCells, outOfRangeCells);
+    CopyDrawableCells(surface->GetStrips(), newPointIds, inputCellId, surface->GetCellData(),
+      output->GetCellData(), strips, nonFiniteCells, outOfRangeCells);
+    output->SetVerts(verts);
+    output->SetLines(lines);
+    output->SetPolys(polys);
+    output->SetStrips(strips);
+    this->NumberOfDroppedPoints = numberOfPoints - finitePoints;
+    this->NumberOfDroppedCells = nonFiniteCells + outOfRangeCells;
+    this->NumberOfOutOfRangeCells = outOfRangeCells;
+  }
 
+  std::string dropped;
+  if (this->NumberOfDroppedPoints)
+  {
+    dropped = "dropped " + std::to_string(this->NumberOfDroppedPoints) +
+      " points with NaN/Inf coordinates and the " + std::to_string(nonFiniteCells) +
+      " cells that use them";
+  }
+  if (outOfRangeCells)
+  {
+    dropped += std::string(dropped.empty() ? "dropped " : ", and ") +
+      std::to_string(outOfRangeCells) + " cells that use a point index past the " +
+      std::to_string(numberOfPoints) + " points";
+  }
   if (output->GetNumberOfCells() == 0)
   {
-    return this->Fail(name + ": no cell is left after dropping " +
-      std::to_string(this->NumberOfDroppedPoints) + " points with NaN/Inf coordinates");
+    return this->Fail(name + ": nothing to draw: no cell is left after it " + dropped);
   }
-  this->WarningMessage = name + ": dropped " + std::to_string(this->NumberOfDroppedPoints) +
-    " points with NaN/Inf coordinates and the " + std::to_string(this->NumberOfDroppedCells) +
-    " cells that use them";
-  vtkWarningMacro(<< this->WarningMessage);
+
+  // Nothing drawable: every point used by a cell at one spot or on one line.
+  double bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  vtkPoints* keptPoints = output->GetPoints();
+  for (vtkCellArray* cells :
+    { output->GetVerts(), output->GetLines(), output->GetPolys(), output->GetStrips() })
+  {
+    vtkIdType size = 0;
+    const vtkIdType* ids = nullptr;
+    for (cells->InitTraversal(); cells->GetNextCell(size, ids);)
+    {
+      for (vtkIdType k = 0; k < size; ++k)
+      {
+        double p[3];
+        keptPoints->GetPoint(ids[k], p);
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          bounds[2 * axis] = std::min(bounds[2 * axis], p[axis]);
+          bounds[2 * axis + 1] = std::max(bounds[2 * axis + 1], p[axis]);
+        }
+      }
+    }
+  }
+  int flatAxes = 0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    flatAxes += !(bounds[2 * axis + 1] > bounds[2 * axis]);
+  }
+  if (flatAxes >= 2)
+  {
+    return this->Fail(name + ": nothing to draw: every point of its " +
+      std::to_string(output->GetNumberOfCells()) + " cells lies " +
+      (flatAxes == 3 ? "at one spot" : "on one line") + " (zero-area bounds)" +
+      (dropped.empty() ? std::string() : " after it " + dropped));
+  }
+  if (!dropped.empty())
+  {
+    this->WarningMessage = name + ": " + dropped;
+    vtkWarningMacro(<< this->WarningMessage);
+  }
   return true;
 }

@@ -10,15 +10,19 @@
  * and a file without any surface, line or vertex cell are errors: the output is empty,
  * GetErrorMessage() holds one line naming the file and the problem, and ErrorEvent is invoked.
  *
- * Points with a NaN or infinite coordinate are removed with every cell that uses them, with a
- * warning that counts them (GetNumberOfDroppedPoints(), GetNumberOfDroppedCells()); a file with
- * no finite cell left is an error. Point and cell data follow their points and cells.
+ * Before VTK's reader runs, the file's structure is checked where that reader trusts it (PLY,
+ * STL, OBJ, legacy VTK, glTF/GLB: vtkNPRModelFormatChecks, vtkNPRGLTFChecks). After it, points
+ * with a NaN or infinite coordinate are removed with every cell that uses them, and cells that
+ * name a point past the end are removed, with one warning that counts them
+ * (GetNumberOfDroppedPoints(), GetNumberOfDroppedCells(), GetNumberOfOutOfRangeCells()). A file
+ * with nothing drawable left (no cell, or every point of the cells at one spot or on one line)
+ * is an error. Point and cell data follow their points and cells.
  */
 #ifndef vtkNPRModelReader_h
 #define vtkNPRModelReader_h
 
-#include "vtkPolyDataAlgorithm.h"
 #include "vtkIONPRModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
 
 #include <string> // for std::string
 
@@ -49,10 +53,12 @@ public:
 
   ///@{
   /**
-   * What the last read removed because of NaN or infinite coordinates.
+   * What the last read removed: points with NaN or infinite coordinates, and cells (those that
+   * use such points, and those with a point index out of range, also counted alone).
    */
   vtkGetMacro(NumberOfDroppedPoints, vtkIdType);
   vtkGetMacro(NumberOfDroppedCells, vtkIdType);
+  vtkGetMacro(NumberOfOutOfRangeCells, vtkIdType);
   ///@}
 
   /**
@@ -76,6 +82,7 @@ protected:
   std::string WarningMessage;
   vtkIdType NumberOfDroppedPoints = 0;
   vtkIdType NumberOfDroppedCells = 0;
+  vtkIdType NumberOfOutOfRangeCells = 0;
 
 private:
   vtkNPRModelReader(const vtkNPRModelReader&) = delete;

@@ -243,10 +243,13 @@ int vtkNPROFFReader::RequestData(
       lines.Fail("negative vertex or face count");
     }
 
-    const size_t valuesPerVertex = 3 + (header.Normals ? 3 : 0) + (header.TextureCoordinates ? 2 : 0);
+    const size_t valuesPerVertex =
+      3 + (header.Normals ? 3 : 0) + (header.TextureCoordinates ? 2 : 0);
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
-    points->Allocate(static_cast<vtkIdType>(numberOfVertices));
+    // The count is only the file's word (a mutated one asked for 2^31 points): reserve a little,
+    // grow as the vertex lines come.
+    points->Allocate(static_cast<vtkIdType>(std::min<long long>(numberOfVertices, 1 << 16)));
     vtkNew<vtkFloatArray> normals;
     normals->SetName("Normals");
     normals->SetNumberOfComponents(3);

@@ -94,12 +94,7 @@ rc, _, err = run(os.path.join(models, "cube_nan.ply"), "--size", "64x64", "-o", 
 check(rc == 0 and "warning" in err and "NaN/Inf" in err and os.path.exists(out("nan.png")),
       "NaN points are dropped with a warning (%s)" % err.strip())
 
-# Several models and formats in one scene.
-rc, _, err = run(os.path.join(models, "cube.glb"), os.path.join(models, "cube.off"), "--size", "64x64",
-                 "-o", out("two.png"))
-check(rc == 0, "two models in one scene (%s)" % err.strip())
-
-# --style edges and --edge-mask: an 8-bit grey mask of the render's size, white lines on black.
+# A partly bad OBJ (NaN/Inf vertices, one face on finite points): one warning, the face drawn.
 from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
 
 
@@ -113,6 +108,34 @@ def read_png(path):
     return image.GetDimensions(), scalars.GetNumberOfComponents(), scalars.GetDataTypeAsString(), values
 
 
+rc, _, err = run(os.path.join(models, "part_nan.obj"), "--size", "64x64", "-o", out("part_nan.png"))
+lines = err.strip().splitlines()
+check(rc == 0 and len(lines) == 1 and lines[0].startswith("npr-render: warning: ") and
+      "dropped 2 points with NaN/Inf coordinates and the 2 cells" in lines[0],
+      "a partly NaN OBJ gives one warning (%s)" % err.strip())
+_, components, _, values = read_png(out("part_nan.png"))
+drawn = sum(1 for i in range(0, len(values), components) if values[i:i + 3] != [255, 255, 255])
+check(drawn > 200, "the finite face of the partly NaN OBJ is drawn (%d non-background pixels)" % drawn)
+
+# Nothing drawable (no finite cell, every point on one line): an error for every style, and for
+# --frames, never a blank image with exit status 0.
+for model in ("all_nan.obj", "flat.obj"):
+    for style in ("shaded", "edges", "toon", "toon+edges", "sketch", "inked"):
+        for extra in (["-o", out("blank.png")], ["--frames", "2"]):
+            if os.path.exists(out("blank.png")):
+                os.remove(out("blank.png"))
+            rc, stdout, err = run(os.path.join(models, model), "--style", style, "--size", "64x64", *extra)
+            lines = err.strip().splitlines()
+            check(rc == 1 and len(lines) == 1 and "nothing to draw" in lines[0] and not stdout.strip()
+                  and not os.path.exists(out("blank.png")),
+                  "%s --style %s %s: exit 1, 'nothing to draw' (%s)" % (model, style, extra[0], err.strip()))
+
+# Several models and formats in one scene.
+rc, _, err = run(os.path.join(models, "cube.glb"), os.path.join(models, "cube.off"), "--size", "64x64",
+                 "-o", out("two.png"))
+check(rc == 0, "two models in one scene (%s)" % err.strip())
+
+# --style edges and --edge-mask: an 8-bit grey mask of the render's size, white lines on black.
 rc, _, err = run(rotor, "--style", "edges", "--size", "160x120", "--azimuth", "30", "-o", out("edges.png"),
                  "--edge-mask", out("mask.png"))
 check(rc == 0, "--style edges with --edge-mask (%s)" % err.strip())
@@ -208,8 +231,19 @@ errors = [
     ([os.path.join(models, "empty.stl"), "-o", out("x.png")], "is empty"),
     ([os.path.join(models, "truncated.ply"), "-o", out("x.png")], "truncated"),
     ([os.path.join(models, "bad_keyword.off"), "-o", out("x.png")], "is no OFF keyword"),
-    ([os.path.join(models, "bad.gltf"), "-o", out("x.png")], "malformed or unreadable gltf"),
+    ([os.path.join(models, "bad.gltf"), "-o", out("x.png")], "malformed glTF file: invalid JSON"),
     ([os.path.join(models, "cube.xyz"), "-o", out("x.png")], "unknown model format"),
+    # Each of these crashed npr-render (missing glTF buffer) or drew a blank image with exit 0.
+    ([os.path.join(models, "missing_buffer.gltf"), "-o", out("x.png")], "missing_buffer.gltf: malformed glTF file: buffer 0 file 'missing_buffer.bin' is missing"),
+    ([os.path.join(models, "short_buffer.gltf"), "-o", out("x.png")], "fewer than its byteLength"),
+    ([os.path.join(models, "bad_accessor.gltf"), "-o", out("x.png")], "does not fit in bufferView 0"),
+    ([os.path.join(models, "bad_indices.gltf"), "-o", out("x.png")], "is vertex 7 of 7"),
+    ([os.path.join(models, "bad_length.glb"), "-o", out("x.png")], "malformed GLB file"),
+    ([os.path.join(models, "short_points.vtk"), "-o", out("x.png")], "short_points.vtk: malformed legacy VTK file: POINTS declares 8 points but holds 3"),
+    ([os.path.join(models, "all_nan.obj"), "-o", out("x.png")], "all_nan.obj: nothing to draw"),
+    ([os.path.join(models, "bad_index.obj"), "-o", out("x.png")], "bad_index.obj: malformed OBJ file: line 4: uses vertex 9 of 3"),
+    ([os.path.join(models, "bad_negative_index.obj"), "-o", out("x.png")], "uses vertex -9, before the first"),
+    ([os.path.join(models, "bad_index.vtp"), "-o", out("x.png")], "bad_index.vtp: nothing to draw"),
     ([rotor, "--style", "watercolour", "-o", out("x.png")], "unknown style 'watercolour' (valid styles: shaded, edges, toon, toon+edges, sketch, inked)"),
     ([rotor, "--style", "toon", "--toon-bands", "0", "-o", out("x.png")], "--toon-bands expects an integer in 1..64"),
     ([rotor, "--style", "sketch", "--uncertainty", "40", "-o", out("x.png")], "--uncertainty expects a number in 0..32"),

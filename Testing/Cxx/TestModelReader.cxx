@@ -6,14 +6,14 @@
 #include "nprTesting.h"
 
 #include "vtkCellData.h"
+#include "vtkLogger.h"
 #include "vtkNPRModelReader.h"
 #include "vtkNPROFFReader.h"
-#include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
-#include "vtkStringOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkStringOutputWindow.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <cmath>
@@ -57,8 +57,8 @@ int main(int argc, char* argv[])
   const GoodCase good[] = { { "cube.stl", 36, 12 }, { "cube_binary.stl", 36, 12 },
     { "cube.obj", 8, 6 }, { "cube.ply", 8, 6 }, { "cube_binary.ply", 8, 6 }, { "cube.vtp", 8, 6 },
     { "cube.vtk", 8, 6 }, { "cube_hexahedron.vtk", 8, 6 }, { "cube.gltf", 8, 12 },
-    { "cube.glb", 8, 12 }, { "cube.off", 8, 6 }, { "cube_colors.off", 8, 6 },
-    { "CUBE_UPPER.OFF", 8, 6 } };
+    { "cube.glb", 8, 12 }, { "cube_external.gltf", 8, 12 }, { "cube.off", 8, 6 },
+    { "cube_colors.off", 8, 6 }, { "CUBE_UPPER.OFF", 8, 6 } };
   // An upper-case extension is the same format.
   {
     std::ifstream in(dir + "/cube.off");
@@ -71,11 +71,14 @@ int main(int argc, char* argv[])
       (std::string(c.File) == "CUBE_UPPER.OFF" ? std::string(argv[2]) : dir) + "/" + c.File;
     vtkSmartPointer<vtkNPRModelReader> reader = Read(path);
     vtkPolyData* out = reader->GetOutput();
-    std::cout << c.File << ": " << out->GetNumberOfPoints() << " points, " << out->GetNumberOfCells()
-              << " cells " << reader->GetErrorMessage() << "\n";
-    NPR_CHECK(std::string(reader->GetErrorMessage()).empty(), c.File << ": " << reader->GetErrorMessage());
-    NPR_CHECK(out->GetNumberOfPoints() == c.Points, c.File << ": " << out->GetNumberOfPoints() << " points");
-    NPR_CHECK(out->GetNumberOfCells() == c.Cells, c.File << ": " << out->GetNumberOfCells() << " cells");
+    std::cout << c.File << ": " << out->GetNumberOfPoints() << " points, "
+              << out->GetNumberOfCells() << " cells " << reader->GetErrorMessage() << "\n";
+    NPR_CHECK(
+      std::string(reader->GetErrorMessage()).empty(), c.File << ": " << reader->GetErrorMessage());
+    NPR_CHECK(out->GetNumberOfPoints() == c.Points,
+      c.File << ": " << out->GetNumberOfPoints() << " points");
+    NPR_CHECK(
+      out->GetNumberOfCells() == c.Cells, c.File << ": " << out->GetNumberOfCells() << " cells");
     double bounds[6];
     out->GetBounds(bounds);
     NPR_CHECK(bounds[0] == 0 && bounds[1] == 1 && bounds[2] == 0 && bounds[3] == 1 &&
@@ -88,14 +91,15 @@ int main(int argc, char* argv[])
     vtkNew<vtkNPROFFReader> off;
     off->SetFileName((dir + "/cube_colors.off").c_str());
     off->Update();
-    auto* colors = vtkUnsignedCharArray::SafeDownCast(off->GetOutput()->GetPointData()->GetScalars());
+    auto* colors =
+      vtkUnsignedCharArray::SafeDownCast(off->GetOutput()->GetPointData()->GetScalars());
     NPR_CHECK(colors && colors->GetNumberOfComponents() == 4, "COFF colours missing");
     if (colors)
     {
       NPR_CHECK(colors->GetValue(4 * 1 + 0) == 255 && colors->GetValue(4 * 1 + 1) == 128 &&
           colors->GetValue(4 * 1 + 2) == 64,
-        "COFF colour of vertex 1 is " << int(colors->GetValue(4)) << ","
-                                      << int(colors->GetValue(5)) << "," << int(colors->GetValue(6)));
+        "COFF colour of vertex 1 is " << int(colors->GetValue(4)) << "," << int(colors->GetValue(5))
+                                      << "," << int(colors->GetValue(6)));
     }
     NPR_CHECK(vtkNPROFFReader::CanReadFile((dir + "/cube.off").c_str()), "CanReadFile(cube.off)");
     NPR_CHECK(!vtkNPROFFReader::CanReadFile((dir + "/cube.obj").c_str()), "CanReadFile(cube.obj)");
@@ -106,11 +110,15 @@ int main(int argc, char* argv[])
   {
     vtkSmartPointer<vtkNPRModelReader> reader = Read(dir + "/" + file);
     vtkPolyData* out = reader->GetOutput();
-    NPR_CHECK(std::string(reader->GetErrorMessage()).empty(), file << ": " << reader->GetErrorMessage());
-    NPR_CHECK(reader->GetNumberOfDroppedPoints() == 1, file << ": dropped " << reader->GetNumberOfDroppedPoints());
-    NPR_CHECK(reader->GetNumberOfDroppedCells() == 1, file << ": dropped cells " << reader->GetNumberOfDroppedCells());
+    NPR_CHECK(
+      std::string(reader->GetErrorMessage()).empty(), file << ": " << reader->GetErrorMessage());
+    NPR_CHECK(reader->GetNumberOfDroppedPoints() == 1,
+      file << ": dropped " << reader->GetNumberOfDroppedPoints());
+    NPR_CHECK(reader->GetNumberOfDroppedCells() == 1,
+      file << ": dropped cells " << reader->GetNumberOfDroppedCells());
     NPR_CHECK(out->GetNumberOfPoints() == 8 && out->GetNumberOfCells() == 6,
-      file << ": " << out->GetNumberOfPoints() << " points, " << out->GetNumberOfCells() << " cells");
+      file << ": " << out->GetNumberOfPoints() << " points, " << out->GetNumberOfCells()
+           << " cells");
     NPR_CHECK(std::string(reader->GetWarningMessage()).find("NaN/Inf") != std::string::npos,
       file << ": no warning");
     double bounds[6];
@@ -119,13 +127,37 @@ int main(int argc, char* argv[])
       file << ": bounds not finite");
   }
 
+  // Partly bad files: what is valid is kept, with one warning saying what was dropped.
+  {
+    vtkSmartPointer<vtkNPRModelReader> reader = Read(dir + "/part_nan.obj");
+    const std::string warning = reader->GetWarningMessage();
+    NPR_CHECK(std::string(reader->GetErrorMessage()).empty(),
+      "part_nan.obj: " << reader->GetErrorMessage());
+    NPR_CHECK(reader->GetOutput()->GetNumberOfCells() == 1 &&
+        reader->GetNumberOfDroppedPoints() == 2 && reader->GetNumberOfDroppedCells() == 2,
+      "part_nan.obj: " << reader->GetOutput()->GetNumberOfCells() << " cells kept, dropped "
+                       << reader->GetNumberOfDroppedPoints() << " points, "
+                       << reader->GetNumberOfDroppedCells() << " cells");
+    NPR_CHECK(warning.find("dropped 2 points with NaN/Inf") != std::string::npos &&
+        warning.find("part_nan.obj") != std::string::npos,
+      "part_nan.obj: warning '" << warning << "'");
+    reader = Read(dir + "/part_bad_index.vtp");
+    NPR_CHECK(reader->GetOutput()->GetNumberOfCells() == 5 &&
+        reader->GetNumberOfOutOfRangeCells() == 1 &&
+        std::string(reader->GetWarningMessage())
+            .find("1 cells that use a point index past the 8 points") != std::string::npos,
+      "part_bad_index.vtp: " << reader->GetOutput()->GetNumberOfCells() << " cells, warning '"
+                             << reader->GetWarningMessage() << "'");
+  }
+
   mkdir((std::string(argv[2]) + "/a_directory.ply").c_str(), 0755);
   const BadCase bad[] = { { "missing.stl", "no such file" },
     { "../a_directory.ply", "is a directory" }, { "empty.stl", "is empty" },
     { "garbage.stl", "malformed binary STL" }, { "truncated.ply", "truncated" },
     { "bad_index.ply", "uses vertex 99" }, { "bad.vtp", "malformed or unreadable vtp" },
-    { "bad.gltf", "malformed or unreadable gltf" }, { "no_geometry.obj", "contains no geometry" },
-    { "cube.xyz", "unknown model format '.xyz'" }, { "all_nan.off", "no cell is left" },
+    { "bad.gltf", "malformed glTF file: invalid JSON: Line 2, Column 1" },
+    { "no_geometry.obj", "contains no geometry" }, { "cube.xyz", "unknown model format '.xyz'" },
+    { "all_nan.off", "no cell is left" },
     { "bad_keyword.off", "bad_keyword.off:1: 'OFX' is no OFF keyword" },
     { "bad_count.off", "bad_count.off:2: 'one' is not an integer" },
     { "bad_index.off", "face index 7 is out of range" },
@@ -133,8 +165,7 @@ int main(int argc, char* argv[])
     { "short_face.off", "face line lists 2 indices of 3" },
     { "truncated.off", "unexpected end of file: expected a face line" },
     { "trailing.off", "unexpected content after the last face" },
-    { "binary.off", "binary OFF is not supported" },
-    { "four_d.off", "4D and n-dimensional" } };
+    { "binary.off", "binary OFF is not supported" }, { "four_d.off", "4D and n-dimensional" } };
   // Errors are expected below: keep VTK's own report of them off the log.
   vtkNew<vtkStringOutputWindow> quiet;
   vtkOutputWindow::SetInstance(quiet);

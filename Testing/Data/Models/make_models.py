@@ -132,3 +132,47 @@ write("four_d.off", "4OFF\n3 1 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n")
 write("empty.stl", "")
 write("garbage.stl", bytes(range(256)) * 3, "wb")
 write("cube.xyz", "0 0 0\n")
+
+# Hardening cases (Documentation/input.md): each reproduces a crash or a silent blank image of
+# npr-render before the checks.
+write("short_points.vtk", "# vtk DataFile Version 3.0\nshort\nASCII\nDATASET POLYDATA\nPOINTS 8 float\n"
+      "0 0 0\n1 0 0\n1 1 0\nPOLYGONS 1 4\n3 0 1 7\n")
+write("bad_index.vtk", cube_vtk := open("cube.vtk").read().replace("4 3 0 4 7", "4 3 0 4 9"))
+write("all_nan.obj", "v nan nan nan\nv nan nan nan\nv nan nan nan\nf 1 2 3\n")
+write("bad_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")
+write("bad_negative_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -9\n")
+# One face on finite points (drawn), two on NaN/Inf points (dropped with one warning).
+write("part_nan.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\nv 0 inf 0\nf 1 2 3\nf 1 4 5\nf 2 4 5\n")
+write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n")  # every point on one line: nothing to draw
+pieces = f"""<?xml version="1.0"?>
+<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">
+  <PolyData>
+    <Piece NumberOfPoints="8" NumberOfPolys="6">
+      <Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">{pts}</DataArray></Points>
+      <Polys>
+        <DataArray type="Int32" Name="connectivity" format="ascii">{{conn}}</DataArray>
+        <DataArray type="Int32" Name="offsets" format="ascii">{offs}</DataArray>
+      </Polys>
+    </Piece>
+  </PolyData>
+</VTKFile>
+"""
+write("part_bad_index.vtp", pieces.format(conn=conn.rsplit(" ", 1)[0] + " 12"))  # 5 faces drawn
+write("bad_index.vtp", pieces.format(conn=" ".join(str(int(i) + 8) for i in conn.split())))
+
+
+def gltf_file(name, change, uri="data:application/octet-stream;base64," + base64.b64encode(blob).decode()):
+    document = gltf(uri)
+    change(document)
+    write(name, json.dumps(document))
+
+
+gltf_file("missing_buffer.gltf", lambda d: None, uri="missing_buffer.bin")
+write("short_buffer.bin", blob[:100], "wb")
+gltf_file("short_buffer.gltf", lambda d: None, uri="short_buffer.bin")
+gltf_file("bad_accessor.gltf", lambda d: d["accessors"][0].update(count=9))
+gltf_file("bad_indices.gltf", lambda d: d["accessors"][0].update(count=7))
+gltf_file("node_cycle.gltf", lambda d: d.update(nodes=[{"mesh": 0, "children": [1]}, {"children": [0]}]))
+write("cube_external.bin", blob, "wb")
+gltf_file("cube_external.gltf", lambda d: None, uri="cube_external.bin")
+write("bad_length.glb", open("cube.glb", "rb").read()[:-4], "wb")
