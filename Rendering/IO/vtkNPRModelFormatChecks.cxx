@@ -1,5 +1,7 @@
 #include "vtkNPRModelFormatChecks.h"
 
+#include "vtkVersionMacros.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -422,6 +424,16 @@ std::string vtkNPRModelFormatChecks::CheckOBJ(
           {
             return where + "'" + token + "' is not a valid " + keyword + " corner";
           }
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0) && VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 3, 1)
+          // VTK 9.3.0 resolves a relative texture coordinate against the normals' count and a
+          // relative normal against the texture coordinates' (fixed in 9.3.1): it crashes or
+          // reads the wrong one.
+          if (index < 0 && kind > 0)
+          {
+            return where + keyword + " uses a relative " + kinds[kind] + " index (" +
+              std::to_string(index) + "), which VTK 9.3.0's OBJ reader misreads";
+          }
+#endif
           if (index < 0 && -index > counts[kind])
           {
             return where + keyword + " uses " + kinds[kind] + " " + std::to_string(index) +
