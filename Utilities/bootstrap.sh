@@ -14,6 +14,9 @@
 #   fuzz           Debian 12: npr-fuzz-readers (AddressSanitizer, UBSan) on mutants of every model
 #                  format for NPR_FUZZ_SECONDS (default 120) from NPR_FUZZ_SEED (default 1);
 #                  mutants that crash or hang land in $NPR_BUILD_DIR/fuzz/crashes
+#   sanitize       Debian 12, VTK 9.1, built with AddressSanitizer and UndefinedBehaviorSanitizer
+#                  (NPR_SANITIZE=ON): all tests but the long-running ones, in
+#                  $NPR_BUILD_DIR/sanitize; NPR_SKIP_SANITIZE=1 leaves it out (quick local runs)
 #   vtk-9.3        Debian 13, VTK 9.3: the same build and tests in a chroot, in $NPR_BUILD_DIR/vtk-9.3
 #   vtk-9.6        Debian unstable, VTK 9.6 (no OSMesa): the same, in $NPR_BUILD_DIR/vtk-9.6
 #   paraview-5.11  Debian 12, ParaView 5.11: the plugin and its tests, in $NPR_BUILD_DIR/paraview-5.11
@@ -55,8 +58,14 @@ if ((${#missing[@]})); then
   "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-all_stages=(host fuzz vtk-9.3 vtk-9.6 paraview-5.11 paraview-5.13 paraview-6.1)
+all_stages=(host fuzz sanitize vtk-9.3 vtk-9.6 paraview-5.11 paraview-5.13 paraview-6.1)
 IFS=, read -r -a stages <<<"${NPR_STAGES:-$(IFS=,; echo "${all_stages[*]}")}"
+if [[ ${NPR_SKIP_SANITIZE:-0} != 0 ]]; then
+  for i in "${!stages[@]}"; do
+    if [[ ${stages[i]} == sanitize ]]; then unset 'stages[i]'; fi
+  done
+  stages=("${stages[@]}")
+fi
 for stage in "${stages[@]}"; do
   if [[ " ${all_stages[*]} " != *" $stage "* ]]; then
     echo "bootstrap: unknown stage '$stage' in NPR_STAGES (${all_stages[*]})" >&2
@@ -137,6 +146,28 @@ run_fuzz_stage() {
   return "${PIPESTATUS[0]}"
 }
 
+# The host build with ASan and UBSan (cmake/vtkNPRSanitize.cmake), in a build folder of its own:
+# every test but the long-running ones (label LongRunning: a thousand windows take minutes under
+# ASan, and ASan's quarantine and shadow memory make their resident-memory bound meaningless;
+# LeakSanitizer checks every other test's process for leaks). The sanitizers' options and the
+# suppressions file come with each test's environment (Documentation/testing.md).
+run_sanitize_stage() {
+  local sanitize_dir=$build_dir/sanitize
+  {
+    if [[ ! -f $sanitize_dir/CMakeCache.txt ]]; then
+      cmake -S "$source_dir" -B "$sanitize_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+        -DNPR_SANITIZE=ON -DPython3_EXECUTABLE=/usr/bin/python3
+    fi
+    cmake --build "$sanitize_dir" -j "$(nproc)"
+  } 2>&1 | tee "$build_dir/logs/sanitize.log"
+  if ((PIPESTATUS[0] != 0)); then
+    return 1
+  fi
+  ctest --test-dir "$sanitize_dir" --output-on-failure -j 2 -LE LongRunning 2>&1 |
+    tee -a "$build_dir/logs/sanitize.log"
+  return "${PIPESTATUS[0]}"
+}
+
 # Waits (once) for the set-up of a chroot started by start_chroot_setups.
 wait_chroot_setup() {
   local name=$1
@@ -188,6 +219,8 @@ run_test_stages() {
       run_host_stage && stage_status[$stage]=passed || stage_status[$stage]=FAILED
     elif [[ $stage == fuzz ]]; then
       run_fuzz_stage && stage_status[$stage]=passed || stage_status[$stage]=FAILED
+    elif [[ $stage == sanitize ]]; then
+      run_sanitize_stage && stage_status[$stage]=passed || stage_status[$stage]=FAILED
     else
       run_chroot_stage "$stage" && stage_status[$stage]=passed || stage_status[$stage]=FAILED
     fi
