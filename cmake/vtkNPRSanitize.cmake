@@ -19,9 +19,12 @@ if (NOT CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
 endif ()
 
 # Every undefined-behaviour report aborts the program (a test fails), as an ASan report does.
+# float-cast-overflow (not part of "undefined" in gcc): a NaN or out-of-range double converted to
+# an integer, e.g. a pixel coordinate from a degenerate projection.
 set(NPR_SANITIZE_FLAGS
-  -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
-set(NPR_SANITIZE_LINK_FLAGS -fsanitize=address,undefined)
+  -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer
+  -fno-sanitize-recover=all)
+set(NPR_SANITIZE_LINK_FLAGS -fsanitize=address,undefined,float-cast-overflow)
 add_compile_options(${NPR_SANITIZE_FLAGS})
 add_link_options(${NPR_SANITIZE_LINK_FLAGS})
 
