@@ -37,7 +37,7 @@ if (NOT EXISTS "${npr_asan_library}")
 endif ()
 set(NPR_ASAN_LIBRARY "${npr_asan_library}")
 
-# The suppressions cover Mesa, LLVM, VTK, EGL and glibc only, each entry explained in the file.
+# The suppressions cover other projects' code only (Mesa, VTK, libpng), each entry explained there.
 set(npr_sanitizers_dir "${PROJECT_SOURCE_DIR}/Utilities/sanitizers")
 set(npr_asan_options "halt_on_error=1:check_initialization_order=1")
 set(NPR_SANITIZE_NO_LEAKS "ASAN_OPTIONS=${npr_asan_options}:detect_leaks=0")

@@ -64,7 +64,7 @@ constexpr bool CheckResidentMemory = true;
 constexpr bool CheckResidentMemory = true;
 #endif
 
-// The resident set of this process in bytes (/proc/self/statm), after returning the heap's free
+// The resident set of this process in MiB (/proc/self/statm), after returning the heap's free
 // memory to the system (malloc_trim), so that what is measured is memory in use, not free
 // blocks glibc keeps.
 double ResidentMiB()
