@@ -27,6 +27,7 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkVersionMacros.h"
 
 #include <malloc.h>
 #include <unistd.h>
@@ -151,14 +152,22 @@ bool WindowCycle(int cycle, std::string& errors, bool& drawn)
   scene.Window->Render();
   errors += OpenGLErrors(scene.Window);
 
-  // Release the pass alone, or everything the window holds, and draw again.
+  // Release the pass alone, or everything the window (from VTK 9.4 on, the renderer) holds, and
+  // draw again. VTK 9.6's own window cannot draw after its ReleaseGraphicsResources, with or
+  // without vtkNPR ("Hardware does not support the number of textures defined", OpenGL errors
+  // from glTexImage2D, then an assertion in vtkTextureObject::Bind), so from 9.4 on, where the
+  // windows are VTK's, the renderer releases its pass and props instead.
   if (cycle % 2)
   {
     scene.Pass->ReleaseGraphicsResources(scene.Window);
   }
   else
   {
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 4, 0)
+    scene.Renderer->ReleaseGraphicsResources(scene.Window);
+#else
     scene.Window->ReleaseGraphicsResources(scene.Window);
+#endif
   }
   scene.Window->Render();
   errors += OpenGLErrors(scene.Window);
