@@ -46,6 +46,15 @@ int TypeSize(const std::string& type, bool& isSigned, bool& isFloat)
   return it == sizes.end() ? 0 : it->second;
 }
 
+// A number read as a double, as a long long; fallback when it is not finite or out of long long's
+// range, where the conversion is undefined behaviour (UBSan: "1e+20 is outside the range of
+// representable values of type 'long long int'", a fuzzed PLY face index).
+long long ToLongLong(double value, long long fallback)
+{
+  return std::isfinite(value) && value > -9.2e18 && value < 9.2e18 ? static_cast<long long>(value)
+                                                                   : fallback;
+}
+
 // Reads one binary value of the property's type as an integer.
 bool ReadInteger(std::istream& in, int size, bool isSigned, bool swap, long long& value)
 {
@@ -250,7 +259,7 @@ std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
             ok = static_cast<bool>(row >> token);
             const double value = ok ? std::strtod(token.c_str(), &end) : 0.0;
             ok = ok && end != token.c_str() && *end == '\0';
-            index = ok && std::isfinite(value) ? static_cast<long long>(value) : -1;
+            index = ok ? ToLongLong(value, -1) : -1;
           }
           else if (property.Float)
           {
@@ -742,7 +751,7 @@ std::string vtkNPRModelFormatChecks::CheckLegacyVTK(const std::string& fileName)
           return bad + keyword + " declares " + std::to_string(second) + " values but holds " +
             std::to_string(i);
         }
-        values.push_back(static_cast<long long>(value));
+        values.push_back(ToLongLong(value, -1));
       }
       offsets.push_back(0);
       for (size_t i = 0; i < values.size(); i += static_cast<size_t>(values[i]) + 1)
@@ -788,7 +797,7 @@ std::string vtkNPRModelFormatChecks::CheckLegacyVTK(const std::string& fileName)
             return bad + keyword + " " + name + " declares " + std::to_string(count) +
               " values but holds " + std::to_string(i);
           }
-          array->push_back(static_cast<long long>(value));
+          array->push_back(ToLongLong(value, -1));
         }
       }
       for (size_t i = 0; i < offsets.size(); ++i)
