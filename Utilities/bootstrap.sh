@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Sets up a Debian 12 machine for vtkNPR, builds it, then renders the examples or runs the tests.
 #
 #   bash Utilities/bootstrap.sh examples   # install what is missing, build, render the example

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Debian chroots in which vtkNPR is built and tested against other VTK and ParaView releases.
 #
 #   bash Utilities/debian-chroot.sh NAME setup            # create it, install what is missing

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The ParaView plugin "Render View (NPR)" (Plugin/), built against ParaView's own VTK; the passes
 # module (NPR::RenderingNPR) is compiled into it from Rendering/Passes.
 set(CMAKE_LIBRARY_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Debian's ParaView 5.13 renames its Python extension modules after CMake installed them
 # (vtkmodules/vtkCommonCore.so -> vtkCommonCore.cpython-313-x86_64-linux-gnu.so), so the export
 # sets VTKPython, ParaViewPython and ParaViewPythonIncubator name files that do not exist, and the

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 # What the installed VTK provides, decided once for the module, its tests, the CLI and the
 # ParaView plugin. Expects find_package(VTK) (or ParaView's) to have run. Sets:
 #   NPR_OWN_HEADLESS_WINDOWS  ON when the module compiles its own EGL and OSMesa windows: VTK 9.1

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 # NPR_SANITIZE: builds every target of the project (the modules, their Python modules, the
 # programs and the tests) with AddressSanitizer and UndefinedBehaviorSanitizer. VTK, Mesa and
 # Python stay as installed (not instrumented); ASan still sees their heap through its malloc.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Sourced by the make_images.sh scripts (". ../render_common.sh" with the script's own
 # arguments): checks them, moves to the repository root (the model paths are relative to it) and
 # defines render NAME.png ARGS...: npr-render ARGS -o NAME.png, written into the calling script's

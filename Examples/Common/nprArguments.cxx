@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 #include "nprArguments.h"
 
 #include <cmath>
@@ -22,6 +24,13 @@ bool nprArgumentReader::Next()
   if (this->Argument == "-h" || this->Argument == "--help")
   {
     std::cout << this->Help;
+    std::exit(0);
+  }
+  if (this->Argument == "--version")
+  {
+    // The program's name as called (without its folder) and vtkNPR's version (NPR_VERSION).
+    const std::string program = this->Arguments[0];
+    std::cout << program.substr(program.find_last_of('/') + 1) << " " << NPR_VERSION << "\n";
     std::exit(0);
   }
   return true;

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Command-line parsing shared by npr-render and npr-benchmark: the walk over argv and the parsers
 // of numbers, integers, sizes, colours and lists. Every problem is an nprUsageError whose text
 // names the flag and what it expects; the programs print it as one line and exit with status 2.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // A model as the command-line programs draw it: read with vtkNPRModelReader, shaded with
 // vtkNPRShadingNormals' normals, in one of a few surface colours.
 #ifndef nprModel_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // VTK's output window for the command-line programs: VTK's messages are several lines each
 // ("ERROR: In file, line N\nvtkClass (0x...): message"), where the programs report one line per
 // problem. It keeps the last message, summarised, for the program's own error line, and prints

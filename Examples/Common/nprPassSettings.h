@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The settings of a vtkNPRPass that the command-line programs expose, and the pass made from
 // them. The defaults are the passes' own.
 #ifndef nprPassSettings_h

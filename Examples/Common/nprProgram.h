@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The frame of a command-line program: VTK's messages through nprOutputWindow, and every error
 // as one line "PROGRAM: error: ..." on stderr with exit status 2 (nprUsageError) or 1.
 #ifndef nprProgram_h

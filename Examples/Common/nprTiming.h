@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Timing of frames: wall-clock durations and their medians.
 #ifndef nprTiming_h
 #define nprTiming_h

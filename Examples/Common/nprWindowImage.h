@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Images out of a render window, and PNG files.
 #ifndef nprWindowImage_h
 #define nprWindowImage_h

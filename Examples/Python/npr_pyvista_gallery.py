@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The six vtkNPR styles on a PyVista scene, tiled into one PNG (the gallery of pyvista.md).
 
     PYTHONPATH=build/lib/python3/dist-packages python3 Examples/Python/npr_pyvista_gallery.py \\

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Two scenes as scientists build them, in every vtkNPRPass style, headless, tiled into one PNG.
 
     PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 \

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Toon shading and sketchy drawing of one model with vtkNPRPass, rendered headless to a PNG.
 
     PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/npr_toon_sketch.py \

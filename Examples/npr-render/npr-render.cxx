@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // npr-render: renders model files headless into a PNG, with the vtkNPR styles.
 // Run `npr-render --help` for the flags; Documentation/cli.md describes them.
 #include "nprCameraJson.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Reads and writes the camera file of npr-render --camera-in / --camera-out:
 // {"position":[x,y,z],"focal_point":[x,y,z],"view_up":[x,y,z],"view_angle":30.0,
 //  "parallel_projection":false,"parallel_scale":1.0,"clipping_range":[near,far],"size":[w,h]}

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 #include "nprRenderOptions.h"
 
 #include "nprArguments.h"
@@ -33,6 +35,7 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
   --camera-out FILE        write the camera used (JSON)
   --frames N               time N frames after a warm-up; print one JSON line
   -h, --help               this text
+  --version                the program and vtkNPR version
 
 Lines (--style edges, toon+edges and sketch):
   --lines LIST             line types drawn, comma separated: silhouettes, creases,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNPRViewPass
  * @brief   The vtkNPR styles in the image-processing slot of a ParaView render view.

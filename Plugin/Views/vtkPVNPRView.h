@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkPVNPRView
  * @brief   ParaView render view with the vtkNPR styles ("Render View (NPR)").

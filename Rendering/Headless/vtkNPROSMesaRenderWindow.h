@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNPROSMesaRenderWindow
  * @brief   Headless render window on an OSMesa (Mesa off-screen) context.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNPRRenderWindowFactory
  * @brief   The one way programs and tests get a render window: EGL, OSMesa or X.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Structural checks of glTF 2.0 files (.gltf and .glb) run before vtkGLTFReader, which trusts
 // what the JSON says: a buffer whose file is missing or shorter than its byteLength, an accessor
 // past the end of its buffer view or an index past the vertex count make it read out of bounds

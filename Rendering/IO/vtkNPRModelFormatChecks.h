@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Structural checks run before VTK's own readers, which trust their input: vtkPLYReader reads
 // past the end of a truncated file (and crashes), vtkSTLReader takes any bytes as binary STL,
 // vtkOBJReader keeps face indices past the vertex count and reads "nan" as a number of its own,

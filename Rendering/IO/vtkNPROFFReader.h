@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNPROFFReader
  * @brief   Strict reader of Geomview OFF meshes (VTK 9.1 has none).

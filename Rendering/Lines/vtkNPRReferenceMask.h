@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNPRReferenceMask
  * @brief   The ground truth of a line drawing: a renderer's visible feature lines, as a pixel mask.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNPREdgePass
  * @brief   Silhouette, crease and object-contour lines from a G-buffer, over the shaded image.

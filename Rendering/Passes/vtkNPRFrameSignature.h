@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // What a frame of the G-buffer is drawn from, and where its props land on screen. Private to the
 // passes module (vtkNPRGBufferPass): a frame with the same signature draws the same image, and
 // only the rectangle the props cover needs the full-screen passes.

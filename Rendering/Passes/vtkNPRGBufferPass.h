@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNPRGBufferPass
  * @brief   Draws the opaque geometry once into a G-buffer that image-space effects read.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Draws the line and point primitives of the opaque props, and the annotations (vtkNPROpaquePass),
 // as VTK does, after a G-buffer effect left them out (vtkNPRGBufferPass), depth-tested against the
 // effect's depth sprite: they keep their own colours and widths, and hide behind the styled

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Draws the opaque props as vtkOpaquePass does, one top-level prop at a time, and says which one
 // is being drawn (GetPropBeingDrawn). The passes' shader hooks only see the actor a mapper draws
 // for: for a vtkFollower's label, a vtkLODActor or a vtkCubeAxesActor that is an inner actor, not

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * The OpenGL declarations of the VTK in use, through the loader VTK itself uses: GLEW
  * (`vtk_glew.h`) up to VTK 9.3, glad (`vtk_glad.h`) from VTK 9.4 on. The passes call only

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Helpers shared by the module's passes. Private to the module.
 #ifndef vtkNPRPassUtilities_h
 #define vtkNPRPassUtilities_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // A full-screen quad program of one of the module's fragment shaders, compiled for a set of
 // compile-time defines (llvmpipe runs both sides of uniform branches, so variants are compiled
 // rather than switched by uniforms). Private to the module's passes.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNPRSketchPass
  * @brief   Sketchy drawing (Nienhaus & Döllner 2004): lines and fills that wobble like a hand

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNPRToonPass
  * @brief   Toon shading: the delegate's surfaces lit in a few flat bands instead of smoothly.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The benchmark's error figures (nprEdgeMetrics): the distance transform against brute force,
 // and precision, recall, F1 and mean distance on masks whose answers are known.
 #include "nprEdgeMetrics.h"

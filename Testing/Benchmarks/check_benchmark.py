@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Smoke test of npr-benchmark: runs it with --quick (or --stress --quick) and checks that the
 files are written and that every figure is sane (F1 in [0, 1], no NaN, positive times).
 

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes the benchmark's 1M-triangle scene: the bunny (75,408 triangles) refined twice by Loop
 subdivision (1,206,528 triangles), as a binary PLY. usage: make_dense_bunny.py BUNNY.ply OUT.ply"""
 import sys

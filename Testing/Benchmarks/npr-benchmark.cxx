@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // npr-benchmark: run time against error of every line method, for a set of scenes and cameras,
 // against the object-space reference mask. Documentation/benchmarks.md describes the scenes,
 // methods and figures; `npr-benchmark --help` the flags.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // npr-benchmark's line methods: the edge pass at each G-buffer encoding and two threshold
 // settings, the ink pass, and object-space feature lines.
 #ifndef nprBenchmarkMethods_h

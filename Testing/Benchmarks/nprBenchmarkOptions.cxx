@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 #include "nprBenchmarkOptions.h"
 
 #include "nprArguments.h"
@@ -36,6 +38,7 @@ each scene, against the unit case; writes OUT/stress.csv and OUT/stress.md.
                      case or a G-buffer pixel is non-finite or out of [near, far]
   --save-masks       also write each reference and method mask as OUT/masks/*.png
   -h, --help         this text
+  --version          the program and vtkNPR version
 )";
 
 void MakeFolder(const std::string& path)

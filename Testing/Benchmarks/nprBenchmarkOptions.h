@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // npr-benchmark's command line: its options, --help and their parsing.
 #ifndef nprBenchmarkOptions_h
 #define nprBenchmarkOptions_h

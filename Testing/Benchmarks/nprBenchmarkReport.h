@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // What npr-benchmark writes: the rows of figures as CSV, the aggregated Markdown table and the
 // plot of run time against F1 (VTK charts, rendered headless).
 #ifndef nprBenchmarkReport_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The benchmark's scenes, cameras and the stress variants of a mesh (npr-benchmark).
 #ifndef nprBenchmarkScenes_h
 #define nprBenchmarkScenes_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // What npr-benchmark measures on: one window, one renderer, the mesh, the methods' passes and
 // the object-space reference; and the line masks it reads back.
 #ifndef nprBenchmarkStage_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // npr-benchmark --stress: the edge pass on scaled, translated, near/far-stretched and degenerate
 // versions of each scene, against the unit case (OUT/stress.csv and OUT/stress.md).
 #ifndef nprBenchmarkStress_h

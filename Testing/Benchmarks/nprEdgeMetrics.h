@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Accuracy of an edge mask against a reference mask, in pixels (the benchmark's error figures).
 //
 // Masks are width x height bytes, row by row; a non-zero byte is a line pixel. With the method's

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """npr-render's behaviour: camera files round-trip exactly, --frames prints its JSON line, NaN
 points give a warning, and every bad input gives one clear error line and a non-zero exit."""
 import argparse
@@ -16,6 +18,7 @@ osmesa.add_argument("--osmesa-in-npr-render", action="store_true")
 osmesa.add_argument("--no-osmesa", action="store_true")
 parser.add_argument("--data", required=True)
 parser.add_argument("--out", required=True)
+parser.add_argument("--expect-version", required=True, help="the project's version")
 args = parser.parse_args()
 os.makedirs(args.out, exist_ok=True)
 models = os.path.join(args.data, "Models")
@@ -37,6 +40,12 @@ def check(condition, message):
 
 def out(name):
     return os.path.join(args.out, name)
+
+
+# --version: the program's name and the project's version, exit status 0.
+rc, stdout, err = run("--version")
+check(rc == 0 and stdout == "npr-render %s\n" % args.expect_version,
+      "--version prints 'npr-render %s' (got %r, %r)" % (args.expect_version, stdout, err))
 
 
 # Camera round trip: the camera written is the camera used; rendering with it reproduces the

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 # cmake -DPROGRAM=path -P CheckLinks.cmake: PROGRAM's shared libraries (DT_NEEDED) include
 # vtkRenderingNPR and no other vtkNPR library.
 execute_process(COMMAND readelf -d "${PROGRAM}" OUTPUT_VARIABLE dynamic RESULT_VARIABLE result)

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Renders a sphere headless with an installed vtkNPR, in the edge style, and counts the pixels it
 // covers and its outline's dark pixels.
 #include "vtkActor.h"

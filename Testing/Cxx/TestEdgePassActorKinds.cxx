@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The edge pass over every kind of opaque actor: point normals, cell normals only, no normals,
 // flat, unlit, zero-length normals, scalar colours, a texture, the wireframe and points
 // representations, a composite (multiblock) mapper and glyphs. Each is drawn; each surface has

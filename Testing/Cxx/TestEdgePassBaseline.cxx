@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Baseline images of the edge style: the CAD part and the bunny with blue creases, against
 // Testing/Data/Baseline/edges_*.png (the comparison: nprTesting.h).
 //

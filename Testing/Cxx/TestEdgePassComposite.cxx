@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // How the edge pass's lines and depth sprite (vtkNPRPass) compose with the rest of a scene: a
 // translucent plane in front of the lines tints them and one behind does not, with and without
 // depth peeling; a renderer on a higher layer and a volume are depth-tested against the sprite, a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // What the G-buffer pass (vtkNPRGBufferPass) draws and keeps for the edge pass: an unchanged
 // frame reuses the G-buffer and the line image, every kind of change redraws once, a line setting
 // recomputes the lines only; only the channels the lines need are written, and nothing for an

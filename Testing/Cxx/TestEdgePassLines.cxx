@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The lines of the edge pass (vtkNPREdgePass over vtkNPRGBufferPass) where their place can be
 // stated: a cube's visible edges projected analytically, in perspective and parallel; no false
 // line on a plane seen at a grazing angle; the id contour between touching objects, and its

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The edge pass in several windows of one process, through resizes and
 // ReleaseGraphicsResources: lines every time.
 //

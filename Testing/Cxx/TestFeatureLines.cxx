@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Object-space feature lines (vtkNPRFeatureLines) checked against what can be stated
 // analytically: a box's creases; its silhouettes from chosen viewpoints, also through an actor
 // matrix; the boundaries of an open box and a non-manifold fin; the edge adjacency built once per

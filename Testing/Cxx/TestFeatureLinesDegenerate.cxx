@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Object-space feature lines (vtkNPRFeatureLines) on degenerate input: zero-area and 1- and
 // 2-point faces, points split along the sharp edges, faces wound the other way, NaN and infinite
 // coordinates, empty input and points without faces.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The baseline comparison itself can fail: identical and one-pixel-shifted images pass, a changed
 // block or a different size fails and leaves the rendered and diff images behind, and
 // NPR_UPDATE_BASELINES writes the baseline instead of comparing.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Headless render windows, per backend: a lit object really is rendered (pixels read back),
 // several windows one after another and two alive at once work, and every way a backend can be
 // unavailable gives a clear error instead of a crash or a black image.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The inking pass (vtkNPRInkPass) and the G-buffer encodings of the edge pass (half, packed 8-
 // and 16-bit depth+normal), checked with numbers: ink only along a cube's outline, as wide as
 // asked, no crease, OpenGL state restored; the mask; each encoding's lines against the float

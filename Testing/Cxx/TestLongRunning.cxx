@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Long-running processes: a thousand windows one after another, and five hundred frames of a
 // changing scene in one window, each with vtkNPRPass changing its style all the time. After a
 // warm-up of 50 cycles (frames) the resident memory of the process must stay within a bound, and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkNPRModelReader and vtkNPROFFReader: every supported format reads the unit cube; NaN/Inf
 // points are dropped with their cells; every malformed, empty, missing or unknown file is an
 // error naming the file and the problem, with an empty output and no crash.

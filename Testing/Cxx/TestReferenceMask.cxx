@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The ground-truth mask of the visible feature lines (vtkNPRReferenceMask): a cube's mask against
 // an independent projection of its visible edges, in perspective and parallel; occlusion by
 // another object; what is rebuilt between updates; the same lines and mask far from the origin

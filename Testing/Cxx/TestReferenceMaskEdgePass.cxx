@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The ground-truth mask (vtkNPRReferenceMask) against the lines vtkNPREdgePass draws with the
 // same camera (width 1, no anti-aliasing): on a cube and on the bunny they line up within a pixel.
 //

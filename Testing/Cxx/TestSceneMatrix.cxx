@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Ordinary VTK scenes under every style (issue 19): polygons with point, cell and no normals,
 // lines, points, a wireframe, tubes, an outline around an isosurface, cube axes with grid lines and
 // labels, text, a scalar bar, glyphs, an image actor, a vtkAxesActor, a volume, a translucent actor with and

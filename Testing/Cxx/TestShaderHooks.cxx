@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The shader-template hooks of the passes on the VTK release this build uses. The G-buffer, toon
 // and ink passes add their code after tags of VTK's poly-data shaders (//VTK::Light::Impl,
 // //VTK::TCoord::Impl, //VTK::Output::Dec), which VTK's releases may move or rename. Each case

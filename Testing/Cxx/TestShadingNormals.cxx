@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkNPRShadingNormals: usable normals are kept; a triangle soup is merged and shaded smoothly;
 // zero-length and NaN normals are recomputed with one warning; no faces, no normals.
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Sketchy drawing (vtkNPRSketchPass), checked with numbers: with no uncertainty it equals the
 // edges on flat colours, colour and depth; no line pixel is displaced by more than the
 // uncertainty; the z-buffer is the smaller of the two displaced depth lookups; a second layer is

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Toon shading (vtkNPRToonPass), checked with numbers: the number and values of the shades of a
 // lit sphere (per pixel and per vertex, a user table, zero-length normals, an unlit actor), the
 // bands over scalar colours, and lines over the bands with the G-buffer redrawn when the bands

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Baseline images of the toon, toon+edges and sketch styles: toon (bunny), toon+edges (CAD
 // part), sketch (bunny), sketch on paper with toon fill (CAD part), against
 // Testing/Data/Baseline/{toon,toon_edges,sketch}_*.png (the comparison: nprTesting.h).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The toon, toon+edges and sketch styles (vtkNPRPass) in several windows of one process, through
 // a resize and ReleaseGraphicsResources: the object, and its lines where the style has them,
 // drawn every time.

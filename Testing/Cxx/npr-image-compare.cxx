@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // npr-image-compare IMAGE BASELINE NAME: compares two PNGs with the harness's metric
 // (nprTesting.h); exits 0 when they match. Used by the tests of npr-render's output.
 #include "nprTesting.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Helpers of the tests of vtkNPRFeatureLines and vtkNPRReferenceMask: an axis-aligned box stated
 // analytically, the filter's output as sets of edges, and a window whose renderer a reference mask
 // reads (TestFeatureLines*, TestReferenceMask*).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The vtkNPR test harness: headless windows, pixel statistics and baseline comparison.
 //
 // Baseline comparison (nprCompareWithBaseline, npr-image-compare):

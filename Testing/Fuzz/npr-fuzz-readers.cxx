@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // npr-fuzz-readers: a mutation fuzzer of vtkNPRModelReader over the committed seed files of every
 // format, and the replay of seeds and crash reproducers as a regression test.
 //

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """PyVista programs run as clients of vtknpr.pyvista (run_examples.py), none needing a download.
 
 Two kinds, each a function that builds a pyvista.Plotter and calls show(), as a user's script does:

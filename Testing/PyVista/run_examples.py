@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Runs the PyVista programs of corpus.py with vtknpr.pyvista.enable_npr added, in one style.
 
     run_examples.py STYLE [--output DIR]

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Tests of vtknpr.pyvista: enable_npr and disable_npr on PyVista plotters, off screen.
 
     test_enable_npr.py CASE   (CASE: subplots, settings, compose, toggle, screenshot, snippet, all)

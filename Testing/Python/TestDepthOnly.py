@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkNPRGBufferPass's depth-only mode in plain VTK: any delegate (here a whole
 vtkRenderStepsPass) draws colour and depth, the G-buffer's depth and normals are derived from the
 depth buffer, and vtkNPREdgePass draws silhouettes and creases from them. The lines must cover

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The Python wrapping: vtknpr imports with only PYTHONPATH set, has one submodule per VTK module
 and every class at its top level, renders headless through the EGL window, reads a model, and
 reports unavailable backends as None."""
@@ -8,6 +10,7 @@ import sys
 parser = argparse.ArgumentParser()
 parser.add_argument("data")
 parser.add_argument("--expect-prefix", help="vtknpr must come from this install prefix")
+parser.add_argument("--expect-version", required=True, help="vtknpr.__version__ must be this")
 args = parser.parse_args()
 
 import vtknpr  # noqa: E402  (first: it must pull in the VTK modules it needs by itself)
@@ -32,6 +35,8 @@ for submodule, classes in expected.items():
 headless = importlib.import_module("vtknpr.vtkRenderingHeadlessNPR")
 if hasattr(headless, "vtkNPREGLRenderWindow"):  # VTK 9.1-9.3: the module's own windows
     assert vtknpr.vtkNPROSMesaRenderWindow is headless.vtkNPROSMesaRenderWindow
+
+assert vtknpr.__version__ == args.expect_version, (vtknpr.__version__, args.expect_version)
 
 if args.expect_prefix:
     here = os.path.realpath(vtknpr.__file__)

@@ -1,4 +1,6 @@
 #!/bin/sh
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Regenerates the images of Documentation/classic-techniques.md with the commands shown there.
 #
 #   Documentation/images/classic/make_images.sh build/bin/npr-render

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The screenshots of Documentation/paraview.md, made by pvbatch with the plugin: the test scene
 (Plugin/Testing/Python/nprviewscene.py) in every style of "Render View (NPR)", and the edges
 style with ForceDepthOnly (what a parallel render draws). Run in the ParaView 5.11 chroot, after

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Runs the pvpython snippet of Documentation/paraview.md as written: the first ```python block,
 with pvbatch, in an empty folder, the plugin found through PV_PLUGIN_PATH as the page says. The
 snippet must write npr-toon-edges.png with lines and bands in it. Fails by exception.

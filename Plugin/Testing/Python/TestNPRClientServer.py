@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Client-server smoke test of the NPR plugin: starts a pvserver and a pvpython client connected to
 it; the client loads the plugin on both sides and renders "Render View (NPR)" in the edges style
 twice: on the server (remote rendering, the image sent to the client) and on the client (the

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch test of the NPR plugin: load it, create "Render View (NPR)", show CAD-like sources and
 a contour of the Wavelet source, render every style, check pixels numerically and compare with
 the committed baselines. Fails by exception (pvbatch then exits non-zero).

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The scene and image helpers shared by the plugin's tests (TestNPRView.py, TestNPRClientServer.py)
 and the documentation's screenshot script."""
 from paraview.simple import Box, ColorBy, Contour, CreateView, Cylinder, Show, Wavelet

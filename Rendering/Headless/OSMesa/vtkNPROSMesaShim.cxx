@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Compiled into every program that links NPR::OSMesa (see vtkNPROSMesaRenderWindow.h).
 //
 // Debian's VTK 9.1 gets its OpenGL entry points from GLEW, and GLEW asks glXGetProcAddressARB.

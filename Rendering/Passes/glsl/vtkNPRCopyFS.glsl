@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
 // vtkNPRGBufferPass, depth-only mode: puts the captured image (colour and depth) back into the
 // framebuffer the pass was called with, as its delegate would have left it.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
 // vtkNPRGBufferPass, depth-only mode: the geometry attachment (FLOAT encoding: view depth,
 // packed octahedral normal) derived from a depth buffer alone, for images whose geometry was not

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
 // vtkNPREdgePass, step 2: widens and anti-aliases the line image, composites it over the shaded
 // G-buffer colour and writes the depth sprite (gl_FragDepth).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
 // vtkNPREdgePass, step 1: line pixels from the G-buffer's geometry attachment.
 // Output: r = silhouette, g = crease, b = object contour strength (0..1) on the pixels the line

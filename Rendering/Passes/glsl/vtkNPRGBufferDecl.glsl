@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Declarations injected into a vtkOpenGLPolyDataMapper fragment shader while vtkNPRGBufferPass
 // draws. The pass defines NPR_WRITE_NORMALS, NPR_WRITE_OBJECT_IDS, NPR_HAVE_MAPPER_NORMAL,
 // NPR_HAVE_VERTEX_VC and NPR_ENCODING (0 float, 1 half, 2 packed 8-bit, 3 packed 16-bit) before

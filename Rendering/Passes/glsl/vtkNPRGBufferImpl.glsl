@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
   // vtkNPRGBufferPass: geometry attachment = (view depth, packed normal, object id, 1), or
   // another encoding of them (vtkNPRGBufferPass::GeometryEncoding).
   {

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
   // vtkNPRInkPass: one shader for both draws; the mode is a uniform, so no rebuild between them.
   if (nprInkMode == 1)
   {

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkNPREdgePass and vtkNPRSketchPass: the colour of lines given each type's coverage
 // (r silhouettes, g creases, b contours). Creases are drawn first, then contours, silhouettes on top.
 uniform vec3 silhouetteColor;

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
 // vtkNPRSketchPass: lines and surfaces looked up through noise-displaced coordinates, merged on
 // the surface colour or the paper, with the smaller of the two displaced depths as the depth

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
   // vtkNPRToonPass: the diffuse lighting replaced by the table's band for the light intensity.
   {
 #if NPR_TOON_HAVE_VERTEX_VC

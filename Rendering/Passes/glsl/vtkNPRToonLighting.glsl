@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkNPRToonPass: the light reaching a surface, shared by the vertex (per-vertex toon) and the
 // fragment shaders. Lights are set by the pass from the renderer's switched-on lights, in view
 // coordinates, as VTK's own lighting sees them. Their number (NPR_TOON_LIGHTS) and whether any

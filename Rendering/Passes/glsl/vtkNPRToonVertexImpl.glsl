@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
   // vtkNPRToonPass: the light intensity at this vertex for both faces, interpolated before the
   // table lookup.
   {

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The window depth of a G-buffer depth, for the depth sprites. With NPR_REMAPPED_DEPTH the
 // G-buffer holds log(z / near) / log(far / near) of the view depth z (vtkNPRGBufferPass does so
 // for perspective near/far ratios above 1e4, where the usual depth loses the order of nearby

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkNPR for PyVista: one call turns a style on for a plotter's renderer.
 
     import pyvista as pv
