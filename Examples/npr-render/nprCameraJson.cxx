@@ -143,8 +143,10 @@ nprCameraState nprReadCameraFile(const std::string& fileName)
   {
     const size_t newline = errors.find('\n');
     const size_t detail = errors.find_first_not_of(' ', newline + 1);
-    Fail(fileName, "not valid JSON: " + errors.substr(0, newline) + " " +
-        (detail == std::string::npos ? "" : errors.substr(detail, errors.find('\n', detail) - detail)));
+    Fail(fileName,
+      "not valid JSON: " + errors.substr(0, newline) + " " +
+        (detail == std::string::npos ? ""
+                                     : errors.substr(detail, errors.find('\n', detail) - detail)));
   }
   if (!root.isObject())
   {
@@ -218,8 +220,9 @@ nprCameraState nprReadCameraFile(const std::string& fileName)
   if (camera.ClippingRange[1] <= camera.ClippingRange[0] ||
     (!camera.ParallelProjection && camera.ClippingRange[0] <= 0.0))
   {
-    Fail(fileName, "\"clipping_range\" must be [near, far] with far > near (and near > 0 in "
-                   "perspective)");
+    Fail(fileName,
+      "\"clipping_range\" must be [near, far] with far > near (and near > 0 in "
+      "perspective)");
   }
   return camera;
 }

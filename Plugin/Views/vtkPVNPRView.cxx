@@ -29,15 +29,15 @@ vtkNPRViewPass* vtkPVNPRView::GetNPRViewPass()
 }
 
 // Forwarders: one property, one setter of a pass.
-#define vtkPVNPRViewForward(name, type, pass, setter)                                             \
-  void vtkPVNPRView::Set##name(type value)                                                        \
+#define vtkPVNPRViewForward(name, type, pass, setter)                                              \
+  void vtkPVNPRView::Set##name(type value)                                                         \
   {                                                                                                \
-    this->NPRViewPass->GetNPRPass()->pass->setter(value);                                         \
+    this->NPRViewPass->GetNPRPass()->pass->setter(value);                                          \
   }
-#define vtkPVNPRViewForwardColor(name, pass, setter)                                              \
-  void vtkPVNPRView::Set##name(double r, double g, double b)                                      \
+#define vtkPVNPRViewForwardColor(name, pass, setter)                                               \
+  void vtkPVNPRView::Set##name(double r, double g, double b)                                       \
   {                                                                                                \
-    this->NPRViewPass->GetNPRPass()->pass->setter(r, g, b);                                       \
+    this->NPRViewPass->GetNPRPass()->pass->setter(r, g, b);                                        \
   }
 
 void vtkPVNPRView::SetStyle(int style)
@@ -61,29 +61,29 @@ void vtkPVNPRView::UpdateSceneRenderPass()
     this->SynchronizedRenderers->SetRenderPass(pass);
   }
 }
-vtkPVNPRViewForward(Silhouettes, bool, GetEdgePass(), SetSilhouettes)
-vtkPVNPRViewForward(SilhouetteThreshold, double, GetEdgePass(), SetSilhouetteThreshold)
-vtkPVNPRViewForwardColor(SilhouetteColor, GetEdgePass(), SetSilhouetteColor)
-vtkPVNPRViewForward(Creases, bool, GetEdgePass(), SetCreases)
-vtkPVNPRViewForward(CreaseAngle, double, GetEdgePass(), SetCreaseAngle)
-vtkPVNPRViewForwardColor(CreaseColor, GetEdgePass(), SetCreaseColor)
-vtkPVNPRViewForward(Contours, bool, GetEdgePass(), SetContours)
-vtkPVNPRViewForward(ContourSide, int, GetEdgePass(), SetContourSide)
-vtkPVNPRViewForwardColor(ContourColor, GetEdgePass(), SetContourColor)
-vtkPVNPRViewForward(LineWidth, double, GetEdgePass(), SetLineWidth)
-vtkPVNPRViewForward(LineAntiAliasing, bool, GetEdgePass(), SetAntiAliasing)
-vtkPVNPRViewForward(LineEncoding, int, GetEdgePass(), SetEncoding)
-vtkPVNPRViewForward(PackedThreshold, double, GetEdgePass(), SetPackedThreshold)
-vtkPVNPRViewForward(ToonBands, int, GetToonPass(), SetNumberOfBands)
-vtkPVNPRViewForward(ToonSpecular, bool, GetToonPass(), SetSpecular)
-vtkPVNPRViewForward(SketchUncertainty, double, GetSketchPass(), SetUncertainty)
-vtkPVNPRViewForward(SketchNoiseFrequency, double, GetSketchPass(), SetNoiseFrequency)
-vtkPVNPRViewForward(SketchPaper, bool, GetSketchPass(), SetPaper)
-vtkPVNPRViewForwardColor(SketchPaperColor, GetSketchPass(), SetPaperColor)
-vtkPVNPRViewForward(InkLineWidth, double, GetInkPass(), SetLineWidth)
-vtkPVNPRViewForwardColor(InkColor, GetInkPass(), SetInkColor)
+vtkPVNPRViewForward(Silhouettes, bool, GetEdgePass(), SetSilhouettes) vtkPVNPRViewForward(
+  SilhouetteThreshold, double, GetEdgePass(), SetSilhouetteThreshold)
+  vtkPVNPRViewForwardColor(SilhouetteColor, GetEdgePass(), SetSilhouetteColor)
+    vtkPVNPRViewForward(Creases, bool, GetEdgePass(), SetCreases) vtkPVNPRViewForward(
+      CreaseAngle, double, GetEdgePass(), SetCreaseAngle) vtkPVNPRViewForwardColor(CreaseColor,
+      GetEdgePass(), SetCreaseColor) vtkPVNPRViewForward(Contours, bool, GetEdgePass(), SetContours)
+      vtkPVNPRViewForward(ContourSide, int, GetEdgePass(), SetContourSide)
+        vtkPVNPRViewForwardColor(ContourColor, GetEdgePass(), SetContourColor)
+          vtkPVNPRViewForward(LineWidth, double, GetEdgePass(), SetLineWidth) vtkPVNPRViewForward(
+            LineAntiAliasing, bool, GetEdgePass(), SetAntiAliasing)
+            vtkPVNPRViewForward(LineEncoding, int, GetEdgePass(), SetEncoding)
+              vtkPVNPRViewForward(PackedThreshold, double, GetEdgePass(), SetPackedThreshold)
+                vtkPVNPRViewForward(ToonBands, int, GetToonPass(), SetNumberOfBands)
+                  vtkPVNPRViewForward(ToonSpecular, bool, GetToonPass(), SetSpecular)
+                    vtkPVNPRViewForward(SketchUncertainty, double, GetSketchPass(), SetUncertainty)
+                      vtkPVNPRViewForward(
+                        SketchNoiseFrequency, double, GetSketchPass(), SetNoiseFrequency)
+                        vtkPVNPRViewForward(SketchPaper, bool, GetSketchPass(), SetPaper)
+                          vtkPVNPRViewForwardColor(SketchPaperColor, GetSketchPass(), SetPaperColor)
+                            vtkPVNPRViewForward(InkLineWidth, double, GetInkPass(), SetLineWidth)
+                              vtkPVNPRViewForwardColor(InkColor, GetInkPass(), SetInkColor)
 
-void vtkPVNPRView::SetSketchNoiseSeed(int seed)
+                                void vtkPVNPRView::SetSketchNoiseSeed(int seed)
 {
   this->NPRViewPass->GetNPRPass()->GetSketchPass()->SetNoiseSeed(
     static_cast<unsigned int>(seed < 0 ? 0 : seed));

@@ -87,12 +87,14 @@ int vtkNPRHeadlessRenderWindow::GetColorBufferSizes(int* rgba)
   vtkOpenGLState* state = this->GetState();
   state->PushReadFramebufferBinding();
   framebuffer->Bind(GL_READ_FRAMEBUFFER);
-  const GLenum names[4] = { GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE, GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE,
-    GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE, GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE };
+  const GLenum names[4] = { GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE,
+    GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE, GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE,
+    GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE };
   for (int i = 0; i < 4; ++i)
   {
     GLint size = 0;
-    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, names[i], &size);
+    glGetFramebufferAttachmentParameteriv(
+      GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, names[i], &size);
     rgba[i] = size;
   }
   state->PopReadFramebufferBinding();
@@ -157,8 +159,8 @@ void vtkNPRHeadlessRenderWindow::OpenGLInitContext()
   if (result != GLEW_OK && result != GLEW_ERROR_GLX_VERSION_11_ONLY &&
     result != GLEW_ERROR_NO_GLX_DISPLAY)
   {
-    this->SetContextError(std::string("glewInit failed: ") +
-      reinterpret_cast<const char*>(glewGetErrorString(result)));
+    this->SetContextError(
+      std::string("glewInit failed: ") + reinterpret_cast<const char*>(glewGetErrorString(result)));
     return;
   }
   if (!GLEW_VERSION_3_2)

@@ -29,7 +29,8 @@
 
 #include <string> // for std::string
 
-class VTKRENDERINGHEADLESSNPR_EXPORT vtkNPRHeadlessRenderWindow : public vtkGenericOpenGLRenderWindow
+class VTKRENDERINGHEADLESSNPR_EXPORT vtkNPRHeadlessRenderWindow
+  : public vtkGenericOpenGLRenderWindow
 {
 public:
   vtkTypeMacro(vtkNPRHeadlessRenderWindow, vtkGenericOpenGLRenderWindow);

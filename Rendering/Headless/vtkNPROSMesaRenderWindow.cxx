@@ -118,8 +118,8 @@ bool vtkNPROSMesaRenderWindow::CreateContext()
                           "would bypass the OSMesa context: link the program with NPR::OSMesa");
     return false;
   }
-  const int attributes[] = { OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
-    OSMESA_STENCIL_BITS, 8, OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
+  const int attributes[] = { OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS,
+    8, OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
     OSMESA_CONTEXT_MINOR_VERSION, 2, 0 };
   this->Context = osmesa.CreateContextAttribs(attributes, nullptr);
   if (!this->Context)

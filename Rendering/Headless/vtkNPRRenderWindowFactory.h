@@ -32,7 +32,7 @@
 
 #include "vtkObject.h"
 #include "vtkRenderingHeadlessNPRModule.h" // for export macro
-#include "vtkWrappingHints.h"      // for VTK_NEWINSTANCE
+#include "vtkWrappingHints.h"              // for VTK_NEWINSTANCE
 
 class vtkRenderWindow;
 

@@ -435,7 +435,8 @@ std::string vtkNPRModelFormatChecks::CheckOBJ(
           {
             return where + "'" + token + "' is not a valid " + keyword + " corner";
           }
-#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0) && VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 3, 1)
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0) &&                                            \
+  VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 3, 1)
           // VTK 9.3.0 resolves a relative texture coordinate against the normals' count and a
           // relative normal against the texture coordinates' (fixed in 9.3.1): it crashes or
           // reads the wrong one.

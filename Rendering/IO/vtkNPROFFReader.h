@@ -20,8 +20,8 @@
 #ifndef vtkNPROFFReader_h
 #define vtkNPROFFReader_h
 
-#include "vtkPolyDataAlgorithm.h"
 #include "vtkIONPRModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
 
 #include <string> // for std::string
 

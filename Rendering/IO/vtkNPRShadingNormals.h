@@ -23,8 +23,8 @@
 #ifndef vtkNPRShadingNormals_h
 #define vtkNPRShadingNormals_h
 
-#include "vtkPolyDataAlgorithm.h"
 #include "vtkIONPRModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
 
 class VTKIONPR_EXPORT vtkNPRShadingNormals : public vtkPolyDataAlgorithm
 {

@@ -187,7 +187,8 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
   const double* coordinates = this->Coordinates.data();
 
   // Adds one face (point ids in its winding order) to the table.
-  auto addFace = [&](vtkIdType size, const vtkIdType* ids) {
+  auto addFace = [&](vtkIdType size, const vtkIdType* ids)
+  {
     if (size < 3)
     {
       ++this->DegenerateFaces;
@@ -402,7 +403,8 @@ int vtkNPRFeatureLines::RequestData(
   vtkNew<vtkIdTypeArray> inputIds;
   inputIds->SetName("InputPointIds");
   inputIds->SetNumberOfComponents(2);
-  auto outputPoint = [&](vtkIdType id) {
+  auto outputPoint = [&](vtkIdType id)
+  {
     if (outputId[id] < 0)
     {
       outputId[id] = outputPoints->InsertNextPoint(coordinates + 3 * id);

@@ -64,8 +64,8 @@
 #ifndef vtkNPRFeatureLines_h
 #define vtkNPRFeatureLines_h
 
-#include "vtkPolyDataAlgorithm.h"
 #include "vtkFiltersNPRModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 

@@ -60,8 +60,8 @@
 #ifndef vtkNPRReferenceMask_h
 #define vtkNPRReferenceMask_h
 
-#include "vtkObject.h"
 #include "vtkFiltersNPRModule.h" // for export macro
+#include "vtkObject.h"
 
 #include <memory> // for std::unique_ptr
 

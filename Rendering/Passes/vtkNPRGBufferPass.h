@@ -24,9 +24,9 @@
  *   (R8 / R16): 1 + depth + nx + ny + nz, where the depth (view depth mapped from the camera's
  *   clipping range onto 0..1) and each normal coordinate (mapped from -1..1) are quantised to
  *   0..63 (8 bits: the sum is at most 253 of 255) or 0..16383 (16 bits). The normal terms are
- *   packed only when normals are requested; ids never are. 0 is the background. Ids are written only
- * when asked for and more than one prop with opaque geometry is visible (with one, coverage says
- * the same). With no prop to draw, nothing is allocated or drawn.
+ *   packed only when normals are requested; ids never are. 0 is the background. Ids are written
+ * only when asked for and more than one prop with opaque geometry is visible (with one, coverage
+ * says the same). With no prop to draw, nothing is allocated or drawn.
  *
  * The extra outputs are written by every vtkOpenGLPolyDataMapper (and its subclasses: composite,
  * glyph, point-Gaussian helpers) through the vtkOpenGLRenderPass shader hooks, as vtkSSAOPass does.
@@ -39,8 +39,8 @@
  *
  * Reuse: when neither the props (their MTime and redraw MTime, which includes their mapper and
  * its input), the camera, the lights, the renderer's lighting settings, the size, this pass nor
- * its delegate changed since the last frame, the geometry is not drawn again and the last G-buffer is kept
- * (ReuseUnchangedFrames, on by default). GetNumberOfGeometryDraws() counts the draws.
+ * its delegate changed since the last frame, the geometry is not drawn again and the last G-buffer
+ * is kept (ReuseUnchangedFrames, on by default). GetNumberOfGeometryDraws() counts the draws.
  *
  * Depth-only mode (DepthOnly, off by default): the delegate is any pass that leaves colour and
  * depth in the framebuffer (a whole vtkRenderStepsPass, a compositing pass of a parallel
@@ -66,7 +66,7 @@
 
 #include "vtkOpenGLRenderPass.h"
 #include "vtkRenderingNPRModule.h" // for export macro
-#include "vtkTimeStamp.h"           // for vtkTimeStamp
+#include "vtkTimeStamp.h"          // for vtkTimeStamp
 
 #include <memory> // for std::unique_ptr
 
@@ -148,9 +148,18 @@ public:
   bool GetWritesNormals() const { return this->WritesNormals; }
   bool GetWritesObjectIds() const { return this->WritesObjectIds; }
   int GetWrittenEncoding() const { return this->WrittenEncoding; }
-  vtkTextureObject* GetColorTexture() const { return this->HasContent ? this->ColorTexture : nullptr; }
-  vtkTextureObject* GetGeometryTexture() const { return this->HasContent ? this->GeometryTexture : nullptr; }
-  vtkTextureObject* GetDepthTexture() const { return this->HasContent ? this->DepthTexture : nullptr; }
+  vtkTextureObject* GetColorTexture() const
+  {
+    return this->HasContent ? this->ColorTexture : nullptr;
+  }
+  vtkTextureObject* GetGeometryTexture() const
+  {
+    return this->HasContent ? this->GeometryTexture : nullptr;
+  }
+  vtkTextureObject* GetDepthTexture() const
+  {
+    return this->HasContent ? this->DepthTexture : nullptr;
+  }
   ///@}
 
   /**
@@ -216,8 +225,8 @@ protected:
   vtkNPRGBufferPass();
   ~vtkNPRGBufferPass() override;
 
-  void AllocateBuffers(vtkOpenGLRenderWindow* window, int width, int height, int components,
-    int encoding);
+  void AllocateBuffers(
+    vtkOpenGLRenderWindow* window, int width, int height, int components, int encoding);
   bool SceneUnchanged(const vtkRenderState* state, int width, int height);
   vtkMTimeType GetSettingsTime();
   void ComputeContentRectangle(const vtkRenderState* state, int width, int height);

@@ -113,8 +113,8 @@ protected:
 
   enum DrawModes
   {
-    DrawShaded = 0, // as VTK draws it
-    DrawInk = 1,    // back faces in ink, front faces discarded
+    DrawShaded = 0,  // as VTK draws it
+    DrawInk = 1,     // back faces in ink, front faces discarded
     DrawMaskFill = 2 // CoverageOnly: faces black
   };
 

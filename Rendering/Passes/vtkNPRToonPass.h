@@ -42,7 +42,7 @@
 
 #include "vtkOpenGLRenderPass.h"
 #include "vtkRenderingNPRModule.h" // for export macro
-#include "vtkTimeStamp.h"           // for vtkTimeStamp
+#include "vtkTimeStamp.h"          // for vtkTimeStamp
 
 #include <memory> // for std::unique_ptr
 

@@ -102,7 +102,8 @@ void TestDistanceTransform()
   }
   Mask empty(13, 9);
   const std::vector<double> none = nprDistanceTransform::Compute(empty.Data(), 13, 9);
-  NPR_CHECK(none[0] == nprDistanceTransform::Infinite && none.back() == nprDistanceTransform::Infinite,
+  NPR_CHECK(
+    none[0] == nprDistanceTransform::Infinite && none.back() == nprDistanceTransform::Infinite,
     "an empty mask's distances are Infinite");
 }
 
@@ -121,7 +122,8 @@ void TestIdentical()
     NPR_CHECK(m.Precision(t) == 1.0 && m.Recall(t) == 1.0 && m.F1(t) == 1.0,
       "identical masks at " << t << ": " << m.Precision(t) << " " << m.Recall(t));
   }
-  NPR_CHECK(m.MeanSymmetricDistance() == 0.0, "identical masks: distance " << m.MeanSymmetricDistance());
+  NPR_CHECK(
+    m.MeanSymmetricDistance() == 0.0, "identical masks: distance " << m.MeanSymmetricDistance());
   NPR_CHECK(m.GetMethodPixels() == m.GetReferencePixels() && m.GetMethodPixels() > 70,
     "pixel counts " << m.GetMethodPixels());
 }
@@ -135,7 +137,8 @@ void TestShifted()
   m.Compute(method.Data(), reference.Data(), 64, 48);
   NPR_CHECK(m.F1(0.0) == 0.0, "shifted by 1: F1@0 " << m.F1(0.0));
   NPR_CHECK(m.F1(1.0) == 1.0 && m.F1(2.0) == 1.0, "shifted by 1: F1@1 " << m.F1(1.0));
-  NPR_CHECK(Near(m.MeanSymmetricDistance(), 1.0), "shifted by 1: distance " << m.MeanSymmetricDistance());
+  NPR_CHECK(
+    Near(m.MeanSymmetricDistance(), 1.0), "shifted by 1: distance " << m.MeanSymmetricDistance());
 
   // Diagonally by one pixel: sqrt(2) away, within 2 but not within 1.
   Mask diagonal(64, 48);
@@ -155,7 +158,8 @@ void TestDisjoint()
   nprEdgeMetrics m;
   m.Compute(method.Data(), reference.Data(), 128, 64);
   NPR_CHECK(m.F1(1.0) == 0.0 && m.F1(2.0) == 0.0, "far apart: F1@2 " << m.F1(2.0));
-  NPR_CHECK(Near(m.MeanSymmetricDistance(), 50.0), "far apart: distance " << m.MeanSymmetricDistance());
+  NPR_CHECK(
+    Near(m.MeanSymmetricDistance(), 50.0), "far apart: distance " << m.MeanSymmetricDistance());
   NPR_CHECK(m.CountFarMethodPixels(3.0) == 41, "far pixels " << m.CountFarMethodPixels(3.0));
 
   // The reference plus a stray blob: precision is the reference's share, recall stays 1.
@@ -181,8 +185,8 @@ void TestEmpty()
   m.Compute(empty.Data(), line.Data(), 40, 30);
   NPR_CHECK(Finite(m) && m.Precision(1.0) == 1.0 && m.Recall(1.0) == 0.0 && m.F1(1.0) == 0.0,
     "empty method: P " << m.Precision(1.0) << " R " << m.Recall(1.0) << " F1 " << m.F1(1.0));
-  NPR_CHECK(Near(m.MeanSymmetricDistance(), 50.0), "empty method: distance is the diagonal, "
-      << m.MeanSymmetricDistance());
+  NPR_CHECK(Near(m.MeanSymmetricDistance(), 50.0),
+    "empty method: distance is the diagonal, " << m.MeanSymmetricDistance());
   m.Compute(line.Data(), empty.Data(), 40, 30);
   NPR_CHECK(Finite(m) && m.Precision(1.0) == 0.0 && m.Recall(1.0) == 1.0 && m.F1(1.0) == 0.0,
     "empty reference: P " << m.Precision(1.0) << " R " << m.Recall(1.0));

@@ -182,9 +182,11 @@ int RunBenchmark(const nprBenchmarkOptions& options)
 
 int main(int argc, char* argv[])
 {
-  return nprRunProgram("npr-benchmark", [&](nprOutputWindow* messages) {
-    messages->EchoPrefix = "npr-benchmark: vtk: ";
-    const nprBenchmarkOptions options = nprParseBenchmarkOptions(argc, argv);
-    return options.Stress ? nprRunBenchmarkStress(options) : RunBenchmark(options);
-  });
+  return nprRunProgram("npr-benchmark",
+    [&](nprOutputWindow* messages)
+    {
+      messages->EchoPrefix = "npr-benchmark: vtk: ";
+      const nprBenchmarkOptions options = nprParseBenchmarkOptions(argc, argv);
+      return options.Stress ? nprRunBenchmarkStress(options) : RunBenchmark(options);
+    });
 }

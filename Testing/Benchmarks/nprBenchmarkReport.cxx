@@ -59,8 +59,7 @@ std::ofstream OpenForWriting(const std::string& path)
 
 double Mean(const std::vector<double>& values)
 {
-  return values.empty() ? 0.0
-                        : std::accumulate(values.begin(), values.end(), 0.0) / values.size();
+  return values.empty() ? 0.0 : std::accumulate(values.begin(), values.end(), 0.0) / values.size();
 }
 
 std::string SizeName(const nprBenchmarkRow& row)
@@ -128,7 +127,8 @@ std::string nprCheckBenchmarkRows(const std::vector<nprBenchmarkRow>& rows)
     }
     if (!bad.empty())
     {
-      problems += row.Scene + " " + row.Camera + " " + SizeName(row) + " " + row.Method + ":" + bad + "\n";
+      problems +=
+        row.Scene + " " + row.Camera + " " + SizeName(row) + " " + row.Method + ":" + bad + "\n";
     }
   }
   return problems;
@@ -163,8 +163,10 @@ void nprWriteBenchmarkMarkdown(
   file << "Renderer: " << info.Renderer << " (backend " << info.Backend << "); " << info.Frames
        << " timed frames per method and view, interleaved with the shaded frame; whole run "
        << nprFormat(info.Seconds / 60.0, 3) << " min.\n\n";
-  file << "Scenes:\n" << info.Scenes << "\nCameras (after ResetCamera, perspective): "
-       << info.Cameras << ". Sizes: " << info.Sizes << ".\n\nMethods:\n" << info.Methods << "\n";
+  file << "Scenes:\n"
+       << info.Scenes << "\nCameras (after ResetCamera, perspective): " << info.Cameras
+       << ". Sizes: " << info.Sizes << ".\n\nMethods:\n"
+       << info.Methods << "\n";
 
   // Per method and size, over scenes and cameras: medians of the times, means of the errors.
   file << "| method | size | views | median ms | shaded ms | ratio to shaded | P@1 | R@1 | F1@1 "
@@ -239,8 +241,8 @@ void nprWriteBenchmarkMarkdown(
   file << "\nPareto front (median ratio to shaded against mean F1@1, every size):";
   for (const nprPlotPoint& point : front)
   {
-    file << " " << point.Name << " (" << nprFormat(point.Time, 3) << ", "
-         << nprFormat(point.F1, 3) << ")" << (&point == &front.back() ? "." : ";");
+    file << " " << point.Name << " (" << nprFormat(point.Time, 3) << ", " << nprFormat(point.F1, 3)
+         << ")" << (&point == &front.back() ? "." : ";");
   }
   file << "\n";
 }
@@ -249,7 +251,8 @@ std::vector<nprPlotPoint> nprPlotPoints(
   const std::vector<nprBenchmarkRow>& rows, const std::string& size, bool ratio)
 {
   std::vector<nprPlotPoint> points;
-  for (const std::string& method : Distinct(rows, [](const nprBenchmarkRow& r) { return r.Method; }))
+  for (const std::string& method :
+    Distinct(rows, [](const nprBenchmarkRow& r) { return r.Method; }))
   {
     std::vector<double> times, f1;
     for (const nprBenchmarkRow& row : rows)
@@ -272,9 +275,9 @@ std::vector<nprPlotPoint> nprParetoFront(const std::vector<nprPlotPoint>& points
 {
   std::vector<nprPlotPoint> sorted = points;
   // Fastest first; at equal times the most accurate first, so it alone is kept.
-  std::sort(sorted.begin(), sorted.end(), [](const nprPlotPoint& a, const nprPlotPoint& b) {
-    return a.Time < b.Time || (a.Time == b.Time && a.F1 > b.F1);
-  });
+  std::sort(sorted.begin(), sorted.end(),
+    [](const nprPlotPoint& a, const nprPlotPoint& b)
+    { return a.Time < b.Time || (a.Time == b.Time && a.F1 > b.F1); });
   std::vector<nprPlotPoint> front;
   for (const nprPlotPoint& point : sorted)
   {
@@ -311,7 +314,8 @@ void nprWritePlot(const std::string& path, const std::vector<nprPlotPoint>& poin
   chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::CENTER);
   chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
 
-  auto table = [](const std::vector<nprPlotPoint>& series, const std::string& name) {
+  auto table = [](const std::vector<nprPlotPoint>& series, const std::string& name)
+  {
     vtkNew<vtkDoubleArray> x, y;
     x->SetName("time");
     y->SetName(name.c_str());
@@ -398,8 +402,8 @@ void nprWriteStressMarkdown(
   const std::string& path, const std::vector<nprStressRow>& rows, const nprBenchmarkInfo& info)
 {
   std::ofstream file = OpenForWriting(path);
-  file << "Renderer: " << info.Renderer << " (backend " << info.Backend << "); size "
-       << info.Sizes << ", camera " << info.Cameras << "; edge pass, float G-buffer, default "
+  file << "Renderer: " << info.Renderer << " (backend " << info.Backend << "); size " << info.Sizes
+       << ", camera " << info.Cameras << "; edge pass, float G-buffer, default "
        << "settings; run " << nprFormat(info.Seconds, 3) << " s.\n\n";
   file << "| scene | case | detail | F1@1 own ref | F1@1 unit ref | drift | ref vs unit ref "
           "| stray px | coverage changed | non-finite px | bad depth px | note |\n";
@@ -409,7 +413,7 @@ void nprWriteStressMarkdown(
     file << "| " << row.Scene << " | " << row.Case << " | " << row.Detail << " | "
          << nprFormat(row.F1Own, 3) << " | " << nprFormat(row.F1Unit, 3) << " | "
          << nprFormat(row.Drift, 3) << " | " << nprFormat(row.ReferenceF1, 3) << " | "
-         << row.StrayPixels << " | " << row.CoverageChanged << " | " << row.NonFinitePixels
-         << " | " << row.BadDepthPixels << " | " << row.Note << " |\n";
+         << row.StrayPixels << " | " << row.CoverageChanged << " | " << row.NonFinitePixels << " | "
+         << row.BadDepthPixels << " | " << row.Note << " |\n";
   }
 }

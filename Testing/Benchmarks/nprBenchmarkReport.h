@@ -74,7 +74,7 @@ struct nprStressRow
 {
   std::string Scene;
   std::string Case;
-  std::string Detail; // what was done, in numbers
+  std::string Detail;       // what was done, in numbers
   double F1Own = 0.0;       // F1@1 of the edge pass against this case's reference mask
   double F1Unit = 0.0;      // F1@1 of the edge pass against the unit case's reference mask
   double Drift = 0.0;       // F1Unit - the unit case's F1@1
@@ -82,11 +82,11 @@ struct nprStressRow
   double MeanDistanceUnit = 0.0;
   long long MethodPixels = 0;
   long long ReferencePixels = 0;
-  long long StrayPixels = 0;       // line pixels > 3 px from every unit-reference line pixel
-  long long CoveredPixels = 0;     // G-buffer pixels with geometry
-  long long CoverageChanged = 0;   // covered here xor covered in the unit case
-  long long NonFinitePixels = 0;   // covered, with a NaN or infinite depth or normal code
-  long long BadDepthPixels = 0;    // covered, depth outside [near, far] (0.1 % margin) or <= 0
+  long long StrayPixels = 0;     // line pixels > 3 px from every unit-reference line pixel
+  long long CoveredPixels = 0;   // G-buffer pixels with geometry
+  long long CoverageChanged = 0; // covered here xor covered in the unit case
+  long long NonFinitePixels = 0; // covered, with a NaN or infinite depth or normal code
+  long long BadDepthPixels = 0;  // covered, depth outside [near, far] (0.1 % margin) or <= 0
   double Near = 0.0;
   double Far = 0.0;
   std::string Note;

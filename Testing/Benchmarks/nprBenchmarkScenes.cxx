@@ -10,8 +10,8 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDoubleArray.h"
-#include "vtkFlyingEdges3D.h"
 #include "vtkFloatArray.h"
+#include "vtkFlyingEdges3D.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -222,31 +222,35 @@ double nprModelSize(vtkPolyData* mesh)
 {
   double bounds[6];
   mesh->GetPoints()->GetBounds(bounds);
-  return std::sqrt(vtkMath::Distance2BetweenPoints(
-    std::array<double, 3>{ bounds[0], bounds[2], bounds[4] }.data(),
-    std::array<double, 3>{ bounds[1], bounds[3], bounds[5] }.data()));
+  return std::sqrt(
+    vtkMath::Distance2BetweenPoints(std::array<double, 3>{ bounds[0], bounds[2], bounds[4] }.data(),
+      std::array<double, 3>{ bounds[1], bounds[3], bounds[5] }.data()));
 }
 
 vtkSmartPointer<vtkPolyData> nprScaledMesh(vtkPolyData* raw, double factor)
 {
-  return WithMovedPoints(raw, [factor](double p[3]) {
-    for (int c = 0; c < 3; ++c)
+  return WithMovedPoints(raw,
+    [factor](double p[3])
     {
-      p[c] *= factor;
-    }
-  });
+      for (int c = 0; c < 3; ++c)
+      {
+        p[c] *= factor;
+      }
+    });
 }
 
 vtkSmartPointer<vtkPolyData> nprTranslatedMesh(vtkPolyData* raw, double distance)
 {
   double direction[3] = { 1.0, 0.7, 0.4 };
   vtkMath::Normalize(direction);
-  return WithMovedPoints(raw, [&](double p[3]) {
-    for (int c = 0; c < 3; ++c)
+  return WithMovedPoints(raw,
+    [&](double p[3])
     {
-      p[c] += distance * direction[c];
-    }
-  });
+      for (int c = 0; c < 3; ++c)
+      {
+        p[c] += distance * direction[c];
+      }
+    });
 }
 
 vtkSmartPointer<vtkPolyData> nprSliverMesh(vtkPolyData* raw)

@@ -119,12 +119,14 @@ void nprBenchmarkStage::UpdateFeatureLines()
 
 double nprBenchmarkStage::TimedFrame(bool objectLines)
 {
-  return nprTimeFrame(this->Window, this->Camera(), [&]() {
-    if (objectLines)
+  return nprTimeFrame(this->Window, this->Camera(),
+    [&]()
     {
-      this->UpdateFeatureLines();
-    }
-  });
+      if (objectLines)
+      {
+        this->UpdateFeatureLines();
+      }
+    });
 }
 
 nprMask nprBenchmarkStage::MethodMask(const nprBenchmarkMethod& method, vtkNPRPass* pass)

@@ -57,8 +57,7 @@ void Transform1D(const double* f, int n, double* d, std::vector<int>& v, std::ve
 }
 }
 
-std::vector<double> nprDistanceTransform::Compute(
-  const unsigned char* mask, int width, int height)
+std::vector<double> nprDistanceTransform::Compute(const unsigned char* mask, int width, int height)
 {
   const size_t count = static_cast<size_t>(width) * height;
   std::vector<double> result(count, Infinite);
@@ -113,7 +112,8 @@ void nprEdgeMetrics::Compute(
   }
   std::sort(this->MethodToReference.begin(), this->MethodToReference.end());
   std::sort(this->ReferenceToMethod.begin(), this->ReferenceToMethod.end());
-  this->Diagonal = std::sqrt(static_cast<double>(width) * width + static_cast<double>(height) * height);
+  this->Diagonal =
+    std::sqrt(static_cast<double>(width) * width + static_cast<double>(height) * height);
 }
 
 double nprEdgeMetrics::FractionWithin(const std::vector<double>& squared, double tolerance)

@@ -43,7 +43,10 @@ public:
   double F1(double tolerance) const;
   double MeanSymmetricDistance() const;
 
-  long long GetMethodPixels() const { return static_cast<long long>(this->MethodToReference.size()); }
+  long long GetMethodPixels() const
+  {
+    return static_cast<long long>(this->MethodToReference.size());
+  }
   long long GetReferencePixels() const
   {
     return static_cast<long long>(this->ReferenceToMethod.size());

@@ -52,7 +52,8 @@ int ActorKinds()
     const char* Name;
     std::function<vtkSmartPointer<vtkProp>()> Make;
   };
-  auto sphereData = [](bool pointNormals) {
+  auto sphereData = [](bool pointNormals)
+  {
     vtkNew<vtkSphereSource> sphere;
     sphere->SetThetaResolution(24);
     sphere->SetPhiResolution(12);
@@ -65,7 +66,8 @@ int ActorKinds()
     }
     return data;
   };
-  auto actorFor = [](vtkPolyData* data) {
+  auto actorFor = [](vtkPolyData* data)
+  {
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetInputData(data);
     auto actor = vtkSmartPointer<vtkActor>::New();
@@ -75,7 +77,8 @@ int ActorKinds()
   const Kind kinds[] = {
     { "point normals", [&] { return actorFor(sphereData(true)); } },
     { "cell normals only",
-      [&] {
+      [&]
+      {
         vtkNew<vtkPolyDataNormals> normals;
         normals->SetInputData(sphereData(false));
         normals->ComputePointNormalsOff();
@@ -85,19 +88,22 @@ int ActorKinds()
       } },
     { "no normals", [&] { return actorFor(sphereData(false)); } },
     { "flat",
-      [&] {
+      [&]
+      {
         auto actor = actorFor(sphereData(true));
         actor->GetProperty()->SetInterpolationToFlat();
         return actor;
       } },
     { "unlit",
-      [&] {
+      [&]
+      {
         auto actor = actorFor(sphereData(true));
         actor->GetProperty()->LightingOff();
         return actor;
       } },
     { "zero-length normals",
-      [&] {
+      [&]
+      {
         auto data = sphereData(false);
         vtkNew<vtkFloatArray> zero;
         zero->SetNumberOfComponents(3);
@@ -108,7 +114,8 @@ int ActorKinds()
         return actorFor(data);
       } },
     { "scalar colours",
-      [&] {
+      [&]
+      {
         vtkNew<vtkElevationFilter> elevation;
         elevation->SetInputData(sphereData(true));
         elevation->SetLowPoint(0, -0.5, 0);
@@ -119,7 +126,8 @@ int ActorKinds()
         return actorFor(data);
       } },
     { "textured",
-      [&] {
+      [&]
+      {
         vtkNew<vtkTextureMapToSphere> map;
         map->SetInputData(sphereData(true));
         map->Update();
@@ -145,21 +153,24 @@ int ActorKinds()
         return actor;
       } },
     { "wireframe lines",
-      [&] {
+      [&]
+      {
         auto actor = actorFor(sphereData(true));
         actor->GetProperty()->SetRepresentationToWireframe();
         actor->GetProperty()->SetLineWidth(2);
         return actor;
       } },
     { "points",
-      [&] {
+      [&]
+      {
         auto actor = actorFor(sphereData(true));
         actor->GetProperty()->SetRepresentationToPoints();
         actor->GetProperty()->SetPointSize(6);
         return actor;
       } },
     { "composite (multiblock)",
-      [&] {
+      [&]
+      {
         vtkNew<vtkMultiBlockDataSet> blocks;
         blocks->SetNumberOfBlocks(2);
         auto left = sphereData(true);
@@ -179,7 +190,8 @@ int ActorKinds()
         return actor;
       } },
     { "glyphs",
-      [&] {
+      [&]
+      {
         vtkNew<vtkPlaneSource> grid;
         grid->SetResolution(3, 3);
         grid->Update();

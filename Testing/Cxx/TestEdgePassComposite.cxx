@@ -58,7 +58,8 @@ int Translucency()
   scene.LookAtOrigin(5);
   scene.Edges()->SetLineWidth(2.0);
 
-  auto lineColumns = [&](vtkImageData* mask, int y, int& first, int& last) {
+  auto lineColumns = [&](vtkImageData* mask, int y, int& first, int& last)
+  {
     first = last = -1;
     for (int x = 0; x < 400; ++x)
     {

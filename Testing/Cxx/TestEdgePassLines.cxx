@@ -49,7 +49,8 @@ int CubeEdges(bool parallel)
   const double h = 0.5;
   const int normals[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 },
     { 0, 0, -1 } };
-  auto facing = [&](int face) {
+  auto facing = [&](int face)
+  {
     double toEye[3];
     for (int i = 0; i < 3; ++i)
     {
@@ -206,7 +207,8 @@ int TouchingObjects()
   double t[2], b[2];
   scene.Project(top, t);
   scene.Project(bottom, b);
-  auto countOnSeam = [&](vtkImageData* mask) {
+  auto countOnSeam = [&](vtkImageData* mask)
+  {
     long long count = 0, rows = 0;
     for (int y = static_cast<int>(b[1]) + 4; y < static_cast<int>(t[1]) - 4; ++y)
     {
@@ -270,7 +272,8 @@ int AntiAliasing()
   }
   scene.Project(rotated[0], e0);
   scene.Project(rotated[1], e1);
-  auto measure = [&](vtkImageData* mask, long long& intermediate, long long& lit) {
+  auto measure = [&](vtkImageData* mask, long long& intermediate, long long& lit)
+  {
     intermediate = lit = 0;
     std::vector<double> xs, ys;
     for (int x = static_cast<int>(e0[0]) + 20; x < static_cast<int>(e1[0]) - 20; ++x)
@@ -327,7 +330,8 @@ int AntiAliasing()
 
   // The width is honoured: a width-6 line is about 4 times as heavy as a width-1.5 line.
   scene.Edges()->AntiAliasingOn();
-  auto coverageSum = [&](vtkImageData* mask) {
+  auto coverageSum = [&](vtkImageData* mask)
+  {
     double sum = 0;
     for (int x = static_cast<int>(e0[0]) + 20; x < static_cast<int>(e1[0]) - 20; ++x)
     {

@@ -184,7 +184,8 @@ int CubeSilhouettes()
     world->SetInputData(moved->GetOutput());
     world->SetCamera(camera);
     world->Update();
-    auto ids = [](vtkNPRFeatureLines* filter) {
+    auto ids = [](vtkNPRFeatureLines* filter)
+    {
       std::set<std::pair<vtkIdType, vtkIdType>> pairs;
       auto* array =
         vtkIdTypeArray::SafeDownCast(filter->GetOutput()->GetCellData()->GetArray("InputPointIds"));

@@ -16,6 +16,7 @@
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
 #include "vtkNPRInkPass.h"
+#include "vtkNPROpenGL.h"
 #include "vtkNPRPass.h"
 #include "vtkNew.h"
 #include "vtkPropPicker.h"
@@ -24,7 +25,6 @@
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
 #include "vtkTextureObject.h"
-#include "vtkNPROpenGL.h"
 
 #include <algorithm>
 #include <cmath>
@@ -105,7 +105,8 @@ Mask Boundary(const Mask& mask, int width, int height)
     for (int x = 1; x < width - 1; ++x)
     {
       const size_t i = static_cast<size_t>(y) * width + x;
-      boundary[i] = mask[i] && (!mask[i - 1] || !mask[i + 1] || !mask[i - width] || !mask[i + width]);
+      boundary[i] =
+        mask[i] && (!mask[i - 1] || !mask[i + 1] || !mask[i - width] || !mask[i + width]);
     }
   }
   return boundary;
@@ -177,8 +178,8 @@ int InkedCube()
       missed += outline[i] && toInk[i] > 1.5;
     }
     std::cout << (parallel ? "parallel" : "perspective") << ": " << Count(ink) << " ink pixels, "
-              << Count(outline) << " outline pixels, " << inside << " inside, " << far
-              << " far, " << missed << " outline pixels without ink\n";
+              << Count(outline) << " outline pixels, " << inside << " inside, " << far << " far, "
+              << missed << " outline pixels without ink\n";
     NPR_CHECK(Count(outline) > 300, "the cube is drawn");
     NPR_CHECK(inside == 0, inside << " ink pixels on the faces (creases or leaks)");
     NPR_CHECK(far == 0, far << " ink pixels farther than the line width from the outline");
@@ -222,12 +223,15 @@ int InkedWidthAndMask()
   scene.Ink()->CoverageOnlyOn();
   vtkSmartPointer<vtkImageData> maskImage = scene.Render();
   scene.Ink()->CoverageOnlyOff();
-  const Mask white = Threshold(maskImage, [](int r, int g, int b) { return r > 200 && g > 200 && b > 200; });
-  const Mask black = Threshold(maskImage, [](int r, int g, int b) { return r < 30 && g < 30 && b < 30; });
+  const Mask white =
+    Threshold(maskImage, [](int r, int g, int b) { return r > 200 && g > 200 && b > 200; });
+  const Mask black =
+    Threshold(maskImage, [](int r, int g, int b) { return r < 30 && g < 30 && b < 30; });
   NPR_CHECK(Count(white) + Count(black) == static_cast<long long>(size) * size,
     "the mask is white or black only");
-  NPR_CHECK(white == ink, "the mask's white pixels are the ink's pixels (" << Count(white) << " vs "
-                                                                          << Count(ink) << ")");
+  NPR_CHECK(white == ink,
+    "the mask's white pixels are the ink's pixels (" << Count(white) << " vs " << Count(ink)
+                                                     << ")");
 
   // Picking still works under the inked style.
   vtkNew<vtkPropPicker> picker;
@@ -289,9 +293,9 @@ int EncodingStorage()
     scene.Render();
     vtkTextureObject* geometry = scene.Pass->GetGBufferPass()->GetGeometryTexture();
     const unsigned int format = geometry ? geometry->GetInternalFormat(VTK_FLOAT, 1, false) : 0;
-    NPR_CHECK(format == entry.second, vtkNPREdgePass::GetEncodingName(entry.first)
-        << ": internal format 0x" << std::hex << format << " instead of 0x" << entry.second
-        << std::dec);
+    NPR_CHECK(format == entry.second,
+      vtkNPREdgePass::GetEncodingName(entry.first) << ": internal format 0x" << std::hex << format
+                                                   << " instead of 0x" << entry.second << std::dec);
   }
   NPR_CHECK(vtkNPREdgePass::GetEncodingFromName("packed16") == vtkNPREdgePass::PACKED16 &&
       vtkNPREdgePass::GetEncodingFromName("packed4") == -1,
@@ -437,15 +441,26 @@ int main(int argc, char* argv[])
     { "depth-remap", DepthRemap },
     { "windows", Windows },
     { "baseline-inked-bunny",
-      [] { return Baseline("bunny.ply", "inked_bunny", vtkNPRPass::INKED, vtkNPREdgePass::FLOAT); } },
+      []
+      { return Baseline("bunny.ply", "inked_bunny", vtkNPRPass::INKED, vtkNPREdgePass::FLOAT); } },
     { "baseline-inked-cad",
-      [] { return Baseline("cad_part.vtp", "inked_cad_part", vtkNPRPass::INKED, vtkNPREdgePass::FLOAT); } },
+      [] {
+        return Baseline("cad_part.vtp", "inked_cad_part", vtkNPRPass::INKED, vtkNPREdgePass::FLOAT);
+      } },
     { "baseline-packed8-cad",
-      [] { return Baseline("cad_part.vtp", "packed8_cad_part", vtkNPRPass::EDGES, vtkNPREdgePass::PACKED8); } },
+      []
+      {
+        return Baseline(
+          "cad_part.vtp", "packed8_cad_part", vtkNPRPass::EDGES, vtkNPREdgePass::PACKED8);
+      } },
     { "baseline-packed16-bunny",
-      [] { return Baseline("bunny.ply", "packed16_bunny", vtkNPRPass::EDGES, vtkNPREdgePass::PACKED16); } },
+      [] {
+        return Baseline("bunny.ply", "packed16_bunny", vtkNPRPass::EDGES, vtkNPREdgePass::PACKED16);
+      } },
     { "baseline-half-cad",
-      [] { return Baseline("cad_part.vtp", "half_cad_part", vtkNPRPass::EDGES, vtkNPREdgePass::HALF); } },
+      [] {
+        return Baseline("cad_part.vtp", "half_cad_part", vtkNPRPass::EDGES, vtkNPREdgePass::HALF);
+      } },
   };
   return nprRunTestCase(argc, argv, cases);
 }

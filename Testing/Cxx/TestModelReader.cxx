@@ -15,9 +15,9 @@
 #include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkVersionMacros.h"
 #include "vtkStringOutputWindow.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkVersionMacros.h"
 
 #include <cmath>
 #include <fstream>
@@ -135,7 +135,8 @@ int main(int argc, char* argv[])
   {
     vtkSmartPointer<vtkNPRModelReader> reader = Read(dir + "/relative_vt_vn.obj");
     const std::string error = reader->GetErrorMessage();
-#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0) && VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 3, 1)
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0) &&                                            \
+  VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 3, 1)
     NPR_CHECK(error.find("VTK 9.3.0's OBJ reader misreads") != std::string::npos,
       "relative_vt_vn.obj on VTK 9.3.0: '" << error << "'");
 #else

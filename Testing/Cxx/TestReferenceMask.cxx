@@ -65,7 +65,8 @@ int MaskCube(bool parallel)
     (seen ? visible : hidden).push_back({ a[0], a[1], b[0], b[1] });
   }
   NPR_CHECK(visible.size() == 9 && hidden.size() == 3, "a cube seen from a corner shows 9 edges");
-  auto nearest = [](const std::vector<std::array<double, 4>>& edges, const double p[2]) {
+  auto nearest = [](const std::vector<std::array<double, 4>>& edges, const double p[2])
+  {
     double best = 1e300;
     for (const auto& e : edges)
     {
@@ -170,9 +171,8 @@ std::vector<std::array<double, 2>> ConvexHull(std::vector<std::array<double, 2>>
   std::vector<std::array<double, 2>> hull(2 * points.size());
   size_t k = 0;
   auto cross = [](const std::array<double, 2>& o, const std::array<double, 2>& a,
-                 const std::array<double, 2>& b) {
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-  };
+                 const std::array<double, 2>& b)
+  { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); };
   for (size_t i = 0; i < points.size(); ++i)
   {
     while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0)
@@ -204,7 +204,8 @@ int MaskOcclusion()
   camera->SetFocalPoint(0, 0, 0);
   camera->SetViewUp(0, 1, 0);
   camera->SetClippingRange(1.0, 20.0);
-  auto copy = [&](vtkImageData* mask) {
+  auto copy = [&](vtkImageData* mask)
+  {
     const unsigned char* p = static_cast<unsigned char*>(mask->GetScalarPointer());
     return std::vector<unsigned char>(p, p + scene.Width * scene.Height);
   };

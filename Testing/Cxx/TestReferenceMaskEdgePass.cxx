@@ -58,7 +58,8 @@ int MaskAgainstEdgePass(const char* model)
   scene.Window->Render();
   vtkSmartPointer<vtkImageData> rendered = nprCaptureImage(scene.Window);
   vtkImageData* reference = scene.Mask();
-  auto near = [](vtkImageData* image, int x, int y, int radius, int threshold) {
+  auto near = [](vtkImageData* image, int x, int y, int radius, int threshold)
+  {
     for (int oy = -radius; oy <= radius; ++oy)
     {
       for (int ox = -radius; ox <= radius; ++ox)

@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Ordinary VTK scenes under every style (issue 19): polygons with point, cell and no normals,
 // lines, points, a wireframe, tubes, an outline around an isosurface, cube axes with grid lines and
-// labels, text, a scalar bar, glyphs, an image actor, a vtkAxesActor, a volume, a translucent actor with and
-// without depth peeling and two layers. Fails on any VTK error or warning and on a crash; checks
-// that lines and annotations keep their own look: a white line stays white, a 1-px outline stays
-// about 1 px wide, white grid lines and 3D labels stay white, and the translucent blend, the
+// labels, text, a scalar bar, glyphs, an image actor, a vtkAxesActor, a volume, a translucent actor
+// with and without depth peeling and two layers. Fails on any VTK error or warning and on a crash;
+// checks that lines and annotations keep their own look: a white line stays white, a 1-px outline
+// stays about 1 px wide, white grid lines and 3D labels stay white, and the translucent blend, the
 // volume, the axes and the second layer keep their colours.
 //
 // usage: TestSceneMatrix STYLE [DATA_DIR]   (STYLE: a vtkNPRPass style name, '+' written '-')
@@ -27,6 +27,7 @@
 #include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
 #include "vtkLineSource.h"
+#include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkOutlineFilter.h"
 #include "vtkPiecewiseFunction.h"
@@ -37,7 +38,6 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
-#include "vtkLookupTable.h"
 #include "vtkRTAnalyticSource.h"
 #include "vtkScalarBarActor.h"
 #include "vtkShaderProperty.h"
@@ -554,8 +554,8 @@ int RunStyle()
   CompositedKinds();
   // A vtkDataSetMapper gets the same lines (or ink) as a vtkPolyDataMapper.
   const long long polyData = SphereLinePixels(false), dataSet = SphereLinePixels(true);
-  std::cout << "sphere lines: " << dataSet << " dark pixels through a vtkDataSetMapper, " << polyData
-            << " through a vtkPolyDataMapper\n";
+  std::cout << "sphere lines: " << dataSet << " dark pixels through a vtkDataSetMapper, "
+            << polyData << " through a vtkPolyDataMapper\n";
   NPR_CHECK(std::abs(dataSet - polyData) <= polyData / 10 + 5,
     "vtkDataSetMapper: " << dataSet << " dark pixels instead of " << polyData);
   // The grid lines and the 3D labels stay white and thin: as many bright pixels as without the

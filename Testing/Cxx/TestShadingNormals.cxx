@@ -77,7 +77,8 @@ double LargestDeviation(vtkPolyData* mesh)
     const double lp = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
     const double ln = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     const double c = (p[0] * n[0] + p[1] * n[1] + p[2] * n[2]) / (lp * ln);
-    largest = std::max(largest, std::acos(std::min(1.0, std::max(-1.0, c))) * 180.0 / 3.14159265358979);
+    largest =
+      std::max(largest, std::acos(std::min(1.0, std::max(-1.0, c))) * 180.0 / 3.14159265358979);
   }
   return normals ? largest : 180.0;
 }
@@ -89,8 +90,9 @@ int KeepsUsable()
   filter->SetInputData(sphere);
   filter->Update();
   NPR_CHECK(!filter->GetComputedNormals(), "usable normals are kept");
-  NPR_CHECK(filter->GetOutput()->GetPointData()->GetNormals() ==
-      sphere->GetPointData()->GetNormals(), "the same array passes through");
+  NPR_CHECK(
+    filter->GetOutput()->GetPointData()->GetNormals() == sphere->GetPointData()->GetNormals(),
+    "the same array passes through");
   return nprTestResult();
 }
 
@@ -145,7 +147,8 @@ int Invalid()
   filter->SetInputData(empty);
   filter->Update();
   NPR_CHECK(filter->GetOutput()->GetNumberOfPoints() == 0 &&
-      !filter->GetOutput()->GetPointData()->GetNormals(), "empty input, empty output");
+      !filter->GetOutput()->GetPointData()->GetNormals(),
+    "empty input, empty output");
   return nprTestResult();
 }
 }

@@ -223,7 +223,8 @@ int SketchDepth()
   scene.Render();
   const std::vector<float> depth = scene.Depth();
 
-  auto lookup = [&](const std::vector<float>& image, double x, double y, bool& ambiguous) {
+  auto lookup = [&](const std::vector<float>& image, double x, double y, bool& ambiguous)
+  {
     // Too close to a texel border for float and double to agree on the texel: not checked.
     ambiguous =
       ambiguous || std::abs(x - std::round(x)) < 1e-3 || std::abs(y - std::round(y)) < 1e-3;

@@ -37,9 +37,8 @@ int main(int argc, char* argv[])
     { "baseline-toon-bunny",
       [] { return Baseline("bunny.ply", "toon_bunny", vtkNPRPass::TOON, false); } },
     { "baseline-toon-cad",
-      [] {
-        return Baseline("cad_part.vtp", "toon_edges_cad_part", vtkNPRPass::TOON_EDGES, false);
-      } },
+      []
+      { return Baseline("cad_part.vtp", "toon_edges_cad_part", vtkNPRPass::TOON_EDGES, false); } },
     { "baseline-sketch-bunny",
       [] { return Baseline("bunny.ply", "sketch_bunny", vtkNPRPass::SKETCH, false); } },
     { "baseline-sketch-cad",

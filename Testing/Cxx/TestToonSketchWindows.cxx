@@ -23,7 +23,8 @@ using Scene = nprPassScene;
 int Windows()
 {
   const double color[3] = { 0.9, 0.6, 0.3 };
-  auto check = [&](Scene& scene, const std::string& what) {
+  auto check = [&](Scene& scene, const std::string& what)
+  {
     auto image = scene.Render();
     long long object = 0, dark = 0;
     for (int y = 0; y < scene.Height; ++y)

@@ -8,8 +8,8 @@
 #include "vtkImageData.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRModelReader.h"
-#include "vtkNPRShadingNormals.h"
 #include "vtkNPRRenderWindowFactory.h"
+#include "vtkNPRShadingNormals.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPNGReader.h"
@@ -53,8 +53,7 @@ std::string& nprTestDataDir()
   return folder;
 }
 
-int nprRunTestCase(
-  int argc, char* argv[], const std::map<std::string, std::function<int()>>& cases)
+int nprRunTestCase(int argc, char* argv[], const std::map<std::string, std::function<int()>>& cases)
 {
   const auto found = argc >= 2 ? cases.find(argv[1]) : cases.end();
   if (found == cases.end())
@@ -262,8 +261,8 @@ int& nprTestFailures()
 
 vtkSmartPointer<vtkRenderWindow> nprCreateTestWindow(int width, int height, const char* backend)
 {
-  auto window = vtkSmartPointer<vtkRenderWindow>::Take(
-    vtkNPRRenderWindowFactory::CreateRenderWindow(backend));
+  auto window =
+    vtkSmartPointer<vtkRenderWindow>::Take(vtkNPRRenderWindowFactory::CreateRenderWindow(backend));
   if (window)
   {
     window->SetMultiSamples(0);
@@ -390,8 +389,7 @@ nprImageDifference nprCompareImages(
   int a[3], b[3];
   image->GetDimensions(a);
   baseline->GetDimensions(b);
-  result.SizeMatches =
-    a[0] == b[0] && a[1] == b[1] && image->GetNumberOfScalarComponents() >= 3 &&
+  result.SizeMatches = a[0] == b[0] && a[1] == b[1] && image->GetNumberOfScalarComponents() >= 3 &&
     baseline->GetNumberOfScalarComponents() >= 3;
   if (!result.SizeMatches)
   {
@@ -459,8 +457,8 @@ bool nprWritePNG(vtkImageData* image, const std::string& path)
 
 std::string nprBaselinePath(const std::string& dir, const std::string& name)
 {
-  const std::string release = dir + "/" + name + ".vtk-" + std::to_string(VTK_MAJOR_VERSION) +
-    "." + std::to_string(VTK_MINOR_VERSION) + ".png";
+  const std::string release = dir + "/" + name + ".vtk-" + std::to_string(VTK_MAJOR_VERSION) + "." +
+    std::to_string(VTK_MINOR_VERSION) + ".png";
   return std::ifstream(release) ? release : dir + "/" + name + ".png";
 }
 

@@ -136,15 +136,15 @@ inline int nprTestResult()
             << " failed checks)\n";
   return nprTestFailures() ? 1 : 0;
 }
-#define NPR_CHECK(condition, message)                                                            \
-  do                                                                                             \
-  {                                                                                              \
-    if (!(condition))                                                                            \
-    {                                                                                            \
-      ++nprTestFailures();                                                                       \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #condition ": " << message  \
-                << "\n";                                                                         \
-    }                                                                                            \
+#define NPR_CHECK(condition, message)                                                              \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(condition))                                                                              \
+    {                                                                                              \
+      ++nprTestFailures();                                                                         \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #condition ": " << message    \
+                << "\n";                                                                           \
+    }                                                                                              \
   } while (0)
 
 // A window from vtkNPRRenderWindowFactory (backend nullptr: the default), multisampling off.
@@ -155,9 +155,9 @@ vtkSmartPointer<vtkImageData> nprCaptureImage(vtkRenderWindow* window);
 
 struct nprPixelStatistics
 {
-  long long Pixels = 0;           // all pixels
-  long long ObjectPixels = 0;     // pixels farther than 30 (max channel) from the background
-  double MinObjectLuminance = 0;  // 0..255, over object pixels
+  long long Pixels = 0;          // all pixels
+  long long ObjectPixels = 0;    // pixels farther than 30 (max channel) from the background
+  double MinObjectLuminance = 0; // 0..255, over object pixels
   double MaxObjectLuminance = 0;
   double MeanObjectColor[3] = { 0, 0, 0 };
   int Bounds[4] = { 0, 0, 0, 0 }; // xmin, xmax, ymin, ymax of the object pixels
