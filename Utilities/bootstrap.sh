@@ -12,6 +12,7 @@
 #
 # `test` runs these stages, in this order (NPR_STAGES, a comma-separated list, picks some; the
 # default is all of them, which CI runs; NPR_STAGES=host is the quick local run):
+#   format         every tracked C++ file follows .clang-format (Utilities/check-format.sh)
 #   host           Debian 12, VTK 9.1: build and all tests, in $NPR_BUILD_DIR
 #   fuzz           Debian 12: npr-fuzz-readers (AddressSanitizer, UBSan) on mutants of every model
 #                  format for NPR_FUZZ_SECONDS (default 120) from NPR_FUZZ_SEED (default 1);
@@ -44,7 +45,7 @@ packages=(libvtk9-dev python3-vtk9 libegl-dev libegl-mesa0 libgl1-mesa-dri libop
   libosmesa6-dev cmake ninja-build g++ xvfb xauth)
 # debootstrap for the chroots of the other releases (installed here, before their set-ups start
 # side by side).
-if [[ $task == test ]]; then packages+=(debootstrap); fi
+if [[ $task == test ]]; then packages+=(debootstrap clang-format); fi
 missing=()
 for package in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
@@ -60,7 +61,7 @@ if ((${#missing[@]})); then
   "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-all_stages=(host fuzz sanitize vtk-9.3 vtk-9.6 paraview-5.11 paraview-5.13 paraview-6.1)
+all_stages=(format host fuzz sanitize vtk-9.3 vtk-9.6 paraview-5.11 paraview-5.13 paraview-6.1)
 IFS=, read -r -a stages <<<"${NPR_STAGES:-$(IFS=,; echo "${all_stages[*]}")}"
 if [[ ${NPR_SKIP_SANITIZE:-0} != 0 ]]; then
   for i in "${!stages[@]}"; do
@@ -109,6 +110,12 @@ record_ctest() {
   if [[ $line =~ ([0-9]+)\ tests?\ failed\ out\ of\ ([0-9]+) ]]; then
     stage_total[$stage]=${BASH_REMATCH[2]}
     stage_passed[$stage]=$((BASH_REMATCH[2] - BASH_REMATCH[1]))
+  fi
+  # The format stage: "check-format: 117 of 117 files follow .clang-format".
+  line=$(grep -E "[0-9]+ of [0-9]+ files follow" "$log" 2>/dev/null | tail -n 1 || true)
+  if [[ $line =~ ([0-9]+)\ of\ ([0-9]+)\ files\ follow ]]; then
+    stage_total[$stage]=${BASH_REMATCH[2]}
+    stage_passed[$stage]=${BASH_REMATCH[1]}
   fi
   # The fuzz stage: "...; 8 of 8 formats passed".
   line=$(grep -E "[0-9]+ of [0-9]+ formats passed" "$log" 2>/dev/null | tail -n 1 || true)
@@ -217,7 +224,13 @@ run_test_stages() {
   for stage in "${stages[@]}"; do
     echo "bootstrap: ---- stage $stage ----"
     start=$SECONDS
-    if [[ $stage == host ]]; then
+    if [[ $stage == format ]]; then
+      if bash "$source_dir/Utilities/check-format.sh" 2>&1 | tee "$build_dir/logs/format.log"; then
+        stage_status[$stage]=passed
+      else
+        stage_status[$stage]=FAILED
+      fi
+    elif [[ $stage == host ]]; then
       run_host_stage && stage_status[$stage]=passed || stage_status[$stage]=FAILED
     elif [[ $stage == fuzz ]]; then
       run_fuzz_stage && stage_status[$stage]=passed || stage_status[$stage]=FAILED
