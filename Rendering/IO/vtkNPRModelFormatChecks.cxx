@@ -722,7 +722,18 @@ std::string vtkNPRModelFormatChecks::CheckLegacyVTK(const std::string& fileName)
     }
     if (!cellSection)
     {
-      break; // point and cell data, fields: VTK's reader checks what it needs of them
+      if (keyword == "POINT_DATA" || keyword == "CELL_DATA" || keyword == "FIELD")
+      {
+        break; // point and cell data, fields: VTK's reader checks what it needs of them
+      }
+      // vtkDataReader takes any word that starts with a keyword for it ("POINTS<garbage>"),
+      // and VTK 9.1 then crashed reading on.
+      std::string shown;
+      for (char c : keyword.substr(0, 40))
+      {
+        shown += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+      }
+      return bad + "unknown keyword '" + shown + "'";
     }
     if (points < 0)
     {
