@@ -498,6 +498,18 @@ private:
     const long long mode = Integer(primitive["mode"], what + " mode", 0, 6, false, 4);
     this->Index(primitive["material"], what + " material", "materials");
     const long long indices = this->Index(primitive["indices"], what + " indices", "accessors");
+    // The vertices (or indices) the mode needs, as the glTF specification has it: VTK 9.1's
+    // loader read past the end of a triangle list of 8 vertices.
+    const long long elements = indices < 0 ? position.Count : this->Accessors[indices].Count;
+    const bool fits = mode == 0 || (mode == 1 && elements % 2 == 0) ||
+      ((mode == 2 || mode == 3) && elements >= 2) || (mode == 4 && elements % 3 == 0) ||
+      ((mode == 5 || mode == 6) && elements >= 3);
+    if (!fits)
+    {
+      throw Invalid(what + " has " + std::to_string(elements) +
+        (indices < 0 ? " vertices" : " indices") + ", which mode " + std::to_string(mode) +
+        " cannot use");
+    }
     if (indices < 0)
     {
       return;
@@ -508,7 +520,6 @@ private:
     {
       throw Invalid(what + " indices is not an unsigned integer SCALAR accessor");
     }
-    (void)mode;
     const std::string& buffer = this->Buffers[this->ViewBuffer[index.BufferView]];
     const int size = ComponentSize(index.ComponentType);
     for (long long k = 0; k < index.Count; ++k)

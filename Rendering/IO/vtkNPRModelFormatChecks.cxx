@@ -2,7 +2,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkNPRModelFormatChecks.h"
 
+#include "vtkLZ4DataCompressor.h"
+#include "vtkLZMADataCompressor.h"
+#include "vtkSmartPointer.h"
 #include "vtkVersionMacros.h"
+#include "vtkZLibDataCompressor.h"
 
 #include <algorithm>
 #include <cctype>
@@ -929,6 +933,7 @@ std::string vtkNPRModelFormatChecks::CheckVTP(const std::string& fileName)
     return bad + "AppendedData without its '_' marker";
   }
   const size_t start = underscore + 1;
+  vtkSmartPointer<vtkDataCompressor> compressor;
   auto readHeader = [&](size_t at, unsigned long long& value)
   {
     if (at > text.size() || text.size() - at < headerSize)
@@ -978,6 +983,7 @@ std::string vtkNPRModelFormatChecks::CheckVTP(const std::string& fileName)
     }
     at += 3 * headerSize;
     unsigned long long compressedBytes = 0;
+    std::vector<unsigned long long> blockBytes;
     for (unsigned long long b = 0; b < blocks; ++b, at += headerSize)
     {
       if (!readHeader(at, value) || value > available)
@@ -985,6 +991,7 @@ std::string vtkNPRModelFormatChecks::CheckVTP(const std::string& fileName)
         return bad + name + " has a broken compression header";
       }
       compressedBytes += value;
+      blockBytes.push_back(value);
     }
     const unsigned long long bytes =
       blocks ? (blocks - 1) * blockSize + (lastSize ? lastSize : blockSize) : 0;
@@ -995,6 +1002,44 @@ std::string vtkNPRModelFormatChecks::CheckVTP(const std::string& fileName)
       return bad + name + " declares " + std::to_string(bytes) + " bytes in " +
         std::to_string(compressedBytes) + " compressed bytes (the file has " +
         std::to_string(text.size()) + ")";
+    }
+    // Every block must decompress to its size: VTK 9.1's vtkXMLDataParser dereferences a null
+    // buffer after a block that does not.
+    if (!compressor)
+    {
+      const std::string kind = XMLAttribute(text, file, "compressor");
+      if (kind == "vtkZLibDataCompressor")
+      {
+        compressor = vtkSmartPointer<vtkZLibDataCompressor>::New();
+      }
+      else if (kind == "vtkLZ4DataCompressor")
+      {
+        compressor = vtkSmartPointer<vtkLZ4DataCompressor>::New();
+      }
+      else if (kind == "vtkLZMADataCompressor")
+      {
+        compressor = vtkSmartPointer<vtkLZMADataCompressor>::New();
+      }
+      else
+      {
+        return bad + "unknown compressor '" + kind.substr(0, 40) + "'";
+      }
+    }
+    std::vector<unsigned char> block;
+    for (unsigned long long b = 0; b < blocks; ++b)
+    {
+      const unsigned long long size = b + 1 == blocks && lastSize ? lastSize : blockSize;
+      block.resize(static_cast<size_t>(size));
+      const size_t got = size == 0
+        ? 0
+        : compressor->Uncompress(reinterpret_cast<const unsigned char*>(text.data() + at),
+            static_cast<size_t>(blockBytes[b]), block.data(), static_cast<size_t>(size));
+      if (got != size)
+      {
+        return bad + name + ": compressed block " + std::to_string(b + 1) + " of " +
+          std::to_string(blocks) + " does not decompress to its " + std::to_string(size) + " bytes";
+      }
+      at += static_cast<size_t>(blockBytes[b]);
     }
   }
   return "";

@@ -506,7 +506,6 @@ int main(int argc, char* argv[])
     MakeDirectories(crashes);
   }
 
-  Mutator mutator(seed, pool);
   Counts total;
   int failedFormats = 0;
   const auto begin = std::chrono::steady_clock::now();
@@ -519,6 +518,9 @@ int main(int argc, char* argv[])
       std::cerr << "npr-fuzz-readers: no seed of format '" << format << "' in " << seeds << "\n";
       return 2;
     }
+    // A mutator per format, so that a format's mutants do not depend on how many the formats
+    // before it ran in their time: mutant k of a format is the same in every run of a --seed.
+    Mutator mutator(seed * 1000003u + f, pool);
     const std::string dir = work + "/" + format;
     MakeDirectories(dir);
     // Every seed, unmutated, must read where the mutants are written: else nothing is fuzzed.
