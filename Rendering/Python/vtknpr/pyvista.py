@@ -29,7 +29,7 @@ __all__ = ["enable_npr", "disable_npr", "npr_pass", "SETTINGS"]
 
 STYLES = ("shaded", "edges", "toon", "toon+edges", "sketch", "inked")
 
-# PyVista's names for the passes' settings: name -> (what it sets, kind).
+# PyVista-style names of the passes' settings, and what each sets.
 SETTINGS = {
     "line_width": "width of every line in pixels at 72 DPI (edges and ink)",
     "line_color": "colour of every line (silhouettes, creases, contours, ink)",
@@ -125,6 +125,14 @@ def _pyvista_passes(renderer):
     return getattr(renderer, "_render_passes", None)
 
 
+def _incompatible_passes(passes):
+    """The PyVista passes turned on in `passes` that cannot be combined with a style."""
+    clash = [label for name, label in _INCOMPATIBLE.items() if name in passes._passes]
+    if passes._shadow_map_pass is not None:
+        clash.append("shadows (enable_shadows)")
+    return clash
+
+
 class _Binding:
     """Keeps a vtkNPRPass in a renderer's chain of passes whatever PyVista does to it."""
 
@@ -149,9 +157,7 @@ class _Binding:
             if self.renderer.GetPass() is not self.npr:
                 self.renderer.SetPass(self.npr)
             return
-        clash = [label for name, label in _INCOMPATIBLE.items() if name in passes._passes]
-        if passes._shadow_map_pass is not None:
-            clash.append("shadows (enable_shadows)")
+        clash = _incompatible_passes(passes)
         if clash:
             warnings.warn("vtknpr: %s cannot be combined with the style %r: the style is off "
                           "for this renderer" % (", ".join(clash), self.npr.GetStyleName(
@@ -214,9 +220,7 @@ def enable_npr(target, style="edges", **settings):
     renderer = _renderer_of(target)
     passes = _pyvista_passes(renderer)
     if passes is not None:
-        clash = [label for name, label in _INCOMPATIBLE.items() if name in passes._passes]
-        if passes._shadow_map_pass is not None:
-            clash.append("shadows (enable_shadows)")
+        clash = _incompatible_passes(passes)
         if clash:
             raise RuntimeError("enable_npr: %s cannot be combined with an NPR style; disable it "
                                "first" % ", ".join(clash))
