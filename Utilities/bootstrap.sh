@@ -26,6 +26,13 @@
 #   paraview-5.11  Debian 12, ParaView 5.11: the plugin and its tests, in $NPR_BUILD_DIR/paraview-5.11
 #   paraview-5.13  Debian 13, ParaView 5.13: the same, in $NPR_BUILD_DIR/paraview-5.13
 #   paraview-6.1   Debian unstable, ParaView 6.1: the same, in $NPR_BUILD_DIR/paraview-6.1
+#   packages-bookworm  Debian 12: the Debian packages (cpack) of the host build, in
+#                  $NPR_BUILD_DIR/packages, and of the ParaView 5.11 plugin, in
+#                  $NPR_BUILD_DIR/paraview-5.11/packages; installed into clean Debian 12 chroots
+#                  and checked there (Utilities/check-packages.sh)
+#   packages-trixie    Debian 13: the same for the vtk-9.3 and paraview-5.13 builds
+#   packages-sid       Debian unstable: the same for the vtk-9.6 and paraview-6.1 builds
+#                  NPR_SKIP_PACKAGES=1 leaves the three package stages out (quick local runs)
 # The chroots (Utilities/debian-chroot.sh) are made once in /var/cache/vtknpr and kept; their
 # set-up starts in the background while the host builds. Every stage runs even when an earlier one
 # failed; a table of tests passed and seconds per stage closes the run, and the exit status is
@@ -46,7 +53,8 @@ packages=(libvtk9-dev python3-vtk9 libegl-dev libegl-mesa0 libgl1-mesa-dri libop
   libosmesa6-dev cmake ninja-build g++ xvfb xauth)
 # debootstrap for the chroots of the other releases (installed here, before their set-ups start
 # side by side).
-if [[ $task == test ]]; then packages+=(debootstrap clang-format); fi
+# dpkg-dev and file for CPack's Debian packages (dpkg-shlibdeps).
+if [[ $task == test ]]; then packages+=(debootstrap clang-format dpkg-dev file); fi
 missing=()
 for package in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
@@ -62,14 +70,16 @@ if ((${#missing[@]})); then
   "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-all_stages=(format host fuzz sanitize vtk-9.3 vtk-9.6 paraview-5.11 paraview-5.13 paraview-6.1)
+all_stages=(format host fuzz sanitize vtk-9.3 vtk-9.6 paraview-5.11 paraview-5.13 paraview-6.1
+  packages-bookworm packages-trixie packages-sid)
 IFS=, read -r -a stages <<<"${NPR_STAGES:-$(IFS=,; echo "${all_stages[*]}")}"
-if [[ ${NPR_SKIP_SANITIZE:-0} != 0 ]]; then
-  for i in "${!stages[@]}"; do
-    if [[ ${stages[i]} == sanitize ]]; then unset 'stages[i]'; fi
-  done
-  stages=("${stages[@]}")
-fi
+for i in "${!stages[@]}"; do
+  if [[ ${NPR_SKIP_SANITIZE:-0} != 0 && ${stages[i]} == sanitize ]] ||
+    [[ ${NPR_SKIP_PACKAGES:-0} != 0 && ${stages[i]} == packages-* ]]; then
+    unset 'stages[i]'
+  fi
+done
+stages=("${stages[@]}")
 for stage in "${stages[@]}"; do
   if [[ " ${all_stages[*]} " != *" $stage "* ]]; then
     echo "bootstrap: unknown stage '$stage' in NPR_STAGES (${all_stages[*]})" >&2
@@ -84,20 +94,30 @@ chroot_of() {
     paraview-5.13) echo trixie-paraview ;;
   esac
 }
+# The build stages whose packages a package stage installs.
+builds_of() {
+  case $1 in
+    packages-bookworm) echo host paraview-5.11 ;;
+    packages-trixie) echo vtk-9.3 paraview-5.13 ;;
+    packages-sid) echo vtk-9.6 paraview-6.1 ;;
+  esac
+}
 
 # Starts the set-up of every chroot the chosen stages need, in the background (downloads overlap
 # the host's build); each logs to $build_dir/logs/chroot-NAME.log.
 declare -A chroot_setup_pid=() chroot_setup_status=()
 start_chroot_setups() {
   [[ $task == test ]] || return 0
-  local stage name
+  local stage name build
   for stage in "${stages[@]}"; do
-    name=$(chroot_of "$stage")
-    if [[ -n $name && -z ${chroot_setup_pid[$name]:-} ]]; then
-      bash "$source_dir/Utilities/debian-chroot.sh" "$name" setup \
-        >"$build_dir/logs/chroot-$name.log" 2>&1 &
-      chroot_setup_pid[$name]=$!
-    fi
+    for build in $stage $(builds_of "$stage"); do
+      name=$(chroot_of "$build")
+      if [[ -n $name && -z ${chroot_setup_pid[$name]:-} ]]; then
+        bash "$source_dir/Utilities/debian-chroot.sh" "$name" setup \
+          >"$build_dir/logs/chroot-$name.log" 2>&1 &
+        chroot_setup_pid[$name]=$!
+      fi
+    done
   done
 }
 
@@ -115,6 +135,12 @@ record_ctest() {
   # The format stage: "check-format: 117 of 117 files follow .clang-format".
   line=$(grep -E "[0-9]+ of [0-9]+ files follow" "$log" 2>/dev/null | tail -n 1 || true)
   if [[ $line =~ ([0-9]+)\ of\ ([0-9]+)\ files\ follow ]]; then
+    stage_total[$stage]=${BASH_REMATCH[2]}
+    stage_passed[$stage]=${BASH_REMATCH[1]}
+  fi
+  # The package stages: "check-packages: bookworm: 9 of 9 checks passed".
+  line=$(grep -E "[0-9]+ of [0-9]+ checks passed" "$log" 2>/dev/null | tail -n 1 || true)
+  if [[ $line =~ ([0-9]+)\ of\ ([0-9]+)\ checks\ passed ]]; then
     stage_total[$stage]=${BASH_REMATCH[2]}
     stage_passed[$stage]=${BASH_REMATCH[1]}
   fi
@@ -182,36 +208,34 @@ run_sanitize_stage() {
   return "${PIPESTATUS[0]}"
 }
 
-# Waits (once) for the set-up of a chroot started by start_chroot_setups.
-wait_chroot_setup() {
-  local name=$1
-  if [[ -z ${chroot_setup_status[$name]:-} ]]; then
-    chroot_setup_status[$name]=0
-    wait "${chroot_setup_pid[$name]}" || chroot_setup_status[$name]=$?
-  fi
-  return "${chroot_setup_status[$name]}"
+# Waits (once) for the set-ups of the chroots a stage uses, started by start_chroot_setups; their
+# exit statuses land in chroot_setup_status.
+wait_stage_chroots() {
+  local build name
+  for build in $1 $(builds_of "$1"); do
+    name=$(chroot_of "$build")
+    if [[ -n $name && -n ${chroot_setup_pid[$name]:-} && -z ${chroot_setup_status[$name]:-} ]]; then
+      chroot_setup_status[$name]=0
+      wait "${chroot_setup_pid[$name]}" || chroot_setup_status[$name]=$?
+    fi
+  done
 }
 
-# Builds and tests in a chroot: the module and its tests, or the ParaView plugin.
-run_chroot_stage() {
-  local stage=$1 name configure ctest_options
+# Runs "$2" in the chroot of build stage $1, after configuring (once) and building there; the
+# output goes to stdout.
+run_in_chroot_build() {
+  local stage=$1 command=$2 name configure
   name=$(chroot_of "$stage")
-  if ! wait_chroot_setup "$name"; then
+  # wait_stage_chroots waited for it, in the main shell (this runs in a pipeline's subshell).
+  if ((${chroot_setup_status[$name]:-0} != 0)); then
     echo "bootstrap: the $name chroot could not be set up:" >&2
     tail -n 20 "$build_dir/logs/chroot-$name.log" >&2
     return 1
   fi
   if [[ $stage == paraview-* ]]; then
     configure="-DNPR_BUILD_PARAVIEW_PLUGIN=ON"
-    # Each plugin test runs in an X server of its own; a rare failure to open the display is
-    # retried once (Documentation/paraview.md).
-    ctest_options="--repeat until-pass:2"
   else
     configure="-DPython3_EXECUTABLE=/usr/bin/python3"
-    # VTK 9.6's own EGL window sometimes draws garbage in the frame after ReleaseGraphicsResources
-    # while a second window is alive (npr.egl.windows, 7 of 40 runs): a failed test is run again,
-    # up to twice; one that fails three times still fails the stage (Documentation/releases.md).
-    ctest_options="-j 2 --repeat until-pass:3"
   fi
   mkdir -p "$build_dir/$stage"
   NPR_CHROOT_BUILD=$build_dir/$stage bash "$source_dir/Utilities/debian-chroot.sh" "$name" run "
@@ -220,8 +244,47 @@ run_chroot_stage() {
       cmake -S /src -B /build -G Ninja -DCMAKE_BUILD_TYPE=Release $configure
     fi
     cmake --build /build -j $(nproc)
-    ctest --test-dir /build --output-on-failure $ctest_options" 2>&1 | tee "$build_dir/logs/$stage.log"
+    $command" 2>&1
+}
+
+# Builds and tests in a chroot: the module and its tests, or the ParaView plugin.
+run_chroot_stage() {
+  local stage=$1 ctest_options
+  if [[ $stage == paraview-* ]]; then
+    # Each plugin test runs in an X server of its own; a rare failure to open the display is
+    # retried once (Documentation/paraview.md).
+    ctest_options="--repeat until-pass:2"
+  else
+    # VTK 9.6's own EGL window sometimes draws garbage in the frame after ReleaseGraphicsResources
+    # while a second window is alive (npr.egl.windows, 7 of 40 runs): a failed test is run again,
+    # up to twice; one that fails three times still fails the stage (Documentation/releases.md).
+    ctest_options="-j 2 --repeat until-pass:3"
+  fi
+  run_in_chroot_build "$stage" "ctest --test-dir /build --output-on-failure $ctest_options" |
+    tee "$build_dir/logs/$stage.log"
   return "${PIPESTATUS[0]}"
+}
+
+# A package stage: cpack in the release's two build folders (built first where needed), then the
+# packages installed into clean chroots of the release and checked (Utilities/check-packages.sh).
+run_package_stage() {
+  local stage=$1 release=${1#packages-} build folders=()
+  for build in $(builds_of "$stage"); do
+    if [[ $build == host ]]; then
+      build_host && rm -rf "$build_dir/packages" &&
+        (cd "$build_dir" && cpack -G DEB) || return 1
+      folders+=("$build_dir/packages")
+    else
+      run_in_chroot_build "$build" "rm -rf /build/packages && cd /build && cpack -G DEB" ||
+        return 1
+      folders+=("$build_dir/$build/packages")
+    fi
+  done
+  echo "bootstrap: $release packages:"
+  for build in "${folders[@]}"; do
+    ls -l "$build"/*.deb | awk '{ print "  " $5 " bytes  " $NF }'
+  done
+  bash "$source_dir/Utilities/check-packages.sh" "$release" "${folders[@]}"
 }
 
 run_test_stages() {
@@ -229,6 +292,7 @@ run_test_stages() {
   for stage in "${stages[@]}"; do
     echo "bootstrap: ---- stage $stage ----"
     start=$SECONDS
+    wait_stage_chroots "$stage"
     if [[ $stage == format ]]; then
       if bash "$source_dir/Utilities/check-format.sh" 2>&1 | tee "$build_dir/logs/format.log"; then
         stage_status[$stage]=passed
@@ -241,6 +305,9 @@ run_test_stages() {
       run_fuzz_stage && stage_status[$stage]=passed || stage_status[$stage]=FAILED
     elif [[ $stage == sanitize ]]; then
       run_sanitize_stage && stage_status[$stage]=passed || stage_status[$stage]=FAILED
+    elif [[ $stage == packages-* ]]; then
+      run_package_stage "$stage" 2>&1 | tee "$build_dir/logs/$stage.log"
+      ((PIPESTATUS[0] == 0)) && stage_status[$stage]=passed || stage_status[$stage]=FAILED
     else
       run_chroot_stage "$stage" && stage_status[$stage]=passed || stage_status[$stage]=FAILED
     fi

@@ -6,6 +6,7 @@
 #   bash Utilities/debian-chroot.sh NAME setup            # create it, install what is missing
 #   bash Utilities/debian-chroot.sh NAME run 'command'    # setup, then run 'command' in /src
 #   bash Utilities/debian-chroot.sh NAME refresh          # apt-get update + upgrade (on request)
+#   bash Utilities/debian-chroot.sh NAME fresh            # (clean chroots) a new copy of the base
 #   bash Utilities/debian-chroot.sh list                  # the chroots and what they hold
 #
 # NAME               Debian    what it holds
@@ -13,10 +14,17 @@
 # trixie-paraview    13        ParaView 5.13 (bundles VTK 9.3.1; conflicts with python3-vtk9)
 # bookworm-paraview  12        ParaView 5.11 (bundles VTK 9.2; conflicts with the host's VTK 9.1)
 # sid                unstable  VTK 9.6 and ParaView 6.1 (which uses the system VTK); no OSMesa
+# bookworm-clean     12        nothing but Debian's minimal system: where vtkNPR's own packages
+# trixie-clean       13        are installed and checked (Utilities/check-packages.sh); `fresh`
+# sid-clean          unstable  makes a new copy of the release's base before each check
 #
 # A chroot is made once with debootstrap in $NPR_CHROOT_BASE/NAME (default /var/cache/vtknpr)
 # and kept. Packages are installed only when missing, and the package lists are updated only
 # then, so a release whose archive moves on (Debian unstable) changes only on `refresh`.
+# The first debootstrap of a release also keeps a copy of that minimal system, before any package
+# is added, in $NPR_CHROOT_BASE/base-SUITE: the clean chroots are copies of it. Downloaded
+# packages stay in each chroot's apt cache, so that a clean chroot installs them without fetching
+# them again.
 # The archive is the one the host's own apt sources use for its release (NPR_DEBIAN_MIRROR
 # overrides it). Needs root (uses sudo otherwise). Mounts are made in a private mount namespace
 # and vanish when the command exits.
@@ -29,14 +37,14 @@ set -Eeuo pipefail
 trap 'echo "debian-chroot: ${name:-}: failed at line $LINENO" >&2' ERR
 
 usage() {
-  echo "usage: bash Utilities/debian-chroot.sh NAME setup|refresh | NAME run 'command' | list" >&2
+  echo "usage: bash Utilities/debian-chroot.sh NAME setup|refresh|fresh | NAME run 'command' | list" >&2
   exit 2
 }
 name=${1:-}
 action=${2:-}
 if [[ $name == list ]]; then
   action=list
-elif [[ $action != setup && $action != run && $action != refresh ]]; then
+elif [[ $action != setup && $action != run && $action != refresh && $action != fresh ]]; then
   usage
 fi
 if ((EUID != 0)); then
@@ -46,8 +54,9 @@ fi
 source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 base=${NPR_CHROOT_BASE:-/var/cache/vtknpr}
 
-# What every chroot needs to build and test: the toolchain, Mesa's EGL (software), Xvfb.
-common=(cmake ninja-build g++ xvfb xauth libegl-mesa0 libgl1-mesa-dri libopengl-dev)
+# What every chroot needs to build and test: the toolchain, Mesa's EGL (software), Xvfb; and to
+# make Debian packages with CPack (dpkg-shlibdeps, file).
+common=(cmake ninja-build g++ xvfb xauth libegl-mesa0 libgl1-mesa-dri libopengl-dev dpkg-dev file)
 # VTK and its Python bindings; EGL's development files for the module's own EGL window (VTK < 9.4).
 # The ParaView plugin compiles the passes only and needs neither.
 vtk=(libvtk9-dev python3-vtk9 libegl-dev)
@@ -65,15 +74,17 @@ case $name in
   trixie-paraview) suite=trixie packages=("${common[@]}" "${paraview[@]}") ;;
   bookworm-paraview) suite=bookworm packages=("${common[@]}" "${paraview[@]}") ;;
   sid) suite=sid packages=("${common[@]}" "${vtk[@]}" "${paraview[@]}" "${pyvista[@]}") ;;
+  bookworm-clean | trixie-clean | sid-clean) suite=${name%-clean} packages=() ;;
   list)
-    for known in trixie-vtk trixie-paraview bookworm-paraview sid; do
+    for known in trixie-vtk trixie-paraview bookworm-paraview sid bookworm-clean trixie-clean \
+      sid-clean; do
       state="not created"
       [[ -x $base/$known/usr/bin/apt-get ]] && state="$base/$known"
       echo "$known: $state"
     done
     exit 0
     ;;
-  *) echo "debian-chroot: unknown chroot '$name' (trixie-vtk, trixie-paraview, bookworm-paraview, sid)" >&2
+  *) echo "debian-chroot: unknown chroot '$name' (trixie-vtk, trixie-paraview, bookworm-paraview, sid, bookworm-clean, trixie-clean, sid-clean)" >&2
     exit 2 ;;
 esac
 root=$base/$name
@@ -120,24 +131,55 @@ in_chroot() {
   ' in-chroot "$root" "$source_dir" "$1" "${NPR_CHROOT_BUILD:-}"
 }
 
+# Debian's minimal system of the release in $1 (debootstrap); a copy of it is kept as the
+# release's base (first come, first kept: chroots of one release may be set up side by side).
+debootstrap_into() {
+  local target=$1 mirror kept
+  mirror=${NPR_DEBIAN_MIRROR:-$(host_mirror)}
+  if [[ -z $mirror ]]; then
+    echo "debian-chroot: no Debian archive in the host's apt sources; set NPR_DEBIAN_MIRROR" >&2
+    exit 1
+  fi
+  if ! command -v debootstrap >/dev/null; then
+    echo "debian-chroot: installing debootstrap"
+    DEBIAN_FRONTEND=noninteractive apt-get update -q
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends debootstrap
+  fi
+  echo "debian-chroot: debootstrap $suite into $target"
+  rm -rf "$target" "$target.partial"
+  mkdir -p "$base"
+  debootstrap --variant=minbase "$suite" "$target.partial" "$mirror"
+  # Keep what apt downloads (a clean chroot reuses it), and no documentation.
+  rm -f "$target.partial/etc/apt/apt.conf.d/docker-clean"
+  printf '%s\n' 'path-exclude=/usr/share/doc/*' 'path-include=/usr/share/doc/*/copyright' \
+    'path-exclude=/usr/share/man/*' 'path-exclude=/usr/share/locale/*' \
+    >"$target.partial/etc/dpkg/dpkg.cfg.d/01-vtknpr-nodoc"
+  echo 'force-unsafe-io' >"$target.partial/etc/dpkg/dpkg.cfg.d/02-vtknpr-unsafe-io"
+  kept=$base/base-$suite
+  if [[ ! -x $kept/usr/bin/apt-get ]]; then
+    rm -rf "$kept.partial.$$"
+    cp -a "$target.partial" "$kept.partial.$$"
+    mv -T "$kept.partial.$$" "$kept" 2>/dev/null || rm -rf "$kept.partial.$$"
+  fi
+  mv "$target.partial" "$target"
+}
+
+# A new copy of the release's base (debootstrap once when there is none).
+fresh() {
+  local kept=$base/base-$suite
+  if [[ ! -x $kept/usr/bin/apt-get ]]; then
+    debootstrap_into "$root"
+    return
+  fi
+  if mountpoint -q "$root"; then umount "$root"; fi # Utilities/check-packages.sh's overlay
+  rm -rf "$root"
+  cp -a "$kept" "$root"
+}
+
 setup() {
-  local start=$SECONDS mirror
+  local start=$SECONDS
   if [[ ! -x $root/usr/bin/apt-get ]]; then
-    mirror=${NPR_DEBIAN_MIRROR:-$(host_mirror)}
-    if [[ -z $mirror ]]; then
-      echo "debian-chroot: no Debian archive in the host's apt sources; set NPR_DEBIAN_MIRROR" >&2
-      exit 1
-    fi
-    if ! command -v debootstrap >/dev/null; then
-      echo "debian-chroot: installing debootstrap"
-      DEBIAN_FRONTEND=noninteractive apt-get update -q
-      DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends debootstrap
-    fi
-    echo "debian-chroot: debootstrap $suite into $root"
-    rm -rf "$root" "$root.partial"
-    mkdir -p "$base"
-    debootstrap --variant=minbase "$suite" "$root.partial" "$mirror"
-    mv "$root.partial" "$root"
+    if [[ $name == *-clean ]]; then fresh; else debootstrap_into "$root"; fi
   fi
   local installed missing
   # dpkg-query fails for a package it has never seen: that one is missing too.
@@ -147,7 +189,7 @@ setup() {
   if [[ -n ${missing// /} ]]; then
     echo "debian-chroot: $name: installing $missing"
     in_chroot "apt-get $apt_update_options update -q && apt-get install -y -q \
-      --no-install-recommends $missing && apt-get clean"
+      --no-install-recommends $missing"
     echo "debian-chroot: $name ready in $((SECONDS - start)) s"
   fi
 }
@@ -156,7 +198,14 @@ case $action in
   setup) setup ;;
   refresh)
     setup
-    in_chroot "apt-get $apt_update_options update -q && apt-get upgrade -y -q && apt-get clean"
+    in_chroot "apt-get $apt_update_options update -q && apt-get upgrade -y -q"
+    ;;
+  fresh)
+    if [[ $name != *-clean ]]; then
+      echo "debian-chroot: only the clean chroots are made fresh (bookworm-clean, trixie-clean, sid-clean)" >&2
+      exit 2
+    fi
+    fresh
     ;;
   run)
     setup

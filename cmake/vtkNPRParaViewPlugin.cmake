@@ -42,3 +42,19 @@ paraview_plugin_build(
   LIBRARY_SUBDIRECTORY "${PARAVIEW_PLUGIN_SUBDIR}"
   INSTALL_HEADERS OFF
   PLUGINS ${npr_plugins})
+
+# The folders of ParaView's libraries (Debian keeps them apart, in paraview-X.Y/), where
+# dpkg-shlibdeps finds what the plugin links when it makes the package's dependencies.
+set(npr_paraview_library_dirs)
+foreach (npr_target IN ITEMS ParaView::RemotingViews VTK::RenderingOpenGL2)
+  if (TARGET "${npr_target}")
+    get_target_property(npr_location "${npr_target}" LOCATION)
+    if (npr_location)
+      get_filename_component(npr_location "${npr_location}" DIRECTORY)
+      list(APPEND npr_paraview_library_dirs "${npr_location}")
+    endif ()
+  endif ()
+endforeach ()
+list(REMOVE_DUPLICATES npr_paraview_library_dirs)
+# Debian package: cpack -G DEB (Documentation/packages.md).
+include("${CMAKE_CURRENT_LIST_DIR}/vtkNPRPackaging.cmake")
