@@ -29,7 +29,16 @@ print("NPRView:", found.get("NPRView"))
 assert "NPRView" in found, sorted(found)
 loaded, plugin_version, path = found["NPRView"]
 assert loaded, "NPRView not loaded"
-assert plugin_version == version, (plugin_version, version)
+from paraview import servermanager  # noqa: E402
+
+if plugin_version == "" and servermanager.vtkSMProxyManager.GetVersionMajor() >= 6:
+    # ParaView 6 reports the versions its plugin configuration files give, none for a plugin
+    # loaded by path; the version the plugin returns (GetPluginVersionString) is in its binary.
+    with open(plugin, "rb") as binary:
+        assert b"\0" + version.encode() + b"\0" in binary.read(), "no version string in " + plugin
+    print("NPRView: ParaView 6 reports no version for it; NPRView.so carries %s" % version)
+else:
+    assert plugin_version == version, (plugin_version, version)
 assert os.path.realpath(path) == os.path.realpath(plugin), (path, plugin)
 
 view, _ = create_scene()
