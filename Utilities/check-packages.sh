@@ -24,7 +24,8 @@
 # name is the list's hash) goes under the check's overlay, and apt then installs vtkNPR's packages
 # alone, which the script verifies. When the resolution changes (new packages, new dependencies,
 # a moved archive) a new layer is made from the minimal system. NPR_PACKAGE_LAYERS=0 installs
-# everything from the minimal system every time.
+# everything from the minimal system every time; without overlayfs (or NPR_PACKAGE_OVERLAY=0)
+# the clean chroot is a copy of the minimal system, without layers.
 set -Eeuo pipefail
 trap 'echo "check-packages: failed at line $LINENO" >&2' ERR
 
@@ -100,18 +101,33 @@ fi
 unmount_clean() {
   if mountpoint -q "$root"; then umount "$root"; fi
   rm -rf "$upper" "$upper.work"
+  if [[ $use_overlay == 0 ]]; then rm -rf "$root"; fi
 }
 mount_clean() {
   local lower="" layer
   unmount_clean
+  if [[ $use_overlay == 0 ]]; then # a copy of the minimal system instead
+    rm -rf "$root"
+    cp -a "$base/base-$release" "$root"
+    return
+  fi
   for layer in "$@"; do lower+="$layer:"; done
   lower+=$base/base-$release
   mkdir -p "$root" "$upper" "$upper.work"
   mount -t overlay overlay -o "lowerdir=$lower,upperdir=$upper,workdir=$upper.work" "$root"
 }
+# Without overlayfs (a kernel without it, NPR_PACKAGE_OVERLAY=0) each clean chroot is a copy of
+# the minimal system and everything is installed every time.
+use_overlay=${NPR_PACKAGE_OVERLAY:-1}
+if ! grep -qw overlay /proc/filesystems; then
+  echo "check-packages: no overlayfs here: each clean chroot is a copy, without layers"
+  use_overlay=0
+fi
+if [[ $use_overlay == 0 ]]; then NPR_PACKAGE_LAYERS=0; fi
 trap 'unmount_clean' EXIT
 
-# apt's package lists of the build chroots, and the packages downloaded so far, in the chroot.
+# apt's package lists ($lists: the first build chroot's, or those a set had to update), and the
+# packages downloaded so far, in the chroot.
 prepare_apt() {
   local chroot_name
   for chroot_name in "${build_chroots[@]}"; do
@@ -120,8 +136,7 @@ prepare_apt() {
       exit 1
     fi
   done
-  find "$base/${build_chroots[0]}/var/lib/apt/lists" -maxdepth 1 -type f ! -name lock \
-    -exec cp -t "$root/var/lib/apt/lists/" {} +
+  find "$lists" -maxdepth 1 -type f ! -name lock -exec cp -t "$root/var/lib/apt/lists/" {} +
   for chroot_name in "${build_chroots[@]}"; do
     link_debs "$base/$chroot_name/var/cache/apt/archives" "$root/var/cache/apt/archives"
   done
@@ -154,20 +169,47 @@ for set in "${sets[@]}"; do
   log=$incoming/log
   status=0
 
+  lists=$base/${build_chroots[0]}/var/lib/apt/lists
   layer_options=()
   if [[ ${NPR_PACKAGE_LAYERS:-1} != 0 ]]; then
-    # What apt would install besides vtkNPR's packages, with versions.
+    # What apt would install besides vtkNPR's packages, with versions (dependencies.txt), and
+    # the layer that holds exactly that. A new layer's packages are downloaded first: when the
+    # kept lists name versions the archive no longer has, the lists are updated and the
+    # dependencies resolved again.
     mount_clean
     prepare_apt
-    in_clean "apt-get install -s $apt_options /build/*.deb ${tools[*]} ||
-      { apt-get -o Acquire::Check-Valid-Until=false update -q >/dev/null &&
-        apt-get install -s $apt_options /build/*.deb ${tools[*]}; }" >"$incoming/resolution.txt" 2>&1 ||
-      { cat "$incoming/resolution.txt"; exit 1; }
-    awk -v own=" ${own[*]} " '/^Inst / && index(own, " " $2 " ") == 0 {
-        version = $3; sub(/^\(/, "", version); print $2 "=" version }' \
-      "$incoming/resolution.txt" | sort >"$incoming/dependencies.txt"
-    key=$(sha256sum "$incoming/dependencies.txt" | cut -c1-16)
-    layer=$layers/$release-$key
+    for attempt in kept updated; do
+      if [[ $attempt == updated ]]; then
+        echo "check-packages: $release: the kept package lists fail; updating them"
+        in_clean "apt-get -o Acquire::Check-Valid-Until=false update -q" >"$log" 2>&1 ||
+          { tail -n 20 "$log"; exit 1; }
+        mkdir -p "$incoming/lists"
+        find "$root/var/lib/apt/lists" -maxdepth 1 -type f ! -name lock \
+          -exec cp -t "$incoming/lists/" {} +
+        lists=$incoming/lists
+      fi
+      if ! in_clean "apt-get install -s $apt_options /build/*.deb ${tools[*]}" \
+        >"$incoming/resolution.txt" 2>&1; then
+        [[ $attempt == kept ]] && continue
+        cat "$incoming/resolution.txt"
+        exit 1
+      fi
+      awk -v own=" ${own[*]} " '/^Inst / && index(own, " " $2 " ") == 0 {
+          version = $3; sub(/^\(/, "", version); print $2 "=" version }' \
+        "$incoming/resolution.txt" | sort >"$incoming/dependencies.txt"
+      key=$(sha256sum "$incoming/dependencies.txt" | cut -c1-16)
+      layer=$layers/$release-$key
+      [[ -d $layer ]] && break
+      if in_clean "apt-get install --download-only $apt_options \$(cat /build/dependencies.txt)" \
+        >"$log" 2>&1; then
+        link_debs "$root/var/cache/apt/archives" "$apt_cache"
+        break
+      fi
+      if [[ $attempt == updated ]]; then
+        tail -n 20 "$log"
+        exit 1
+      fi
+    done
     if [[ ! -d $layer ]]; then
       echo "check-packages: $release: a new layer of $(wc -l <"$incoming/dependencies.txt") dependencies ($layer)"
       printf '%s\n' "${tools[@]}" >"$incoming/tools.txt"
