@@ -42,7 +42,7 @@ if (($# == 0)); then
   exit 2
 fi
 if ((EUID != 0)); then
-  exec sudo --preserve-env=NPR_CHROOT_BASE,NPR_DEBIAN_MIRROR bash "${BASH_SOURCE[0]}" "$release" "$@"
+  exec sudo --preserve-env=NPR_CHROOT_BASE,NPR_DEBIAN_MIRROR,NPR_PACKAGE_LAYERS,NPR_PACKAGE_OVERLAY bash "${BASH_SOURCE[0]}" "$release" "$@"
 fi
 source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 base=${NPR_CHROOT_BASE:-/var/cache/vtknpr}
@@ -89,12 +89,9 @@ link_debs() {
 layers=$base/layers
 mkdir -p "$layers"
 upper=$base/$clean.upper
-# The minimal system of the release, kept by the first debootstrap of a build chroot (a machine
-# whose chroots predate it makes one now).
-if [[ ! -x $base/base-$release/usr/bin/apt-get ]]; then
-  bash "$source_dir/Utilities/debian-chroot.sh" "$clean" fresh
-  rm -rf "$root"
-fi
+# The minimal system of the release, made with its build chroots (a machine whose chroots
+# predate it makes one now).
+bash "$source_dir/Utilities/debian-chroot.sh" "$clean" base
 
 # The clean chroot: an overlay of the layers $@ (uppermost first) and the release's minimal
 # system, with the empty upper layer $upper, at $root.

@@ -6,7 +6,7 @@
 #   bash Utilities/debian-chroot.sh NAME setup            # create it, install what is missing
 #   bash Utilities/debian-chroot.sh NAME run 'command'    # setup, then run 'command' in /src
 #   bash Utilities/debian-chroot.sh NAME refresh          # apt-get update + upgrade (on request)
-#   bash Utilities/debian-chroot.sh NAME fresh            # (clean chroots) a new copy of the base
+#   bash Utilities/debian-chroot.sh NAME base             # only the release's minimal system
 #   bash Utilities/debian-chroot.sh list                  # the chroots and what they hold
 #
 # NAME               Debian    what it holds
@@ -15,16 +15,16 @@
 # bookworm-paraview  12        ParaView 5.11 (bundles VTK 9.2; conflicts with the host's VTK 9.1)
 # sid                unstable  VTK 9.6 and ParaView 6.1 (which uses the system VTK); no OSMesa
 # bookworm-clean     12        nothing but Debian's minimal system: where vtkNPR's own packages
-# trixie-clean       13        are installed and checked (Utilities/check-packages.sh); `fresh`
-# sid-clean          unstable  makes a new copy of the release's base before each check
+# trixie-clean       13        are installed and checked (Utilities/check-packages.sh mounts
+# sid-clean          unstable  them as overlays on the release's base for each check)
 #
 # A chroot is made once with debootstrap in $NPR_CHROOT_BASE/NAME (default /var/cache/vtknpr)
 # and kept. Packages are installed only when missing, and the package lists are updated only
 # then, so a release whose archive moves on (Debian unstable) changes only on `refresh`.
-# The first debootstrap of a release also keeps a copy of that minimal system, before any package
-# is added, in $NPR_CHROOT_BASE/base-SUITE: the clean chroots are copies of it. Downloaded
-# packages stay in each chroot's apt cache, so that a clean chroot installs them without fetching
-# them again.
+# debootstrap makes each release's minimal system once, in $NPR_CHROOT_BASE/base-SUITE, and a
+# chroot starts as a copy of it; the base is kept as it is, before any package is added, for the
+# clean chroots. Downloaded packages stay in each chroot's apt cache, so that a clean chroot
+# installs them without fetching them again.
 # The archive is the one the host's own apt sources use for its release (NPR_DEBIAN_MIRROR
 # overrides it). Needs root (uses sudo otherwise). Mounts are made in a private mount namespace
 # and vanish when the command exits.
@@ -37,14 +37,14 @@ set -Eeuo pipefail
 trap 'echo "debian-chroot: ${name:-}: failed at line $LINENO" >&2' ERR
 
 usage() {
-  echo "usage: bash Utilities/debian-chroot.sh NAME setup|refresh|fresh | NAME run 'command' | list" >&2
+  echo "usage: bash Utilities/debian-chroot.sh NAME setup|refresh|base | NAME run 'command' | list" >&2
   exit 2
 }
 name=${1:-}
 action=${2:-}
 if [[ $name == list ]]; then
   action=list
-elif [[ $action != setup && $action != run && $action != refresh && $action != fresh ]]; then
+elif [[ $action != setup && $action != run && $action != refresh && $action != base ]]; then
   usage
 fi
 if ((EUID != 0)); then
@@ -131,10 +131,11 @@ in_chroot() {
   ' in-chroot "$root" "$source_dir" "$1" "${NPR_CHROOT_BUILD:-}"
 }
 
-# Debian's minimal system of the release in $1 (debootstrap); a copy of it is kept as the
-# release's base (first come, first kept: chroots of one release may be set up side by side).
-debootstrap_into() {
-  local target=$1 mirror kept
+# The release's minimal system, $NPR_CHROOT_BASE/base-SUITE, made once with debootstrap (chroots
+# of one release may be set up side by side: the first to finish is kept).
+make_base() {
+  local kept=$base/base-$suite mirror partial
+  [[ -x $kept/usr/bin/apt-get ]] && return 0
   mirror=${NPR_DEBIAN_MIRROR:-$(host_mirror)}
   if [[ -z $mirror ]]; then
     echo "debian-chroot: no Debian archive in the host's apt sources; set NPR_DEBIAN_MIRROR" >&2
@@ -145,41 +146,26 @@ debootstrap_into() {
     DEBIAN_FRONTEND=noninteractive apt-get update -q
     DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends debootstrap
   fi
-  echo "debian-chroot: debootstrap $suite into $target"
-  rm -rf "$target" "$target.partial"
+  partial=$kept.partial.$$
+  echo "debian-chroot: debootstrap $suite into $kept"
+  rm -rf "$partial"
   mkdir -p "$base"
-  debootstrap --variant=minbase "$suite" "$target.partial" "$mirror"
+  debootstrap --variant=minbase "$suite" "$partial" "$mirror"
   # Keep what apt downloads (a clean chroot reuses it), and no documentation.
-  rm -f "$target.partial/etc/apt/apt.conf.d/docker-clean"
+  rm -f "$partial/etc/apt/apt.conf.d/docker-clean"
   printf '%s\n' 'path-exclude=/usr/share/doc/*' 'path-include=/usr/share/doc/*/copyright' \
     'path-exclude=/usr/share/man/*' 'path-exclude=/usr/share/locale/*' \
-    >"$target.partial/etc/dpkg/dpkg.cfg.d/01-vtknpr-nodoc"
-  echo 'force-unsafe-io' >"$target.partial/etc/dpkg/dpkg.cfg.d/02-vtknpr-unsafe-io"
-  kept=$base/base-$suite
-  if [[ ! -x $kept/usr/bin/apt-get ]]; then
-    rm -rf "$kept.partial.$$"
-    cp -a "$target.partial" "$kept.partial.$$"
-    mv -T "$kept.partial.$$" "$kept" 2>/dev/null || rm -rf "$kept.partial.$$"
-  fi
-  mv "$target.partial" "$target"
-}
-
-# A new copy of the release's base (debootstrap once when there is none).
-fresh() {
-  local kept=$base/base-$suite
-  if [[ ! -x $kept/usr/bin/apt-get ]]; then
-    debootstrap_into "$root"
-    return
-  fi
-  if mountpoint -q "$root"; then umount "$root"; fi # Utilities/check-packages.sh's overlay
-  rm -rf "$root"
-  cp -a "$kept" "$root"
+    >"$partial/etc/dpkg/dpkg.cfg.d/01-vtknpr-nodoc"
+  echo 'force-unsafe-io' >"$partial/etc/dpkg/dpkg.cfg.d/02-vtknpr-unsafe-io"
+  mv -T "$partial" "$kept" 2>/dev/null || rm -rf "$partial"
 }
 
 setup() {
   local start=$SECONDS
   if [[ ! -x $root/usr/bin/apt-get ]]; then
-    if [[ $name == *-clean ]]; then fresh; else debootstrap_into "$root"; fi
+    make_base
+    rm -rf "$root"
+    cp -a "$base/base-$suite" "$root"
   fi
   local installed missing
   # dpkg-query fails for a package it has never seen: that one is missing too.
@@ -200,13 +186,7 @@ case $action in
     setup
     in_chroot "apt-get $apt_update_options update -q && apt-get upgrade -y -q"
     ;;
-  fresh)
-    if [[ $name != *-clean ]]; then
-      echo "debian-chroot: only the clean chroots are made fresh (bookworm-clean, trixie-clean, sid-clean)" >&2
-      exit 2
-    fi
-    fresh
-    ;;
+  base) make_base ;;
   run)
     setup
     if [[ -n ${NPR_CHROOT_BUILD:-} ]]; then mkdir -p "$NPR_CHROOT_BUILD"; fi

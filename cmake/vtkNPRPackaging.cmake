@@ -43,14 +43,10 @@ endif ()
 set(CPACK_GENERATOR "DEB")
 set(CPACK_PACKAGE_NAME "vtknpr")
 set(CPACK_PACKAGE_VENDOR "the vtkNPR developers")
-set(CPACK_PACKAGE_VERSION "${PROJECT_VERSION}")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
   "Non-photorealistic rendering for VTK: line drawings, toon shading, sketchy drawings")
-set(CPACK_RESOURCE_FILE_LICENSE "${PROJECT_SOURCE_DIR}/LICENSE")
 set(CPACK_PACKAGE_DIRECTORY "${CMAKE_BINARY_DIR}/packages")
 set(CPACK_PACKAGING_INSTALL_PREFIX "/usr")
-# Only what the install rules name: no staging of the build's own prefix.
-set(CPACK_SET_DESTDIR OFF)
 
 set(CPACK_DEBIAN_PACKAGE_MAINTAINER "the vtkNPR developers <vtknpr@invalid>")
 set(CPACK_DEBIAN_PACKAGE_SECTION "graphics")
