@@ -83,7 +83,10 @@ check_paraview() {
 case $set_name in
   vtk) check_vtk ;;
   paraview) check_paraview ;;
-  all) check_vtk && check_paraview ;;
+  all)
+    check_vtk
+    check_paraview
+    ;;
   *) echo "check-installed: unknown set '$set_name' (vtk, paraview, all)" >&2; exit 2 ;;
 esac
 echo "check-packages: $passed of $total checks passed"
