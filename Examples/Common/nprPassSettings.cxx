@@ -33,6 +33,7 @@ vtkSmartPointer<vtkNPRPass> nprMakePass(const nprPassSettings& settings)
   sketch->SetUncertainty(settings.Uncertainty);
   sketch->SetNoiseSeed(static_cast<unsigned int>(settings.NoiseSeed));
   sketch->SetNoiseFrequency(settings.NoiseFrequency);
+  sketch->SetNoiseSpace(settings.NoiseSpace);
   sketch->SetPaper(settings.Paper);
   sketch->SetPaperColor(settings.PaperColor);
   pass->SetSketchToonShading(settings.SketchToon);

@@ -6,6 +6,7 @@
 #define nprPassSettings_h
 
 #include "vtkNPREdgePass.h"
+#include "vtkNPRSketchPass.h"
 #include "vtkSmartPointer.h"
 
 #include <string>
@@ -40,6 +41,7 @@ struct nprPassSettings
   double Uncertainty = 3.0;
   int NoiseSeed = 1;
   double NoiseFrequency = 2.0;
+  int NoiseSpace = vtkNPRSketchPass::SURFACE;
   bool Paper = false;
   double PaperColor[3] = { 1.0, 0.98, 0.92 };
   bool SketchToon = false;

@@ -73,6 +73,8 @@ Sketch (--style sketch):
                            (default 3; 0 draws the exact lines on flat colours)
   --noise-seed N           seed of the noise, 0..2147483647 (default 1)
   --noise-frequency F      noise cells per 100 pixels, 0.05..25 (default 2)
+  --noise-space SPACE      surface (the wobble stays on the surfaces as the camera moves) or
+                           screen (fixed to the pixels) (default surface)
   --paper-color COLOR      draw on paper of this colour instead of the background
   --sketch-toon            fill with the toon bands (--toon-bands) instead of flat colours
 )";
@@ -276,6 +278,15 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
     else if (arg == "--noise-seed")
     {
       pass.NoiseSeed = nprParseInteger(arg, arguments.Value(), 0, 2147483647);
+    }
+    else if (arg == "--noise-space")
+    {
+      const std::string space = arguments.Value();
+      if (space != "surface" && space != "screen")
+      {
+        throw nprUsageError("--noise-space expects surface or screen, got '" + space + "'");
+      }
+      pass.NoiseSpace = space == "screen" ? vtkNPRSketchPass::SCREEN : vtkNPRSketchPass::SURFACE;
     }
     else if (arg == "--noise-frequency")
     {

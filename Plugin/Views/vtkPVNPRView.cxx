@@ -78,6 +78,7 @@ vtkPVNPRViewForward(Silhouettes, bool, GetEdgePass(), SetSilhouettes) vtkPVNPRVi
                     vtkPVNPRViewForward(SketchUncertainty, double, GetSketchPass(), SetUncertainty)
                       vtkPVNPRViewForward(
                         SketchNoiseFrequency, double, GetSketchPass(), SetNoiseFrequency)
+                        vtkPVNPRViewForward(SketchNoiseSpace, int, GetSketchPass(), SetNoiseSpace)
                         vtkPVNPRViewForward(SketchPaper, bool, GetSketchPass(), SetPaper)
                           vtkPVNPRViewForwardColor(SketchPaperColor, GetSketchPass(), SetPaperColor)
                             vtkPVNPRViewForward(InkLineWidth, double, GetInkPass(), SetLineWidth)

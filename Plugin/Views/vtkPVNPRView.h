@@ -80,6 +80,7 @@ public:
   void SetSketchUncertainty(double pixels);
   void SetSketchNoiseSeed(int seed);
   void SetSketchNoiseFrequency(double frequency);
+  void SetSketchNoiseSpace(int space);
   void SetSketchPaper(bool on);
   void SetSketchPaperColor(double r, double g, double b);
   ///@}

@@ -5,6 +5,7 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
 #include "vtkNPROpenGL.h"
@@ -12,6 +13,7 @@
 #include "vtkNPRQuadProgram.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLCamera.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -28,6 +30,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <random>
 #include <sstream>
 #include <vector>
@@ -80,6 +84,110 @@ struct GradientNoise
   }
 };
 
+// Periodic 3D Perlin gradient noise over a SurfaceNoiseCells^3 lattice, sampled at
+// SurfaceNoiseTexels per cell: the surface noise's tile, interpolated trilinearly by the texture
+// unit (at 4 texels per cell that departs from the noise by under 5 % of its range).
+constexpr int SurfaceNoiseCells = 16;
+constexpr int SurfaceNoiseTexelsPerCell = 4;
+constexpr int SurfaceNoiseSize = SurfaceNoiseCells * SurfaceNoiseTexelsPerCell;
+
+struct GradientNoise3D
+{
+  std::vector<double> Gradients; // 3 per lattice point
+
+  explicit GradientNoise3D(std::mt19937& random)
+    : Gradients(3 * SurfaceNoiseCells * SurfaceNoiseCells * SurfaceNoiseCells)
+  {
+    for (size_t i = 0; i < this->Gradients.size(); i += 3)
+    {
+      // Uniform on the sphere, from the raw 32-bit outputs (the same on every platform).
+      const double z = random() * (2.0 / 4294967296.0) - 1.0;
+      const double angle = random() * (2.0 * vtkMath::Pi() / 4294967296.0);
+      const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+      this->Gradients[i] = r * std::cos(angle);
+      this->Gradients[i + 1] = r * std::sin(angle);
+      this->Gradients[i + 2] = z;
+    }
+  }
+
+  double Corner(int i, int j, int k, double dx, double dy, double dz) const
+  {
+    constexpr int n = SurfaceNoiseCells;
+    const double* g = &this->Gradients[3 * (((k % n) * n + (j % n)) * n + (i % n))];
+    return g[0] * dx + g[1] * dy + g[2] * dz;
+  }
+
+  // x, y, z in lattice cells, in [0, SurfaceNoiseCells).
+  double operator()(double x, double y, double z) const
+  {
+    const int i = static_cast<int>(std::floor(x));
+    const int j = static_cast<int>(std::floor(y));
+    const int k = static_cast<int>(std::floor(z));
+    const double fx = x - i, fy = y - j, fz = z - k;
+    const double u = GradientNoise::Fade(fx), v = GradientNoise::Fade(fy),
+                 w = GradientNoise::Fade(fz);
+    double planes[2];
+    for (int dk = 0; dk < 2; ++dk)
+    {
+      const double cz = fz - dk;
+      const double n00 = this->Corner(i, j, k + dk, fx, fy, cz);
+      const double n10 = this->Corner(i + 1, j, k + dk, fx - 1.0, fy, cz);
+      const double n01 = this->Corner(i, j + 1, k + dk, fx, fy - 1.0, cz);
+      const double n11 = this->Corner(i + 1, j + 1, k + dk, fx - 1.0, fy - 1.0, cz);
+      const double bottom = n00 + u * (n10 - n00);
+      const double top = n01 + u * (n11 - n01);
+      planes[dk] = bottom + v * (top - bottom);
+    }
+    return planes[0] + w * (planes[1] - planes[0]);
+  }
+};
+
+// The surface noise tile of a seed (two floats per texel, |vector| <= 1). Kept for the last
+// seed asked, as every new pass of the same seed (a window per view) would make it again.
+std::shared_ptr<const std::vector<float>> SurfaceNoiseTile(unsigned int seed)
+{
+  static std::mutex mutex;
+  static unsigned int lastSeed = 0;
+  static std::shared_ptr<const std::vector<float>> last;
+  std::lock_guard<std::mutex> lock(mutex);
+  if (last && lastSeed == seed)
+  {
+    return last;
+  }
+  std::mt19937 random(seed);
+  const GradientNoise3D noiseX(random);
+  const GradientNoise3D noiseY(random);
+  constexpr size_t texels =
+    static_cast<size_t>(SurfaceNoiseSize) * SurfaceNoiseSize * SurfaceNoiseSize;
+  std::vector<double> vectors(2 * texels);
+  double largest = 0.0;
+  size_t index = 0;
+  for (int z = 0; z < SurfaceNoiseSize; ++z)
+  {
+    for (int y = 0; y < SurfaceNoiseSize; ++y)
+    {
+      for (int x = 0; x < SurfaceNoiseSize; ++x, index += 2)
+      {
+        const double at[3] = { static_cast<double>(x) / SurfaceNoiseTexelsPerCell,
+          static_cast<double>(y) / SurfaceNoiseTexelsPerCell,
+          static_cast<double>(z) / SurfaceNoiseTexelsPerCell };
+        vectors[index] = noiseX(at[0], at[1], at[2]);
+        vectors[index + 1] = noiseY(at[0], at[1], at[2]);
+        largest = std::max(largest, std::hypot(vectors[index], vectors[index + 1]));
+      }
+    }
+  }
+  const double scale = largest > 0.0 ? (1.0 - 1e-6) / largest : 0.0;
+  auto tile = std::make_shared<std::vector<float>>(2 * texels);
+  for (size_t i = 0; i < vectors.size(); ++i)
+  {
+    (*tile)[i] = static_cast<float>(vectors[i] * scale);
+  }
+  lastSeed = seed;
+  last = tile;
+  return last;
+}
+
 // The matrix scaled down to operator norm 1 when its norm is larger.
 void NormalisedMatrix(const double m[4], double out[4])
 {
@@ -111,6 +219,8 @@ struct vtkNPRSketchPass::Internals
   bool NoiseValid = false;
   unsigned int NoiseImageSeed = 0;
   unsigned int NoiseTextureSeed = 0;
+  vtkTextureObject* SurfaceNoiseTexture = nullptr;
+  unsigned int SurfaceNoiseTextureSeed = 0;
 };
 
 vtkStandardNewMacro(vtkNPRSketchPass);
@@ -126,6 +236,7 @@ vtkNPRSketchPass::~vtkNPRSketchPass()
   this->SetEdgePass(nullptr);
   for (vtkObject* object : { static_cast<vtkObject*>(this->Internal->CoverageTexture),
          static_cast<vtkObject*>(this->Internal->NoiseTexture),
+         static_cast<vtkObject*>(this->Internal->SurfaceNoiseTexture),
          static_cast<vtkObject*>(this->Internal->Framebuffer) })
   {
     if (object)
@@ -133,6 +244,11 @@ vtkNPRSketchPass::~vtkNPRSketchPass()
       object->Delete();
     }
   }
+}
+
+const char* vtkNPRSketchPass::GetNoiseSpaceAsString() const
+{
+  return this->NoiseSpace == SCREEN ? "screen" : "surface";
 }
 
 double vtkNPRSketchPass::GetEffectiveUncertainty(vtkRenderer* renderer) const
@@ -293,30 +409,17 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
   }
 
   // ---- The noise tile ----
-  vtkImageData* noiseImage = this->GetNoiseImage();
-  if (!internal.NoiseTexture || internal.NoiseTextureSeed != this->NoiseSeed)
-  {
-    if (!internal.NoiseTexture)
-    {
-      internal.NoiseTexture = vtkTextureObject::New();
-    }
-    internal.NoiseTexture->SetContext(window);
-    internal.NoiseTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    internal.NoiseTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    internal.NoiseTexture->SetWrapS(vtkTextureObject::Repeat);
-    internal.NoiseTexture->SetWrapT(vtkTextureObject::Repeat);
-    internal.NoiseTexture->SetInternalFormat(GL_RG32F);
-    internal.NoiseTexture->SetFormat(GL_RG);
-    internal.NoiseTexture->SetDataType(GL_FLOAT);
-    internal.NoiseTexture->Create2DFromRaw(NoiseSize, NoiseSize, 2, VTK_FLOAT,
-      noiseImage->GetPointData()->GetScalars()->GetVoidPointer(0));
-    internal.NoiseTextureSeed = this->NoiseSeed;
-  }
+  const bool surfaceNoise = this->NoiseSpace == SURFACE;
+  vtkTextureObject* noiseTexture =
+    surfaceNoise ? this->PrepareSurfaceNoise(window) : this->PrepareScreenNoise(window);
 
   // ---- The sketch into the current framebuffer ----
   std::ostringstream defines;
+  vtkCamera* camera = renderer->GetActiveCamera();
   defines << "#define NPR_PAPER " << (this->Paper ? 1 : 0) << "\n#define NPR_REMAPPED_DEPTH "
-          << (gbuffer->GetDepthRemapped() ? 1 : 0) << "\n";
+          << (gbuffer->GetDepthRemapped() ? 1 : 0) << "\n#define NPR_SURFACE_NOISE "
+          << (surfaceNoise ? 1 : 0) << "\n#define NPR_PERSPECTIVE "
+          << (camera->GetParallelProjection() ? 0 : 1) << "\n";
   if (internal.Source.empty())
   {
     internal.Source = vtkNPRSketchFS;
@@ -332,13 +435,20 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
   color->Activate();
   depth->Activate();
   internal.CoverageTexture->Activate();
-  internal.NoiseTexture->Activate();
+  noiseTexture->Activate();
   program->SetUniformi("colorTexture", color->GetTextureUnit());
   program->SetUniformi("depthTexture", depth->GetTextureUnit());
   program->SetUniformi("coverageTexture", internal.CoverageTexture->GetTextureUnit());
-  program->SetUniformi("noiseTexture", internal.NoiseTexture->GetTextureUnit());
-  program->SetUniformf("noiseScale", static_cast<float>(this->GetEffectiveNoiseScale(renderer)));
+  program->SetUniformi("noiseTexture", noiseTexture->GetTextureUnit());
   const double amplitude = this->GetEffectiveUncertainty(renderer);
+  if (surfaceNoise)
+  {
+    this->SetSurfaceNoiseUniforms(program, renderer, height, amplitude + lineWidth + 1.0);
+  }
+  else
+  {
+    program->SetUniformf("noiseScale", static_cast<float>(this->GetEffectiveNoiseScale(renderer)));
+  }
   for (int which = 0; which < 2; ++which)
   {
     double m[4];
@@ -383,9 +493,110 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
   color->Deactivate();
   depth->Deactivate();
   internal.CoverageTexture->Deactivate();
-  internal.NoiseTexture->Deactivate();
+  noiseTexture->Deactivate();
   this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
   vtkOpenGLCheckErrorMacro("failed after vtkNPRSketchPass::Render");
+}
+
+vtkTextureObject* vtkNPRSketchPass::PrepareScreenNoise(vtkOpenGLRenderWindow* window)
+{
+  Internals& internal = *this->Internal;
+  vtkImageData* noiseImage = this->GetNoiseImage();
+  if (!internal.NoiseTexture || internal.NoiseTextureSeed != this->NoiseSeed)
+  {
+    if (!internal.NoiseTexture)
+    {
+      internal.NoiseTexture = vtkTextureObject::New();
+    }
+    internal.NoiseTexture->SetContext(window);
+    internal.NoiseTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    internal.NoiseTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    internal.NoiseTexture->SetWrapS(vtkTextureObject::Repeat);
+    internal.NoiseTexture->SetWrapT(vtkTextureObject::Repeat);
+    internal.NoiseTexture->SetInternalFormat(GL_RG32F);
+    internal.NoiseTexture->SetFormat(GL_RG);
+    internal.NoiseTexture->SetDataType(GL_FLOAT);
+    internal.NoiseTexture->Create2DFromRaw(NoiseSize, NoiseSize, 2, VTK_FLOAT,
+      noiseImage->GetPointData()->GetScalars()->GetVoidPointer(0));
+    internal.NoiseTextureSeed = this->NoiseSeed;
+  }
+  return internal.NoiseTexture;
+}
+
+vtkTextureObject* vtkNPRSketchPass::PrepareSurfaceNoise(vtkOpenGLRenderWindow* window)
+{
+  Internals& internal = *this->Internal;
+  if (!internal.SurfaceNoiseTexture || internal.SurfaceNoiseTextureSeed != this->NoiseSeed)
+  {
+    if (!internal.SurfaceNoiseTexture)
+    {
+      internal.SurfaceNoiseTexture = vtkTextureObject::New();
+    }
+    auto tile = SurfaceNoiseTile(this->NoiseSeed);
+    vtkTextureObject* texture = internal.SurfaceNoiseTexture;
+    texture->SetContext(window);
+    texture->SetMinificationFilter(vtkTextureObject::Linear);
+    texture->SetMagnificationFilter(vtkTextureObject::Linear);
+    texture->SetWrapS(vtkTextureObject::Repeat);
+    texture->SetWrapT(vtkTextureObject::Repeat);
+    texture->SetWrapR(vtkTextureObject::Repeat);
+    texture->SetInternalFormat(GL_RG32F);
+    texture->SetFormat(GL_RG);
+    texture->SetDataType(GL_FLOAT);
+    texture->Create3DFromRaw(SurfaceNoiseSize, SurfaceNoiseSize, SurfaceNoiseSize, 2, VTK_FLOAT,
+      const_cast<float*>(tile->data()));
+    internal.SurfaceNoiseTextureSeed = this->NoiseSeed;
+  }
+  return internal.SurfaceNoiseTexture;
+}
+
+void vtkNPRSketchPass::SetSurfaceNoiseUniforms(
+  vtkShaderProgram* program, vtkRenderer* renderer, int height, double reach)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  vtkMatrix4x4 *worldToView, *viewToDevice, *worldToDevice;
+  vtkMatrix3x3* normalMatrix;
+  // The matrices the G-buffer was drawn with, kept by VTK transposed (GLSL's layout).
+  static_cast<vtkOpenGLCamera*>(camera)->GetKeyMatrices(
+    renderer, worldToView, normalMatrix, viewToDevice, worldToDevice);
+  vtkNew<vtkMatrix4x4> deviceToView;
+  vtkMatrix4x4::Invert(viewToDevice, deviceToView);
+  program->SetUniformMatrix("deviceToView", deviceToView);
+
+  // World positions relative to an anchor near the props, on a grid of the noise period at any
+  // octave up to 8 times their size: the noise is the same as without it, with small numbers.
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  double anchor[3] = { 0.0, 0.0, 0.0 };
+  if (vtkMath::AreBoundsInitialized(bounds))
+  {
+    const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(bounds, bounds + 3));
+    if (std::isfinite(diagonal) && diagonal > 0.0)
+    {
+      const double grid = SurfaceNoiseCells * std::exp2(std::ceil(std::log2(8.0 * diagonal)));
+      for (int i = 0; i < 3; ++i)
+      {
+        anchor[i] = std::round(0.5 * (bounds[2 * i] + bounds[2 * i + 1]) / grid) * grid;
+      }
+    }
+  }
+  vtkNew<vtkMatrix4x4> viewToNoise;
+  vtkMatrix4x4::Invert(worldToView, viewToNoise);
+  for (int i = 0; i < 3; ++i)
+  {
+    // Transposed: the translation is the last row.
+    viewToNoise->SetElement(3, i, viewToNoise->GetElement(3, i) - anchor[i]);
+  }
+  program->SetUniformMatrix("viewToNoise", viewToNoise);
+  // A pixel's height in view units (at view depth 1 in perspective): 2 / height NDC units over
+  // the projection's y scale.
+  const double yScale = viewToDevice->GetElement(1, 1);
+  program->SetUniformf(
+    "pixelFootprint", static_cast<float>(yScale != 0.0 ? 2.0 / height / std::abs(yScale) : 0.0));
+  program->SetUniformf(
+    "cellPixels", static_cast<float>(100.0 / this->NoiseFrequency * vtkNPRWindowScale(renderer)));
+  program->SetUniformf("noiseCells", static_cast<float>(SurfaceNoiseCells));
+  program->SetUniformf("noiseReach", static_cast<float>(reach));
 }
 
 void vtkNPRSketchPass::ReleaseGraphicsResources(vtkWindow* window)
@@ -393,7 +604,8 @@ void vtkNPRSketchPass::ReleaseGraphicsResources(vtkWindow* window)
   Internals& internal = *this->Internal;
   internal.CoverageValid = false;
   internal.Sketch.Release(window);
-  for (vtkTextureObject** texture : { &internal.CoverageTexture, &internal.NoiseTexture })
+  for (vtkTextureObject** texture :
+    { &internal.CoverageTexture, &internal.NoiseTexture, &internal.SurfaceNoiseTexture })
   {
     if (*texture)
     {
@@ -417,6 +629,7 @@ void vtkNPRSketchPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Uncertainty: " << this->Uncertainty << "\n";
   os << indent << "NoiseSeed: " << this->NoiseSeed << "\n";
   os << indent << "NoiseFrequency: " << this->NoiseFrequency << "\n";
+  os << indent << "NoiseSpace: " << this->GetNoiseSpaceAsString() << "\n";
   os << indent << "EdgeMatrix: " << this->EdgeMatrix[0] << " " << this->EdgeMatrix[1] << " "
      << this->EdgeMatrix[2] << " " << this->EdgeMatrix[3] << "\n";
   os << indent << "SurfaceMatrix: " << this->SurfaceMatrix[0] << " " << this->SurfaceMatrix[1]

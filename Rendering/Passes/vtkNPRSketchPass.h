@@ -24,11 +24,26 @@
  * translucent props, volumes, overlays and other layers drawn later are depth-tested against the
  * sketch as drawn. Where the paper shows, the depth is the far plane.
  *
- * The noise is Perlin gradient noise made on the CPU from NoiseSeed (a 256 x 256 texel tile of
- * 8 x 8 lattice cells, each of its two components an independent noise): the same seed gives
- * the same image on every run and platform. NoiseFrequency is the number of lattice cells per
- * 100 pixels. Uncertainty and the noise period are scaled like line widths (DPI / 72 x tile
- * scale). With Uncertainty 0 the result is exactly the vtkNPREdgePass image of the same
+ * Where the noise is taken from (NoiseSpace):
+ * - SURFACE (the default): n is a 3D noise of the surface point seen at the pixel (its world
+ *   position, from the G-buffer's depth), so the wobble stays on the surface while the camera
+ *   pans, orbits or zooms, instead of swimming over it (the shower-door effect). A pixel off the
+ *   surface takes the point of the farthest surface within reach (Uncertainty plus the line
+ *   width), so lines drawn next to a silhouette wobble with it. The noise's scale follows the
+ *   pixel size at that depth in powers of two, the two nearest blended, so a cell stays between
+ *   one and two times 100 / NoiseFrequency pixels at any zoom. World positions are taken
+ *   relative to a point near the props (on a grid of the noise period), so large coordinates
+ *   keep their precision. The noise is attached to the world: a prop whose own matrix changes
+ *   moves under its wobble.
+ * - SCREEN: n is a noise of the pixel (the seed paper's choice): the same at every frame,
+ *   whatever moves.
+ *
+ * The noise is Perlin gradient noise made on the CPU from NoiseSeed, each of its two components
+ * an independent noise: in screen space a 256 x 256 texel tile of 8 x 8 lattice cells, in
+ * surface space a 64^3 texel tile of 16^3 cells (interpolated trilinearly by the texture unit).
+ * The same seed gives the same image on every run. NoiseFrequency is the number of lattice
+ * cells per 100 pixels. Uncertainty and the noise period are scaled like line widths (DPI / 72
+ * x tile scale). With Uncertainty 0 the result is exactly the vtkNPREdgePass image of the same
  * G-buffer.
  *
  * @sa vtkNPRPass vtkNPREdgePass vtkNPRGBufferPass vtkNPRToonPass
@@ -43,7 +58,10 @@
 
 class vtkImageData;
 class vtkNPREdgePass;
+class vtkOpenGLRenderWindow;
 class vtkRenderer;
+class vtkShaderProgram;
+class vtkTextureObject;
 
 class VTKRENDERINGNPR_EXPORT vtkNPRSketchPass : public vtkRenderPass
 {
@@ -89,6 +107,23 @@ public:
   vtkGetMacro(NoiseFrequency, double);
   ///@}
 
+  enum NoiseSpaces
+  {
+    SCREEN = 0,
+    SURFACE = 1
+  };
+
+  ///@{
+  /**
+   * Where the noise is attached (see the class description): SURFACE (default) or SCREEN.
+   */
+  vtkSetClampMacro(NoiseSpace, int, SCREEN, SURFACE);
+  vtkGetMacro(NoiseSpace, int);
+  void SetNoiseSpaceToScreen() { this->SetNoiseSpace(SCREEN); }
+  void SetNoiseSpaceToSurface() { this->SetNoiseSpace(SURFACE); }
+  const char* GetNoiseSpaceAsString() const;
+  ///@}
+
   ///@{
   /**
    * The 2x2 matrices (row major: a b c d is [a b; c d]) turning the noise vector into the
@@ -132,8 +167,8 @@ public:
 
   /**
    * The displacement in pixels at pixel (x, y) of the renderer's viewport, as the shader
-   * computes it, for lines (surfaces = false) or surfaces: uncertainty x matrix x n(p), with
-   * the matrices after their normalisation.
+   * computes it in NoiseSpace SCREEN, for lines (surfaces = false) or surfaces: uncertainty x
+   * matrix x n(p), with the matrices after their normalisation.
    */
   void GetDisplacement(vtkRenderer* renderer, int x, int y, bool surfaces, double displacement[2]);
 
@@ -145,6 +180,7 @@ protected:
   double Uncertainty = 3.0;
   unsigned int NoiseSeed = 1;
   double NoiseFrequency = 2.0;
+  int NoiseSpace = SURFACE;
   double EdgeMatrix[4] = { 1.0, 0.0, 0.0, 1.0 };
   double SurfaceMatrix[4] = { -0.6, 0.8, 0.8, 0.6 };
   bool Paper = false;
@@ -153,6 +189,11 @@ protected:
 private:
   vtkNPRSketchPass(const vtkNPRSketchPass&) = delete;
   void operator=(const vtkNPRSketchPass&) = delete;
+
+  vtkTextureObject* PrepareScreenNoise(vtkOpenGLRenderWindow* window);
+  vtkTextureObject* PrepareSurfaceNoise(vtkOpenGLRenderWindow* window);
+  void SetSurfaceNoiseUniforms(
+    vtkShaderProgram* program, vtkRenderer* renderer, int height, double reach);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

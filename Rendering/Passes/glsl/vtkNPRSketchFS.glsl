@@ -10,9 +10,19 @@ in vec2 texCoord; // unused (pixels come from gl_FragCoord) but read: VTK warns 
 uniform sampler2D colorTexture;    // the G-buffer's colour (flat colours)
 uniform sampler2D depthTexture;    // the G-buffer's depth
 uniform sampler2D coverageTexture; // r, g, b: coverage of each line type; a: the lines' depth
-uniform sampler2D noiseTexture;    // 256 x 256 tile, xy: noise vector
 uniform ivec2 viewportOrigin;      // of the renderer in the window
+#if NPR_SURFACE_NOISE
+uniform sampler3D noiseTexture;    // tile of noiseCells^3 lattice cells, xy: noise vector
+uniform float noiseCells;
+uniform mat4 deviceToView;         // inverse projection
+uniform mat4 viewToNoise;          // view to world, relative to the noise's anchor
+uniform float pixelFootprint;      // size of a pixel in view units, at view depth 1 (perspective)
+uniform float cellPixels;          // wanted size of a noise cell in pixels
+uniform float noiseReach;          // how far off the surface a pixel looks for it, in pixels
+#else
+uniform sampler2D noiseTexture;    // 256 x 256 tile, xy: noise vector
 uniform float noiseScale;          // noise texels per pixel
+#endif
 uniform vec4 edgeDisplacement;     // uncertainty x edge matrix, row major
 uniform vec4 surfaceDisplacement;  // uncertainty x surface matrix, row major
 uniform vec3 paperColor;
@@ -20,7 +30,70 @@ uniform vec3 paperColor;
 //NPR::WindowDepth
 //VTK::Output::Dec
 
-vec2 nprNoise(vec2 pixel)
+bool nprInside(ivec2 texel, ivec2 size)
+{
+  return all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, size));
+}
+
+#if NPR_SURFACE_NOISE
+vec3 nprViewPosition(vec2 pixel, float stored, vec2 size)
+{
+  vec2 ndc = (pixel + 0.5) / size * 2.0 - 1.0;
+#if NPR_REMAPPED_DEPTH
+  // Log depth (perspective only): the point of the pixel's ray at that view depth.
+  vec4 near = deviceToView * vec4(ndc, -1.0, 1.0);
+  vec3 onNear = near.xyz / near.w;
+  return onNear * (nprDepthRemap.x * exp(stored * nprDepthRemap.y) / -onNear.z);
+#else
+  vec4 view = deviceToView * vec4(ndc, stored * 2.0 - 1.0, 1.0);
+  return view.xyz / view.w;
+#endif
+}
+
+// The surface point's noise: two octaves a factor 2 apart, chosen and blended by the pixel size
+// there, so that a cell keeps its size on screen within a factor of two under any zoom.
+vec2 nprSurfaceNoise(vec3 view)
+{
+#if NPR_PERSPECTIVE
+  float footprint = pixelFootprint * max(-view.z, 1e-30);
+#else
+  float footprint = pixelFootprint;
+#endif
+  float level = log2(max(footprint * cellPixels, 1e-30));
+  float octave = floor(level);
+  float t = level - octave;
+  vec3 at = (viewToNoise * vec4(view, 1.0)).xyz * (exp2(-octave) / noiseCells);
+  vec2 fine = texture(noiseTexture, at).xy;
+  vec2 coarse = texture(noiseTexture, 0.5 * at).xy;
+  // Blended independent noises keep their spread when divided by this; clamped to |n| <= 1.
+  vec2 n = mix(fine, coarse, t) / sqrt(t * t + (1.0 - t) * (1.0 - t));
+  float length2 = dot(n, n);
+  return length2 > 1.0 ? n * inversesqrt(length2) : n;
+}
+
+vec2 nprNoise(vec2 pixel, ivec2 size)
+{
+  float stored = texelFetch(depthTexture, ivec2(pixel), 0).r;
+  if (stored >= 1.0)
+  {
+    // Off the surface: the farthest surface within reach (along a silhouette, the rim's depth).
+    stored = -1.0;
+    for (int k = 0; k < 8; ++k)
+    {
+      float angle = 0.785398163 * float(k);
+      ivec2 tap = ivec2(floor(pixel + 0.5 + noiseReach * vec2(cos(angle), sin(angle))));
+      float tapDepth = nprInside(tap, size) ? texelFetch(depthTexture, tap, 0).r : 1.0;
+      stored = tapDepth < 1.0 ? max(stored, tapDepth) : stored;
+    }
+    if (stored < 0.0)
+    {
+      return vec2(0.0); // no surface near: no line near either
+    }
+  }
+  return nprSurfaceNoise(nprViewPosition(pixel, stored, vec2(size)));
+}
+#else
+vec2 nprNoise(vec2 pixel, ivec2 size)
 {
   vec2 t = (pixel + 0.5) * noiseScale - 0.5;
   vec2 cell = floor(t);
@@ -33,15 +106,11 @@ vec2 nprNoise(vec2 pixel)
   vec2 n11 = texelFetch(noiseTexture, j, 0).xy;
   return mix(mix(n00, n10, f.x), mix(n01, n11, f.x), f.y);
 }
+#endif
 
 vec2 nprTimes(vec4 m, vec2 v)
 {
   return vec2(m.x * v.x + m.y * v.y, m.z * v.x + m.w * v.y);
-}
-
-bool nprInside(ivec2 texel, ivec2 size)
-{
-  return all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, size));
 }
 
 vec4 nprCoverageAt(ivec2 texel, ivec2 size)
@@ -57,7 +126,7 @@ void main()
   }
   ivec2 size = textureSize(depthTexture, 0);
   vec2 pixel = vec2(ivec2(gl_FragCoord.xy) - viewportOrigin);
-  vec2 noise = nprNoise(pixel);
+  vec2 noise = nprNoise(pixel, size);
 
   // Surfaces: nearest texel at the displaced position.
   ivec2 surfaceTexel = ivec2(floor(pixel + 0.5 + nprTimes(surfaceDisplacement, noise)));

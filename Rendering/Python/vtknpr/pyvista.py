@@ -47,6 +47,7 @@ SETTINGS = {
     "uncertainty": "how far sketch strokes wander, in pixels",
     "noise_frequency": "how quickly sketch strokes wander",
     "noise_seed": "seed of the sketch noise (int)",
+    "noise_space": "'surface' (the wobble stays on the surfaces when the camera moves) or 'screen'",
     "paper": "whether sketches are drawn on paper (bool)",
     "paper_color": "colour of the sketch's paper",
 }
@@ -105,6 +106,11 @@ def _apply(npr, settings):
             sketch.SetNoiseFrequency(float(value))
         elif name == "noise_seed":
             sketch.SetNoiseSeed(int(value))
+        elif name == "noise_space":
+            spaces = {"screen": sketch.SCREEN, "surface": sketch.SURFACE}
+            if value not in spaces:
+                raise ValueError("noise_space must be 'surface' or 'screen', got %r" % (value,))
+            sketch.SetNoiseSpace(spaces[value])
         elif name == "paper":
             sketch.SetPaper(bool(value))
         elif name == "paper_color":
