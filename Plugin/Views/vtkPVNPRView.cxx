@@ -61,24 +61,24 @@ void vtkPVNPRView::UpdateSceneRenderPass()
     this->SynchronizedRenderers->SetRenderPass(pass);
   }
 }
-vtkPVNPRViewForward(Silhouettes, bool, GetEdgePass(), SetSilhouettes) vtkPVNPRViewForward(
-  SilhouetteThreshold, double, GetEdgePass(), SetSilhouetteThreshold)
-  vtkPVNPRViewForwardColor(SilhouetteColor, GetEdgePass(), SetSilhouetteColor)
-    vtkPVNPRViewForward(Creases, bool, GetEdgePass(), SetCreases) vtkPVNPRViewForward(
-      CreaseAngle, double, GetEdgePass(), SetCreaseAngle) vtkPVNPRViewForwardColor(CreaseColor,
-      GetEdgePass(), SetCreaseColor) vtkPVNPRViewForward(Contours, bool, GetEdgePass(), SetContours)
-      vtkPVNPRViewForward(ContourSide, int, GetEdgePass(), SetContourSide)
-        vtkPVNPRViewForwardColor(ContourColor, GetEdgePass(), SetContourColor)
-          vtkPVNPRViewForward(LineWidth, double, GetEdgePass(), SetLineWidth) vtkPVNPRViewForward(
-            LineAntiAliasing, bool, GetEdgePass(), SetAntiAliasing)
-            vtkPVNPRViewForward(LineEncoding, int, GetEdgePass(), SetEncoding)
-              vtkPVNPRViewForward(PackedThreshold, double, GetEdgePass(), SetPackedThreshold)
-                vtkPVNPRViewForward(ToonBands, int, GetToonPass(), SetNumberOfBands)
-                  vtkPVNPRViewForward(ToonSpecular, bool, GetToonPass(), SetSpecular)
-                    vtkPVNPRViewForward(SketchUncertainty, double, GetSketchPass(), SetUncertainty)
-                      vtkPVNPRViewForward(
-                        SketchNoiseFrequency, double, GetSketchPass(), SetNoiseFrequency)
-                        vtkPVNPRViewForward(SketchNoiseSpace, int, GetSketchPass(), SetNoiseSpace)
+vtkPVNPRViewForward(Silhouettes, bool, GetEdgePass(), SetSilhouettes)
+  vtkPVNPRViewForward(SilhouetteThreshold, double, GetEdgePass(), SetSilhouetteThreshold)
+    vtkPVNPRViewForwardColor(SilhouetteColor, GetEdgePass(), SetSilhouetteColor)
+      vtkPVNPRViewForward(Creases, bool, GetEdgePass(), SetCreases) vtkPVNPRViewForward(CreaseAngle,
+        double, GetEdgePass(),
+        SetCreaseAngle) vtkPVNPRViewForwardColor(CreaseColor, GetEdgePass(), SetCreaseColor)
+        vtkPVNPRViewForward(Contours, bool, GetEdgePass(), SetContours) vtkPVNPRViewForward(
+          ContourSide, int, GetEdgePass(), SetContourSide) vtkPVNPRViewForwardColor(ContourColor,
+          GetEdgePass(), SetContourColor) vtkPVNPRViewForward(LineWidth, double, GetEdgePass(),
+          SetLineWidth) vtkPVNPRViewForward(LineAntiAliasing, bool, GetEdgePass(), SetAntiAliasing)
+          vtkPVNPRViewForward(LineEncoding, int, GetEdgePass(), SetEncoding)
+            vtkPVNPRViewForward(PackedThreshold, double, GetEdgePass(), SetPackedThreshold)
+              vtkPVNPRViewForward(ToonBands, int, GetToonPass(), SetNumberOfBands)
+                vtkPVNPRViewForward(ToonSpecular, bool, GetToonPass(), SetSpecular)
+                  vtkPVNPRViewForward(SketchUncertainty, double, GetSketchPass(), SetUncertainty)
+                    vtkPVNPRViewForward(
+                      SketchNoiseFrequency, double, GetSketchPass(), SetNoiseFrequency)
+                      vtkPVNPRViewForward(SketchNoiseSpace, int, GetSketchPass(), SetNoiseSpace)
                         vtkPVNPRViewForward(SketchPaper, bool, GetSketchPass(), SetPaper)
                           vtkPVNPRViewForwardColor(SketchPaperColor, GetSketchPass(), SetPaperColor)
                             vtkPVNPRViewForward(InkLineWidth, double, GetInkPass(), SetLineWidth)
