@@ -4,6 +4,7 @@
 // Run `npr-render --help` for the flags; Documentation/cli.md describes them.
 #include "nprCameraJson.h"
 #include "nprModel.h"
+#include "nprOrbit.h"
 #include "nprOutputWindow.h"
 #include "nprPassSettings.h"
 #include "nprProgram.h"
@@ -215,6 +216,20 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
   }
   window->Render();
 
+  if (options.Orbit > 0)
+  {
+    if (!options.CameraOut.empty())
+    {
+      nprWriteCameraFile(options.CameraOut, nprCameraState::FromCamera(camera, width, height));
+    }
+    nprOrbitSettings orbit;
+    orbit.Output = options.Output;
+    orbit.Frames = options.Orbit;
+    orbit.Degrees = options.OrbitDegrees;
+    orbit.Rate = options.Rate;
+    nprWriteOrbit(window, renderer, orbit);
+    return 0;
+  }
   if (options.Frames > 0)
   {
     TimeFrames(options, window, renderer, pass, triangles, width, height);

@@ -3,6 +3,7 @@
 #include "nprRenderOptions.h"
 
 #include "nprArguments.h"
+#include "nprOrbit.h"
 
 #include "vtkNPREdgePass.h"
 #include "vtkNPRRenderWindowFactory.h"
@@ -19,7 +20,7 @@ const char* const Help = R"(usage: npr-render [options] MODEL [MODEL...]
 Renders one scene of the given models headless and writes a PNG.
 Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
 
-  -o, --output FILE        PNG to write
+  -o, --output FILE        PNG to write (with --orbit: frames or a video)
   --size WxH               image size in pixels (default 1024x768)
   --style NAME             shaded (default), edges, toon, toon+edges, sketch or inked
   --compare-style LIST     with --frames: also time these styles (comma separated), frames
@@ -34,6 +35,12 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
   --camera-in FILE         use this camera (JSON; its clipping range as given)
   --camera-out FILE        write the camera used (JSON)
   --frames N               time N frames after a warm-up; print one JSON line
+  --orbit N                write N frames of the camera turning about the view up through
+                           the focal point: -o NAME.png writes NAME_0001.png..., -o NAME.ogv
+                           an Ogg Theora video, -o NAME.mp4 an MP4 (VTK's FFMPEG writer, or
+                           the ffmpeg program)
+  --orbit-degrees DEG      the whole turn of --orbit, -3600..3600 (default 360: a loop)
+  --fps RATE               frames per second of a video, 1..120 (default 25)
   -h, --help               this text
   --version                the program and vtkNPR version
 
@@ -146,6 +153,18 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
     else if (arg == "--frames")
     {
       options.Frames = nprParseInteger(arg, arguments.Value(), 1, 100000);
+    }
+    else if (arg == "--orbit")
+    {
+      options.Orbit = nprParseInteger(arg, arguments.Value(), 1, 100000);
+    }
+    else if (arg == "--orbit-degrees")
+    {
+      options.OrbitDegrees = nprParseRange(arg, arguments.Value(), -3600.0, 3600.0);
+    }
+    else if (arg == "--fps")
+    {
+      options.Rate = nprParseRange(arg, arguments.Value(), 1.0, 120.0);
     }
     else if (arg == "--backend")
     {
@@ -318,6 +337,23 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
   {
     throw nprUsageError("--azimuth, --elevation and --zoom move the reset camera; they cannot be "
                         "combined with --camera-in");
+  }
+  const std::string outputKind = nprOrbitOutputKind(options.Output);
+  if (options.Orbit > 0)
+  {
+    if (options.Output.empty() || outputKind.empty())
+    {
+      throw nprUsageError("--orbit needs -o NAME.png (numbered frames), NAME.ogv or NAME.mp4");
+    }
+    if (options.Frames > 0 || !options.EdgeMask.empty() || !options.ReferenceMask.empty())
+    {
+      throw nprUsageError("--orbit cannot be combined with --frames, --edge-mask or "
+                          "--reference-mask");
+    }
+  }
+  else if (outputKind == "ogv" || outputKind == "mp4")
+  {
+    throw nprUsageError("-o " + options.Output + ": a video needs --orbit N");
   }
   if (options.Output.empty() && options.Frames == 0 && options.CameraOut.empty() &&
     options.EdgeMask.empty() && options.ReferenceMask.empty())

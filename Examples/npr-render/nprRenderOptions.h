@@ -24,6 +24,9 @@ struct nprRenderOptions
   std::string CameraIn;
   std::string CameraOut;
   int Frames = 0;
+  int Orbit = 0;             // --orbit N frames
+  double OrbitDegrees = 360; // --orbit-degrees
+  double Rate = 25;          // --fps
   std::string Backend;
   std::string EdgeMask;
   std::string ReferenceMask;
