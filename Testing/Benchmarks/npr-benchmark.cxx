@@ -3,6 +3,7 @@
 // npr-benchmark: run time against error of every line method, for a set of scenes and cameras,
 // against the object-space reference mask. Documentation/benchmarks.md describes the scenes,
 // methods and figures; `npr-benchmark --help` the flags.
+#include "nprBenchmarkCoherence.h"
 #include "nprBenchmarkMethods.h"
 #include "nprBenchmarkOptions.h"
 #include "nprBenchmarkReport.h"
@@ -187,6 +188,10 @@ int main(int argc, char* argv[])
     {
       messages->EchoPrefix = "npr-benchmark: vtk: ";
       const nprBenchmarkOptions options = nprParseBenchmarkOptions(argc, argv);
+      if (options.Coherence)
+      {
+        return nprRunBenchmarkCoherence(options);
+      }
       return options.Stress ? nprRunBenchmarkStress(options) : RunBenchmark(options);
     });
 }

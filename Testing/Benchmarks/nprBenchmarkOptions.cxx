@@ -14,12 +14,17 @@ namespace
 {
 const char* const Help = R"(usage: npr-benchmark --data DIR --out DIR [options]
        npr-benchmark --stress --data DIR --out DIR [options]
+       npr-benchmark --coherence --data DIR --out DIR [options]
 
 Times every line method against the plain shaded frame and scores its line mask against the
 object-space reference mask (precision, recall and F1 at 1 and 2 px, mean symmetric distance).
 Writes OUT/results.csv, OUT/results.md and OUT/time_vs_f1.png (plus one plot per size).
 With --stress: the edge pass on scaled, translated, near/far-stretched and degenerate versions of
 each scene, against the unit case; writes OUT/stress.csv and OUT/stress.md.
+With --coherence: how each style's lines follow the surfaces along a pan, an orbit and a dolly
+(line pixels carried to the next frame through depth), and the sketch's frame time with surface
+against screen noise; writes OUT/coherence.csv and OUT/coherence.md (default scenes cad,bunny,
+sizes 640x480,1920x1080).
 
   --data DIR         folder of cad_part.vtp, rotor.ply and bunny.ply
   --out DIR          folder for the results (created)
@@ -124,6 +129,10 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
     {
       options.Stress = true;
     }
+    else if (arg == "--coherence")
+    {
+      options.Coherence = true;
+    }
     else if (arg == "--stress-cases")
     {
       options.StressCases = nprSplitList(arguments.Value(), true);
@@ -161,6 +170,18 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
     if (!sizesGiven)
     {
       options.Sizes = { { 320, 240 } };
+    }
+  }
+  if (options.Coherence)
+  {
+    if (!options.ScenesGiven)
+    {
+      options.Scenes = { "cad", "bunny" };
+      options.ScenesGiven = true;
+    }
+    if (!sizesGiven && !options.Quick)
+    {
+      options.Sizes = { { 640, 480 }, { 1920, 1080 } };
     }
   }
   if (options.Stress)

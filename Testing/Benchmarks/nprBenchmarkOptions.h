@@ -22,6 +22,7 @@ struct nprBenchmarkOptions
   double LineWidth = 1.5;
   bool Quick = false;
   bool Stress = false;
+  bool Coherence = false;
   std::vector<std::string> StressCases; // name parts; empty: every case
   double MaxDrift = -1.0;               // < 0: report only
   bool SaveMasks = false;

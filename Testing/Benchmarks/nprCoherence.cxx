@@ -3,6 +3,7 @@
 #include "nprCoherence.h"
 
 #include "vtkCamera.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
@@ -140,6 +141,23 @@ nprCoherenceStep nprCompareCoherenceFrames(
   step.AppearedFraction =
     step.NextLines ? static_cast<double>(step.Appeared) / step.NextLines : 0.0;
   return step;
+}
+
+void nprPanParallelCamera(vtkCamera* camera, double pixels, int height)
+{
+  double right[3], position[3], focus[3];
+  vtkMath::Cross(camera->GetDirectionOfProjection(), camera->GetViewUp(), right);
+  vtkMath::Normalize(right);
+  const double step = pixels * 2.0 * camera->GetParallelScale() / height;
+  camera->GetPosition(position);
+  camera->GetFocalPoint(focus);
+  for (int i = 0; i < 3; ++i)
+  {
+    position[i] += step * right[i];
+    focus[i] += step * right[i];
+  }
+  camera->SetPosition(position);
+  camera->SetFocalPoint(focus);
 }
 
 double nprShiftedLineIoU(

@@ -9,6 +9,7 @@
 
 #include <vector>
 
+class vtkCamera;
 class vtkRenderWindow;
 class vtkRenderer;
 
@@ -47,5 +48,9 @@ nprCoherenceStep nprCompareCoherenceFrames(
 // over the pixels at least margin from the border in both.
 double nprShiftedLineIoU(
   const nprCoherenceFrame& first, const nprCoherenceFrame& second, int dx, int dy, int margin);
+
+// Moves a parallel camera right by pixels of a viewport of the given height (the image moves
+// left by as many).
+void nprPanParallelCamera(vtkCamera* camera, double pixels, int height);
 
 #endif

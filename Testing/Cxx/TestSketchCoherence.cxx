@@ -17,7 +17,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
-#include "vtkMath.h"
+#include "vtkMath.h" // for RadiansFromDegrees
 #include "vtkNPRSketchPass.h"
 #include "vtkProperty.h"
 
@@ -60,25 +60,6 @@ void ShowModel(nprPassScene& scene, const std::string& model, bool parallel)
   scene.Renderer->ResetCameraClippingRange();
 }
 
-// Moves a parallel camera right by pixels (the image moves left by as many).
-void PanPixels(vtkCamera* camera, double pixels)
-{
-  double right[3];
-  vtkMath::Cross(camera->GetDirectionOfProjection(), camera->GetViewUp(), right);
-  vtkMath::Normalize(right);
-  const double step = pixels * 2.0 * camera->GetParallelScale() / Height;
-  double position[3], focus[3];
-  camera->GetPosition(position);
-  camera->GetFocalPoint(focus);
-  for (int i = 0; i < 3; ++i)
-  {
-    position[i] += step * right[i];
-    focus[i] += step * right[i];
-  }
-  camera->SetPosition(position);
-  camera->SetFocalPoint(focus);
-}
-
 int Pan(const std::string& model)
 {
   nprPassScene scene(Width, Height);
@@ -88,7 +69,7 @@ int Pan(const std::string& model)
   {
     scene.Renderer->ResetCamera();
     const nprCoherenceFrame first = Frame(scene, Modes[m]);
-    PanPixels(scene.Camera(), 20.0);
+    nprPanParallelCamera(scene.Camera(), 20.0, Height);
     const nprCoherenceFrame second = Frame(scene, Modes[m]);
     iou[m] = nprShiftedLineIoU(first, second, -20, 0, 8);
     std::cout << model << ", 20 px pan, " << Modes[m].Name << ": line pixel IoU " << iou[m] << "\n";

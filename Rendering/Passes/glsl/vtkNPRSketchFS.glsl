@@ -77,11 +77,13 @@ vec2 nprNoise(vec2 pixel, ivec2 size)
   if (stored >= 1.0)
   {
     // Off the surface: the farthest surface within reach (along a silhouette, the rim's depth).
+    const vec2 directions[8] = vec2[8](vec2(1.0, 0.0), vec2(0.70710678, 0.70710678),
+      vec2(0.0, 1.0), vec2(-0.70710678, 0.70710678), vec2(-1.0, 0.0),
+      vec2(-0.70710678, -0.70710678), vec2(0.0, -1.0), vec2(0.70710678, -0.70710678));
     stored = -1.0;
     for (int k = 0; k < 8; ++k)
     {
-      float angle = 0.785398163 * float(k);
-      ivec2 tap = ivec2(floor(pixel + 0.5 + noiseReach * vec2(cos(angle), sin(angle))));
+      ivec2 tap = ivec2(floor(pixel + 0.5 + noiseReach * directions[k]));
       float tapDepth = nprInside(tap, size) ? texelFetch(depthTexture, tap, 0).r : 1.0;
       stored = tapDepth < 1.0 ? max(stored, tapDepth) : stored;
     }

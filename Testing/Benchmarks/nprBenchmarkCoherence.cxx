@@ -1,0 +1,242 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "nprBenchmarkCoherence.h"
+
+#include "nprBenchmarkOptions.h"
+#include "nprBenchmarkReport.h"
+#include "nprBenchmarkScenes.h"
+#include "nprBenchmarkStage.h"
+#include "nprCoherence.h"
+#include "nprPassSettings.h"
+#include "nprTiming.h"
+
+#include "vtkCamera.h"
+#include "vtkNPRPass.h"
+#include "vtkNPRRenderWindowFactory.h"
+#include "vtkNPRSketchPass.h"
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct CoherenceStyle
+{
+  std::string Name;
+  vtkSmartPointer<vtkNPRPass> Pass;
+};
+
+std::vector<CoherenceStyle> MakeStyles(double lineWidth)
+{
+  std::vector<CoherenceStyle> styles;
+  auto add = [&](const std::string& name, const char* style, int noiseSpace)
+  {
+    nprPassSettings settings;
+    settings.Style = style;
+    settings.LineWidth = lineWidth;
+    settings.NoiseSpace = noiseSpace;
+    styles.push_back({ name, nprMakePass(settings) });
+  };
+  add("edges", "edges", vtkNPRSketchPass::SURFACE);
+  add("toon+edges", "toon+edges", vtkNPRSketchPass::SURFACE);
+  add("sketch, surface noise", "sketch", vtkNPRSketchPass::SURFACE);
+  add("sketch, screen noise", "sketch", vtkNPRSketchPass::SCREEN);
+  add("inked", "inked", vtkNPRSketchPass::SURFACE);
+  return styles;
+}
+
+enum class Path
+{
+  Pan,   // parallel camera moved right by 20 pixels per frame
+  Orbit, // 1 degree of azimuth per frame
+  Dolly  // 2 % closer per frame
+};
+const char* PathName(Path path)
+{
+  return path == Path::Pan ? "pan 20 px" : (path == Path::Orbit ? "orbit 1 deg" : "dolly 2 %");
+}
+constexpr int Steps = 8;
+constexpr int PanPixels = 20;
+
+void StartPath(nprBenchmarkStage& stage, Path path)
+{
+  nprApplyBenchmarkCamera(stage.Renderer, nprBenchmarkCameras()[0]);
+  vtkCamera* camera = stage.Camera();
+  camera->SetParallelProjection(path == Path::Pan);
+  stage.Renderer->ResetCamera();
+  stage.Renderer->ResetCameraClippingRange();
+}
+
+void StepPath(nprBenchmarkStage& stage, Path path, int height)
+{
+  vtkCamera* camera = stage.Camera();
+  if (path == Path::Pan)
+  {
+    nprPanParallelCamera(camera, PanPixels, height);
+  }
+  else if (path == Path::Orbit)
+  {
+    camera->Azimuth(1.0);
+    camera->OrthogonalizeViewUp();
+  }
+  else
+  {
+    camera->Dolly(1.02);
+  }
+  stage.Renderer->ResetCameraClippingRange();
+}
+
+struct CoherenceRow
+{
+  std::string Scene, Size, Path, Style;
+  double Landed = 0, Appeared = 0, Vanished = 0;
+  double PanIoU = -1; // pan only
+};
+
+struct CostRow
+{
+  std::string Scene, Size;
+  double ScreenMs = 0, SurfaceMs = 0;
+};
+
+std::string Fixed(double value, int decimals)
+{
+  std::ostringstream text;
+  text.setf(std::ios::fixed);
+  text.precision(decimals);
+  text << value;
+  return text.str();
+}
+}
+
+int nprRunBenchmarkCoherence(const nprBenchmarkOptions& options)
+{
+  const nprClock::time_point runStart = nprClock::now();
+  nprMakeBenchmarkFolders(options);
+  const std::vector<nprBenchmarkScene> scenes =
+    nprLoadBenchmarkScenes(options.Scenes, options.Data, options.DenseMesh, options.ScenesGiven);
+  nprBenchmarkStage stage(options.LineWidth);
+  std::vector<CoherenceStyle> styles = MakeStyles(options.LineWidth);
+  std::vector<CoherenceRow> rows;
+  std::vector<CostRow> costs;
+  for (const nprBenchmarkScene& scene : scenes)
+  {
+    stage.SetMesh(scene.Mesh, scene.Raw);
+    for (const auto& size : options.Sizes)
+    {
+      stage.Window->SetSize(size.first, size.second);
+      const std::string sizeName = std::to_string(size.first) + "x" + std::to_string(size.second);
+      for (Path path : { Path::Pan, Path::Orbit, Path::Dolly })
+      {
+        for (CoherenceStyle& style : styles)
+        {
+          stage.Activate(style.Pass, false);
+          StartPath(stage, path);
+          stage.Window->Render();
+          nprCoherenceFrame previous = nprCaptureCoherenceFrame(stage.Window, stage.Renderer);
+          CoherenceRow row{ scene.Name, sizeName, PathName(path), style.Name };
+          row.PanIoU = path == Path::Pan ? 0.0 : -1.0;
+          for (int step = 0; step < Steps; ++step)
+          {
+            StepPath(stage, path, size.second);
+            stage.Window->Render();
+            nprCoherenceFrame next = nprCaptureCoherenceFrame(stage.Window, stage.Renderer);
+            const nprCoherenceStep figures = nprCompareCoherenceFrames(previous, next);
+            row.Landed += figures.LandedFraction / Steps;
+            row.Appeared += figures.AppearedFraction / Steps;
+            row.Vanished += figures.VanishedFraction / Steps;
+            if (path == Path::Pan)
+            {
+              row.PanIoU += nprShiftedLineIoU(previous, next, -PanPixels, 0, 8) / Steps;
+            }
+            previous = std::move(next);
+          }
+          std::cerr << "npr-benchmark: " << scene.Name << " " << sizeName << " " << row.Path << " "
+                    << style.Name << ": landed " << Fixed(row.Landed, 3) << "\n";
+          rows.push_back(row);
+        }
+      }
+
+      // The cost of surface noise: both sketches' frames interleaved, the camera turned a
+      // little every frame so nothing is reused.
+      StartPath(stage, Path::Orbit);
+      std::vector<double> screen, surface;
+      CoherenceStyle& surfaceStyle = styles[2];
+      CoherenceStyle& screenStyle = styles[3];
+      for (int frame = -1; frame < options.Frames; ++frame) // frame -1: warm-up
+      {
+        for (CoherenceStyle* style : { &screenStyle, &surfaceStyle })
+        {
+          stage.Activate(style->Pass, false);
+          stage.Camera()->Azimuth(0.5);
+          const double ms = nprTimeFrame(stage.Window, stage.Camera());
+          if (frame >= 0)
+          {
+            (style == &screenStyle ? screen : surface).push_back(ms);
+          }
+        }
+      }
+      costs.push_back({ scene.Name, sizeName, nprMedian(screen), nprMedian(surface) });
+    }
+  }
+
+  // ---- Reports ----
+  std::ofstream csv(options.Out + "/coherence.csv");
+  csv << "scene,size,path,style,landed,appeared,vanished,pan_iou\n";
+  std::ostringstream md;
+  md << "| scene | size | camera path | style | landed within 1 px | appeared | vanished | "
+        "IoU after the pan |\n|---|---|---|---|---|---|---|---|\n";
+  std::string problems;
+  for (const CoherenceRow& row : rows)
+  {
+    csv << row.Scene << "," << row.Size << "," << row.Path << ",\"" << row.Style << "\","
+        << row.Landed << "," << row.Appeared << "," << row.Vanished << "," << row.PanIoU << "\n";
+    md << "| " << row.Scene << " | " << row.Size << " | " << row.Path << " | " << row.Style << " | "
+       << Fixed(row.Landed, 3) << " | " << Fixed(row.Appeared, 3) << " | " << Fixed(row.Vanished, 3)
+       << " | " << (row.PanIoU >= 0 ? Fixed(row.PanIoU, 3) : "") << " |\n";
+    for (double value : { row.Landed, row.Appeared, row.Vanished })
+    {
+      if (!(value >= 0.0 && value <= 1.0 + 1e-9))
+      {
+        problems += row.Scene + " " + row.Path + " " + row.Style + ": a fraction out of [0, 1]\n";
+      }
+    }
+  }
+  md << "\n| scene | size | sketch, screen noise (ms) | sketch, surface noise (ms) | surface / "
+        "screen |\n|---|---|---|---|---|\n";
+  csv << "\nscene,size,sketch_screen_ms,sketch_surface_ms\n";
+  for (const CostRow& cost : costs)
+  {
+    md << "| " << cost.Scene << " | " << cost.Size << " | " << Fixed(cost.ScreenMs, 1) << " | "
+       << Fixed(cost.SurfaceMs, 1) << " | " << Fixed(cost.SurfaceMs / cost.ScreenMs, 3) << " |\n";
+    csv << cost.Scene << "," << cost.Size << "," << cost.ScreenMs << "," << cost.SurfaceMs << "\n";
+    if (!(cost.ScreenMs > 0.0 && cost.SurfaceMs > 0.0))
+    {
+      problems += cost.Scene + " " + cost.Size + ": a frame time is not positive\n";
+    }
+  }
+  std::ofstream markdown(options.Out + "/coherence.md");
+  markdown << "Coherence of the drawn lines along camera paths (" << Steps
+           << " steps each; npr-benchmark --coherence), on "
+           << vtkNPRRenderWindowFactory::GetGLRenderer(stage.Window) << ", medians of "
+           << options.Frames << " frames for the times.\n\n"
+           << md.str();
+  std::cout << md.str();
+  if (!csv || !markdown)
+  {
+    throw std::runtime_error(options.Out + ": cannot write coherence.csv or coherence.md");
+  }
+  std::cerr << "npr-benchmark: wrote " << options.Out << "/coherence.{csv,md} in "
+            << nprFormat(nprSecondsSince(runStart), 4) << " s\n";
+  if (!problems.empty())
+  {
+    std::cerr << "npr-benchmark: error: figures out of range:\n" << problems;
+    return 1;
+  }
+  return 0;
+}
