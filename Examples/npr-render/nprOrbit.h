@@ -31,6 +31,7 @@ void nprCheckOrbitOutput(const nprOrbitSettings& settings);
 
 // Renders and writes the frames, from the renderer's current camera, with a progress line on a
 // terminal. Throws std::runtime_error when a file cannot be written.
-void nprWriteOrbit(vtkRenderWindow* window, vtkRenderer* renderer, const nprOrbitSettings& settings);
+void nprWriteOrbit(
+  vtkRenderWindow* window, vtkRenderer* renderer, const nprOrbitSettings& settings);
 
 #endif
