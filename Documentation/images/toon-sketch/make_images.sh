@@ -40,3 +40,8 @@ render sketch_uncertainty_8.png $bunny --style sketch --uncertainty 8
 render sketch_frequency_0.5.png $bunny --style sketch --uncertainty 5 --noise-frequency 0.5
 render sketch_frequency_6.png $bunny --style sketch --uncertainty 5 --noise-frequency 6
 render sketch_seed_2.png $bunny --style sketch --uncertainty 5 --noise-seed 2
+
+# A short orbit (6 degrees a frame) in both noise spaces: NAME_0001.png to NAME_0004.png.
+orbit="Testing/Data/cad_part.vtp --size 240x180 --azimuth 30 --elevation 30 --zoom 1.6 --style sketch --uncertainty 4 --orbit 4 --orbit-degrees 24"
+render orbit_surface.png $orbit
+render orbit_screen.png $orbit --noise-space screen
