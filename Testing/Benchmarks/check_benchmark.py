@@ -1,10 +1,11 @@
 #!/usr/bin/python3
 # SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Smoke test of npr-benchmark: runs it with --quick (or --stress --quick) and checks that the
+"""Smoke test of npr-benchmark: runs it with --quick (or --stress --quick, --coherence --quick)
+and checks that the
 files are written and that every figure is sane (F1 in [0, 1], no NaN, positive times).
 
-usage: check_benchmark.py --npr-benchmark EXE --data DIR --out DIR [--stress]"""
+usage: check_benchmark.py --npr-benchmark EXE --data DIR --out DIR [--stress | --coherence]"""
 import argparse
 import csv
 import math
@@ -94,22 +95,53 @@ def check_stress(out):
     check(os.path.isfile(os.path.join(out, "stress.md")), "stress.md missing")
 
 
+def check_coherence(out):
+    rows = read_csv(os.path.join(out, "coherence.csv"))
+    paths = {row["path"] for row in rows}
+    styles = {row["style"] for row in rows}
+    check(paths == {"pan 20 px", "orbit 1 deg", "dolly 2 %"}, "camera paths: %s" % sorted(paths))
+    check({"edges", "sketch, surface noise", "sketch, screen noise", "inked"} <= styles,
+          "styles: %s" % sorted(styles))
+    for row in rows:
+        for key in ("landed", "appeared", "vanished"):
+            value = number(row, key)
+            check(0.0 <= value <= 1.0, "%s out of [0, 1]: %s" % (key, row))
+        if row["path"] == "pan 20 px":
+            check(0.0 <= number(row, "pan_iou") <= 1.0, "pan IoU: %s" % row)
+        # Edges follow a pan exactly, and so does the sketch with surface noise.
+        if row["path"] == "pan 20 px" and row["style"] in ("edges", "sketch, surface noise"):
+            check(number(row, "pan_iou") > 0.95, "%s pan IoU: %s" % (row["style"], row))
+    costs = read_csv(os.path.join(out, "coherence_cost.csv"))
+    check(len(costs) >= 1, "coherence_cost.csv has %d rows" % len(costs))
+    for row in costs:
+        check(number(row, "sketch_screen_ms") > 0.0 and number(row, "sketch_surface_ms") > 0.0,
+              "times: %s" % row)
+    md = os.path.join(out, "coherence.md")
+    check(os.path.isfile(md) and "| camera path |" in open(md).read(), "coherence.md has no table")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--npr-benchmark", required=True)
     parser.add_argument("--data", required=True)
     parser.add_argument("--out", required=True)
-    parser.add_argument("--stress", action="store_true")
+    mode = parser.add_mutually_exclusive_group()
+    mode.add_argument("--stress", action="store_true")
+    mode.add_argument("--coherence", action="store_true")
     args = parser.parse_args()
     shutil.rmtree(args.out, ignore_errors=True)
     command = [args.npr_benchmark, "--quick", "--data", args.data, "--out", args.out]
     if args.stress:
         command.append("--stress")
+    if args.coherence:
+        command.append("--coherence")
     print(" ".join(command))
     result = subprocess.run(command)
     check(result.returncode == 0, "npr-benchmark exited with %d" % result.returncode)
     if args.stress:
         check_stress(args.out)
+    elif args.coherence:
+        check_coherence(args.out)
     else:
         check_benchmark(args.out)
     print("FAILED (%d failed checks)" % len(failures) if failures else "PASSED")

@@ -209,12 +209,14 @@ int nprRunBenchmarkCoherence(const nprBenchmarkOptions& options)
   }
   md << "\n| scene | size | sketch, screen noise (ms) | sketch, surface noise (ms) | surface / "
         "screen |\n|---|---|---|---|---|\n";
-  csv << "\nscene,size,sketch_screen_ms,sketch_surface_ms\n";
+  std::ofstream costCsv(options.Out + "/coherence_cost.csv");
+  costCsv << "scene,size,sketch_screen_ms,sketch_surface_ms\n";
   for (const CostRow& cost : costs)
   {
     md << "| " << cost.Scene << " | " << cost.Size << " | " << Fixed(cost.ScreenMs, 1) << " | "
        << Fixed(cost.SurfaceMs, 1) << " | " << Fixed(cost.SurfaceMs / cost.ScreenMs, 3) << " |\n";
-    csv << cost.Scene << "," << cost.Size << "," << cost.ScreenMs << "," << cost.SurfaceMs << "\n";
+    costCsv << cost.Scene << "," << cost.Size << "," << cost.ScreenMs << "," << cost.SurfaceMs
+            << "\n";
     if (!(cost.ScreenMs > 0.0 && cost.SurfaceMs > 0.0))
     {
       problems += cost.Scene + " " + cost.Size + ": a frame time is not positive\n";
@@ -227,11 +229,14 @@ int nprRunBenchmarkCoherence(const nprBenchmarkOptions& options)
            << options.Frames << " frames for the times.\n\n"
            << md.str();
   std::cout << md.str();
-  if (!csv || !markdown)
+  if (!csv || !costCsv || !markdown)
   {
-    throw std::runtime_error(options.Out + ": cannot write coherence.csv or coherence.md");
+    throw std::runtime_error(options.Out +
+      ": cannot write coherence.csv, coherence_cost.csv or "
+      "coherence.md");
   }
-  std::cerr << "npr-benchmark: wrote " << options.Out << "/coherence.{csv,md} in "
+  std::cerr << "npr-benchmark: wrote " << options.Out
+            << "/coherence.{csv,md}, coherence_cost.csv in "
             << nprFormat(nprSecondsSince(runStart), 4) << " s\n";
   if (!problems.empty())
   {
