@@ -26,6 +26,7 @@
 
 #include "vtkNPRLineColor.h"
 #include "vtkNPRSketchFS.h"
+#include "vtkNPRSketchNoiseFS.h"
 #include "vtkNPRWindowDepth.h"
 
 #include <algorithm>
@@ -84,12 +85,16 @@ struct GradientNoise
   }
 };
 
-// Periodic 3D Perlin gradient noise over a SurfaceNoiseCells^3 lattice, sampled at
-// SurfaceNoiseTexels per cell: the surface noise's tile, interpolated trilinearly by the texture
-// unit (at 4 texels per cell that departs from the noise by under 5 % of its range).
-constexpr int SurfaceNoiseCells = 16;
-constexpr int SurfaceNoiseTexelsPerCell = 4;
-constexpr int SurfaceNoiseSize = SurfaceNoiseCells * SurfaceNoiseTexelsPerCell;
+// The surface noise's tile: 64^3 texels, interpolated trilinearly by the texture unit. Its rg
+// components are a 3D Perlin gradient noise of 4 texels a cell and a period of 8 cells (twice
+// over the tile), and its ba components the same noise at half the frequency (8 texels a cell),
+// so that one fetch gives both octaves the shader blends, and the coarse octave at one level is
+// the fine one at the next. At 4 texels a cell the interpolation departs from the noise by under
+// 5 % of its range.
+constexpr int SurfaceNoiseCells = 8;         // of the fine octave, in its period
+constexpr int SurfaceNoiseTexelsPerCell = 4; // of the fine octave
+constexpr int SurfaceNoiseSize = 2 * SurfaceNoiseCells * SurfaceNoiseTexelsPerCell;
+constexpr int SurfaceNoiseTileCells = 2 * SurfaceNoiseCells; // fine cells across the tile
 
 struct GradientNoise3D
 {
@@ -117,7 +122,7 @@ struct GradientNoise3D
     return g[0] * dx + g[1] * dy + g[2] * dz;
   }
 
-  // x, y, z in lattice cells, in [0, SurfaceNoiseCells).
+  // x, y, z in lattice cells, >= 0.
   double operator()(double x, double y, double z) const
   {
     const int i = static_cast<int>(std::floor(x));
@@ -142,13 +147,14 @@ struct GradientNoise3D
   }
 };
 
-// The surface noise tile of a seed (two floats per texel, |vector| <= 1). Kept for the last
-// seed asked, as every new pass of the same seed (a window per view) would make it again.
-std::shared_ptr<const std::vector<float>> SurfaceNoiseTile(unsigned int seed)
+// The surface noise tile of a seed (four bytes per texel: two noise vectors, |vector| <= 1, as v /
+// 2 + 1/2). Kept for the last seed asked, as every new pass of the same seed (a window per view)
+// would make it again.
+std::shared_ptr<const std::vector<unsigned char>> SurfaceNoiseTile(unsigned int seed)
 {
   static std::mutex mutex;
   static unsigned int lastSeed = 0;
-  static std::shared_ptr<const std::vector<float>> last;
+  static std::shared_ptr<const std::vector<unsigned char>> last;
   std::lock_guard<std::mutex> lock(mutex);
   if (last && lastSeed == seed)
   {
@@ -159,29 +165,36 @@ std::shared_ptr<const std::vector<float>> SurfaceNoiseTile(unsigned int seed)
   const GradientNoise3D noiseY(random);
   constexpr size_t texels =
     static_cast<size_t>(SurfaceNoiseSize) * SurfaceNoiseSize * SurfaceNoiseSize;
-  std::vector<double> vectors(2 * texels);
+  std::vector<double> vectors(4 * texels);
   double largest = 0.0;
   size_t index = 0;
   for (int z = 0; z < SurfaceNoiseSize; ++z)
   {
     for (int y = 0; y < SurfaceNoiseSize; ++y)
     {
-      for (int x = 0; x < SurfaceNoiseSize; ++x, index += 2)
+      for (int x = 0; x < SurfaceNoiseSize; ++x, index += 4)
       {
         const double at[3] = { static_cast<double>(x) / SurfaceNoiseTexelsPerCell,
           static_cast<double>(y) / SurfaceNoiseTexelsPerCell,
           static_cast<double>(z) / SurfaceNoiseTexelsPerCell };
         vectors[index] = noiseX(at[0], at[1], at[2]);
         vectors[index + 1] = noiseY(at[0], at[1], at[2]);
+        // Half the frequency: the same noise, read at half the lattice coordinates.
+        vectors[index + 2] = noiseX(0.5 * at[0], 0.5 * at[1], 0.5 * at[2]);
+        vectors[index + 3] = noiseY(0.5 * at[0], 0.5 * at[1], 0.5 * at[2]);
         largest = std::max(largest, std::hypot(vectors[index], vectors[index + 1]));
       }
     }
   }
-  const double scale = largest > 0.0 ? (1.0 - 1e-6) / largest : 0.0;
-  auto tile = std::make_shared<std::vector<float>>(2 * texels);
+  // 8-bit unsigned normalised storage, v / 2 + 1/2 (the shader undoes it): llvmpipe filters
+  // 8-bit textures much faster than float ones, and 1/255 of the noise's range is 0.01 px of
+  // a 3 px uncertainty.
+  const double scale = largest > 0.0 ? 1.0 / largest : 0.0;
+  auto tile = std::make_shared<std::vector<unsigned char>>(4 * texels);
   for (size_t i = 0; i < vectors.size(); ++i)
   {
-    (*tile)[i] = static_cast<float>(vectors[i] * scale);
+    const double value = 127.5 + 127.5 * vectors[i] * scale;
+    (*tile)[i] = static_cast<unsigned char>(std::min(255.0, std::max(0.0, std::round(value))));
   }
   lastSeed = seed;
   last = tile;
@@ -221,6 +234,15 @@ struct vtkNPRSketchPass::Internals
   unsigned int NoiseTextureSeed = 0;
   vtkTextureObject* SurfaceNoiseTexture = nullptr;
   unsigned int SurfaceNoiseTextureSeed = 0;
+  // The surface noise of each block of pixels, and what it was computed from.
+  vtkNPRQuadProgram NoiseField;
+  std::string NoiseFieldSource;
+  vtkTextureObject* NoiseFieldTexture = nullptr;
+  bool NoiseFieldValid = false;
+  unsigned long NoiseFieldContentVersion = 0;
+  vtkMTimeType NoiseFieldTime = 0;
+  vtkMTimeType NoiseFieldEdgeTime = 0;
+  int NoiseFieldBlock = 0;
 };
 
 vtkStandardNewMacro(vtkNPRSketchPass);
@@ -237,6 +259,7 @@ vtkNPRSketchPass::~vtkNPRSketchPass()
   for (vtkObject* object : { static_cast<vtkObject*>(this->Internal->CoverageTexture),
          static_cast<vtkObject*>(this->Internal->NoiseTexture),
          static_cast<vtkObject*>(this->Internal->SurfaceNoiseTexture),
+         static_cast<vtkObject*>(this->Internal->NoiseFieldTexture),
          static_cast<vtkObject*>(this->Internal->Framebuffer) })
   {
     if (object)
@@ -408,18 +431,23 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
     internal.CoverageLineWidth = lineWidth;
   }
 
-  // ---- The noise tile ----
+  // ---- The noise: the screen tile, or the surface noise of each block of pixels ----
   const bool surfaceNoise = this->NoiseSpace == SURFACE;
-  vtkTextureObject* noiseTexture =
-    surfaceNoise ? this->PrepareSurfaceNoise(window) : this->PrepareScreenNoise(window);
+  const double amplitude = this->GetEffectiveUncertainty(renderer);
+  const int block = this->GetSurfaceNoiseBlock(renderer);
+  vtkTextureObject* noiseTexture = surfaceNoise
+    ? this->RenderSurfaceNoise(state, amplitude + lineWidth + 1.0, block)
+    : this->PrepareScreenNoise(window);
+  if (!noiseTexture)
+  {
+    return;
+  }
 
   // ---- The sketch into the current framebuffer ----
   std::ostringstream defines;
-  vtkCamera* camera = renderer->GetActiveCamera();
   defines << "#define NPR_PAPER " << (this->Paper ? 1 : 0) << "\n#define NPR_REMAPPED_DEPTH "
           << (gbuffer->GetDepthRemapped() ? 1 : 0) << "\n#define NPR_SURFACE_NOISE "
-          << (surfaceNoise ? 1 : 0) << "\n#define NPR_PERSPECTIVE "
-          << (camera->GetParallelProjection() ? 0 : 1) << "\n";
+          << (surfaceNoise ? 1 : 0) << "\n";
   if (internal.Source.empty())
   {
     internal.Source = vtkNPRSketchFS;
@@ -440,10 +468,9 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
   program->SetUniformi("depthTexture", depth->GetTextureUnit());
   program->SetUniformi("coverageTexture", internal.CoverageTexture->GetTextureUnit());
   program->SetUniformi("noiseTexture", noiseTexture->GetTextureUnit());
-  const double amplitude = this->GetEffectiveUncertainty(renderer);
   if (surfaceNoise)
   {
-    this->SetSurfaceNoiseUniforms(program, renderer, height, amplitude + lineWidth + 1.0);
+    program->SetUniformf("noiseBlock", static_cast<float>(block));
   }
   else
   {
@@ -523,7 +550,120 @@ vtkTextureObject* vtkNPRSketchPass::PrepareScreenNoise(vtkOpenGLRenderWindow* wi
   return internal.NoiseTexture;
 }
 
-vtkTextureObject* vtkNPRSketchPass::PrepareSurfaceNoise(vtkOpenGLRenderWindow* window)
+int vtkNPRSketchPass::GetSurfaceNoiseBlock(vtkRenderer* renderer) const
+{
+  // A noise cell spans at least 8 blocks: the bilinear interpolation between block centres then
+  // departs from the noise by under 1 % of its range.
+  const double cellPixels = 100.0 / this->NoiseFrequency * vtkNPRWindowScale(renderer);
+  return std::max(1, std::min(4, static_cast<int>(cellPixels / 8.0)));
+}
+
+vtkTextureObject* vtkNPRSketchPass::RenderSurfaceNoise(
+  const vtkRenderState* state, double reach, int block)
+{
+  Internals& internal = *this->Internal;
+  vtkRenderer* renderer = state->GetRenderer();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  vtkOpenGLState* glState = window->GetState();
+  vtkNPRGBufferPass* gbuffer = this->EdgePass->GetGBufferPass();
+  vtkTextureObject* depth = gbuffer->GetDepthTexture();
+  const int width = (static_cast<int>(depth->GetWidth()) + block - 1) / block;
+  const int height = (static_cast<int>(depth->GetHeight()) + block - 1) / block;
+  if (!internal.NoiseFieldTexture)
+  {
+    internal.NoiseFieldTexture = vtkTextureObject::New();
+    internal.NoiseFieldTexture->SetContext(window);
+    internal.NoiseFieldTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    internal.NoiseFieldTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    internal.NoiseFieldTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    internal.NoiseFieldTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    internal.NoiseFieldTexture->SetInternalFormat(GL_RG32F);
+    internal.NoiseFieldTexture->SetFormat(GL_RG);
+    internal.NoiseFieldTexture->SetDataType(GL_FLOAT);
+    internal.NoiseFieldTexture->Allocate2D(width, height, 2, VTK_FLOAT);
+  }
+  const bool current = internal.NoiseFieldValid &&
+    internal.NoiseFieldContentVersion == gbuffer->GetContentVersion() &&
+    internal.NoiseFieldTime == this->GetMTime() &&
+    internal.NoiseFieldEdgeTime == this->EdgePass->GetMTime() &&
+    internal.NoiseFieldBlock == block &&
+    internal.NoiseFieldTexture->GetWidth() == static_cast<unsigned int>(width) &&
+    internal.NoiseFieldTexture->GetHeight() == static_cast<unsigned int>(height);
+  if (current)
+  {
+    return internal.NoiseFieldTexture;
+  }
+
+  vtkTextureObject* tile = this->PrepareSurfaceNoiseTile(window);
+  std::ostringstream defines;
+  defines << "#define NPR_REMAPPED_DEPTH " << (gbuffer->GetDepthRemapped() ? 1 : 0)
+          << "\n#define NPR_PERSPECTIVE "
+          << (renderer->GetActiveCamera()->GetParallelProjection() ? 0 : 1) << "\n";
+  if (internal.NoiseFieldSource.empty())
+  {
+    internal.NoiseFieldSource = vtkNPRSketchNoiseFS;
+    vtkShaderProgram::Substitute(
+      internal.NoiseFieldSource, "//NPR::WindowDepth", vtkNPRWindowDepth);
+  }
+  vtkShaderProgram* program =
+    internal.NoiseField.Ready(window, internal.NoiseFieldSource, defines.str());
+  if (!program)
+  {
+    vtkErrorMacro("the sketch's surface noise shader did not compile");
+    return nullptr;
+  }
+  internal.NoiseFieldTexture->Resize(width, height);
+  vtkOpenGLState::ScopedglViewport viewportSaver(glState);
+  vtkOpenGLState::ScopedglScissor scissorSaver(glState);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(glState);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(glState, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(glState, GL_DEPTH_TEST);
+  glState->PushFramebufferBindings();
+  internal.Framebuffer->Bind();
+  internal.Framebuffer->AddColorAttachment(0, internal.NoiseFieldTexture);
+  internal.Framebuffer->ActivateDrawBuffers(1);
+  internal.Framebuffer->StartNonOrtho(width, height);
+  glState->vtkglViewport(0, 0, width, height);
+  glState->vtkglDisable(GL_BLEND);
+  glState->vtkglDisable(GL_DEPTH_TEST);
+  // Only the blocks within reach of the props' projected bounds: elsewhere no line or fill can
+  // land, and most of this pass's work is the search for a surface from the empty blocks.
+  const int* rect = gbuffer->GetContentRectangle();
+  const int grow = static_cast<int>(std::ceil(reach)) + 2 * block;
+  const int x0 = std::max(0, (rect[0] - grow) / block);
+  const int y0 = std::max(0, (rect[1] - grow) / block);
+  const int x1 = std::min(width - 1, (rect[2] + grow) / block);
+  const int y1 = std::min(height - 1, (rect[3] + grow) / block);
+  glState->vtkglDisable(GL_SCISSOR_TEST);
+  glState->vtkglClearColor(0.0, 0.0, 0.0, 0.0); // no displacement where nothing is near
+  glState->vtkglClear(GL_COLOR_BUFFER_BIT);
+  glState->vtkglEnable(GL_SCISSOR_TEST);
+  glState->vtkglScissor(x0, y0, std::max(0, x1 - x0 + 1), std::max(0, y1 - y0 + 1));
+  depth->Activate();
+  tile->Activate();
+  program->SetUniformi("depthTexture", depth->GetTextureUnit());
+  program->SetUniformi("noiseTexture", tile->GetTextureUnit());
+  program->SetUniformf("noiseBlock", static_cast<float>(block));
+  if (gbuffer->GetDepthRemapped())
+  {
+    program->SetUniform2f("nprDepthRemap", gbuffer->GetDepthRemap());
+  }
+  this->SetSurfaceNoiseUniforms(program, renderer, depth->GetHeight(), reach);
+  internal.NoiseField.Render();
+  depth->Deactivate();
+  tile->Deactivate();
+  internal.Framebuffer->RemoveColorAttachments(1);
+  glState->PopFramebufferBindings();
+  internal.NoiseFieldValid = true;
+  internal.NoiseFieldContentVersion = gbuffer->GetContentVersion();
+  internal.NoiseFieldTime = this->GetMTime();
+  internal.NoiseFieldEdgeTime = this->EdgePass->GetMTime();
+  internal.NoiseFieldBlock = block;
+  return internal.NoiseFieldTexture;
+}
+
+vtkTextureObject* vtkNPRSketchPass::PrepareSurfaceNoiseTile(vtkOpenGLRenderWindow* window)
 {
   Internals& internal = *this->Internal;
   if (!internal.SurfaceNoiseTexture || internal.SurfaceNoiseTextureSeed != this->NoiseSeed)
@@ -540,11 +680,11 @@ vtkTextureObject* vtkNPRSketchPass::PrepareSurfaceNoise(vtkOpenGLRenderWindow* w
     texture->SetWrapS(vtkTextureObject::Repeat);
     texture->SetWrapT(vtkTextureObject::Repeat);
     texture->SetWrapR(vtkTextureObject::Repeat);
-    texture->SetInternalFormat(GL_RG32F);
-    texture->SetFormat(GL_RG);
-    texture->SetDataType(GL_FLOAT);
-    texture->Create3DFromRaw(SurfaceNoiseSize, SurfaceNoiseSize, SurfaceNoiseSize, 2, VTK_FLOAT,
-      const_cast<float*>(tile->data()));
+    texture->SetInternalFormat(GL_RGBA8);
+    texture->SetFormat(GL_RGBA);
+    texture->SetDataType(GL_UNSIGNED_BYTE);
+    texture->Create3DFromRaw(SurfaceNoiseSize, SurfaceNoiseSize, SurfaceNoiseSize, 4,
+      VTK_UNSIGNED_CHAR, const_cast<unsigned char*>(tile->data()));
     internal.SurfaceNoiseTextureSeed = this->NoiseSeed;
   }
   return internal.SurfaceNoiseTexture;
@@ -573,7 +713,7 @@ void vtkNPRSketchPass::SetSurfaceNoiseUniforms(
     const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(bounds, bounds + 3));
     if (std::isfinite(diagonal) && diagonal > 0.0)
     {
-      const double grid = SurfaceNoiseCells * std::exp2(std::ceil(std::log2(8.0 * diagonal)));
+      const double grid = SurfaceNoiseTileCells * std::exp2(std::ceil(std::log2(8.0 * diagonal)));
       for (int i = 0; i < 3; ++i)
       {
         anchor[i] = std::round(0.5 * (bounds[2 * i] + bounds[2 * i + 1]) / grid) * grid;
@@ -595,7 +735,7 @@ void vtkNPRSketchPass::SetSurfaceNoiseUniforms(
     "pixelFootprint", static_cast<float>(yScale != 0.0 ? 2.0 / height / std::abs(yScale) : 0.0));
   program->SetUniformf(
     "cellPixels", static_cast<float>(100.0 / this->NoiseFrequency * vtkNPRWindowScale(renderer)));
-  program->SetUniformf("noiseCells", static_cast<float>(SurfaceNoiseCells));
+  program->SetUniformf("noiseCells", static_cast<float>(SurfaceNoiseTileCells));
   program->SetUniformf("noiseReach", static_cast<float>(reach));
 }
 
@@ -603,9 +743,11 @@ void vtkNPRSketchPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   Internals& internal = *this->Internal;
   internal.CoverageValid = false;
+  internal.NoiseFieldValid = false;
   internal.Sketch.Release(window);
-  for (vtkTextureObject** texture :
-    { &internal.CoverageTexture, &internal.NoiseTexture, &internal.SurfaceNoiseTexture })
+  internal.NoiseField.Release(window);
+  for (vtkTextureObject** texture : { &internal.CoverageTexture, &internal.NoiseTexture,
+         &internal.SurfaceNoiseTexture, &internal.NoiseFieldTexture })
   {
     if (*texture)
     {

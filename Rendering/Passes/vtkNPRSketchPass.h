@@ -39,9 +39,12 @@
  *   whatever moves.
  *
  * The noise is Perlin gradient noise made on the CPU from NoiseSeed, each of its two components
- * an independent noise: in screen space a 256 x 256 texel tile of 8 x 8 lattice cells, in
- * surface space a 64^3 texel tile of 16^3 cells (interpolated trilinearly by the texture unit).
- * The same seed gives the same image on every run. NoiseFrequency is the number of lattice
+ * an independent noise: in screen space a 256 x 256 texel tile of 8 x 8 lattice cells; in
+ * surface space a 64^3 texel tile holding the noise (period 8 cells, 4 texels a cell) and the
+ * same at half the frequency, interpolated trilinearly by the texture unit. The surface noise
+ * is computed once per block of up to 4 x 4 pixels (a cell spans at least 8 blocks), within
+ * reach of the props' projected bounds, and interpolated bilinearly between the blocks'
+ * centres. The same seed gives the same image on every run. NoiseFrequency is the number of lattice
  * cells per 100 pixels. Uncertainty and the noise period are scaled like line widths (DPI / 72
  * x tile scale). With Uncertainty 0 the result is exactly the vtkNPREdgePass image of the same
  * G-buffer.
@@ -191,7 +194,11 @@ private:
   void operator=(const vtkNPRSketchPass&) = delete;
 
   vtkTextureObject* PrepareScreenNoise(vtkOpenGLRenderWindow* window);
-  vtkTextureObject* PrepareSurfaceNoise(vtkOpenGLRenderWindow* window);
+  vtkTextureObject* PrepareSurfaceNoiseTile(vtkOpenGLRenderWindow* window);
+  // The surface noise of each block x block pixels, drawn when the G-buffer or the settings
+  // changed; null when its shader did not compile.
+  vtkTextureObject* RenderSurfaceNoise(const vtkRenderState* state, double reach, int block);
+  int GetSurfaceNoiseBlock(vtkRenderer* renderer) const;
   void SetSurfaceNoiseUniforms(
     vtkShaderProgram* program, vtkRenderer* renderer, int height, double reach);
 

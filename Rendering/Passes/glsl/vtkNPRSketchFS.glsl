@@ -3,8 +3,8 @@
 //VTK::System::Dec
 // vtkNPRSketchPass: lines and surfaces looked up through noise-displaced coordinates, merged on
 // the surface colour or the paper, with the smaller of the two displaced depths as the depth
-// sprite. Every lookup is a texelFetch with the filtering done here, so that the displacement
-// of each pixel is exactly what vtkNPRSketchPass::GetDisplacement() computes.
+// sprite. Every lookup is a texelFetch with the filtering done here, so that with screen noise
+// the displacement of each pixel is exactly what vtkNPRSketchPass::GetDisplacement() computes.
 //NPR::Defines
 in vec2 texCoord; // unused (pixels come from gl_FragCoord) but read: VTK warns about unread inputs
 uniform sampler2D colorTexture;    // the G-buffer's colour (flat colours)
@@ -12,13 +12,8 @@ uniform sampler2D depthTexture;    // the G-buffer's depth
 uniform sampler2D coverageTexture; // r, g, b: coverage of each line type; a: the lines' depth
 uniform ivec2 viewportOrigin;      // of the renderer in the window
 #if NPR_SURFACE_NOISE
-uniform sampler3D noiseTexture;    // tile of noiseCells^3 lattice cells, xy: noise vector
-uniform float noiseCells;
-uniform mat4 deviceToView;         // inverse projection
-uniform mat4 viewToNoise;          // view to world, relative to the noise's anchor
-uniform float pixelFootprint;      // size of a pixel in view units, at view depth 1 (perspective)
-uniform float cellPixels;          // wanted size of a noise cell in pixels
-uniform float noiseReach;          // how far off the surface a pixel looks for it, in pixels
+uniform sampler2D noiseTexture;    // the surface noise of each block of pixels (xy)
+uniform float noiseBlock;          // pixels of a block on each side
 #else
 uniform sampler2D noiseTexture;    // 256 x 256 tile, xy: noise vector
 uniform float noiseScale;          // noise texels per pixel
@@ -36,63 +31,20 @@ bool nprInside(ivec2 texel, ivec2 size)
 }
 
 #if NPR_SURFACE_NOISE
-vec3 nprViewPosition(vec2 pixel, float stored, vec2 size)
-{
-  vec2 ndc = (pixel + 0.5) / size * 2.0 - 1.0;
-#if NPR_REMAPPED_DEPTH
-  // Log depth (perspective only): the point of the pixel's ray at that view depth.
-  vec4 near = deviceToView * vec4(ndc, -1.0, 1.0);
-  vec3 onNear = near.xyz / near.w;
-  return onNear * (nprDepthRemap.x * exp(stored * nprDepthRemap.y) / -onNear.z);
-#else
-  vec4 view = deviceToView * vec4(ndc, stored * 2.0 - 1.0, 1.0);
-  return view.xyz / view.w;
-#endif
-}
-
-// The surface point's noise: two octaves a factor 2 apart, chosen and blended by the pixel size
-// there, so that a cell keeps its size on screen within a factor of two under any zoom.
-vec2 nprSurfaceNoise(vec3 view)
-{
-#if NPR_PERSPECTIVE
-  float footprint = pixelFootprint * max(-view.z, 1e-30);
-#else
-  float footprint = pixelFootprint;
-#endif
-  float level = log2(max(footprint * cellPixels, 1e-30));
-  float octave = floor(level);
-  float t = level - octave;
-  vec3 at = (viewToNoise * vec4(view, 1.0)).xyz * (exp2(-octave) / noiseCells);
-  vec2 fine = texture(noiseTexture, at).xy;
-  vec2 coarse = texture(noiseTexture, 0.5 * at).xy;
-  // Blended independent noises keep their spread when divided by this; clamped to |n| <= 1.
-  vec2 n = mix(fine, coarse, t) / sqrt(t * t + (1.0 - t) * (1.0 - t));
-  float length2 = dot(n, n);
-  return length2 > 1.0 ? n * inversesqrt(length2) : n;
-}
-
+// The noise field of vtkNPRSketchNoiseFS (one texel per block), interpolated bilinearly.
 vec2 nprNoise(vec2 pixel, ivec2 size)
 {
-  float stored = texelFetch(depthTexture, ivec2(pixel), 0).r;
-  if (stored >= 1.0)
-  {
-    // Off the surface: the farthest surface within reach (along a silhouette, the rim's depth).
-    const vec2 directions[8] = vec2[8](vec2(1.0, 0.0), vec2(0.70710678, 0.70710678),
-      vec2(0.0, 1.0), vec2(-0.70710678, 0.70710678), vec2(-1.0, 0.0),
-      vec2(-0.70710678, -0.70710678), vec2(0.0, -1.0), vec2(0.70710678, -0.70710678));
-    stored = -1.0;
-    for (int k = 0; k < 8; ++k)
-    {
-      ivec2 tap = ivec2(floor(pixel + 0.5 + noiseReach * directions[k]));
-      float tapDepth = nprInside(tap, size) ? texelFetch(depthTexture, tap, 0).r : 1.0;
-      stored = tapDepth < 1.0 ? max(stored, tapDepth) : stored;
-    }
-    if (stored < 0.0)
-    {
-      return vec2(0.0); // no surface near: no line near either
-    }
-  }
-  return nprSurfaceNoise(nprViewPosition(pixel, stored, vec2(size)));
+  ivec2 last = textureSize(noiseTexture, 0) - 1;
+  vec2 t = (pixel + 0.5) / noiseBlock - 0.5;
+  vec2 cell = floor(t);
+  vec2 f = t - cell;
+  ivec2 i = clamp(ivec2(cell), ivec2(0), last);
+  ivec2 j = clamp(ivec2(cell) + 1, ivec2(0), last);
+  vec2 n00 = texelFetch(noiseTexture, i, 0).xy;
+  vec2 n10 = texelFetch(noiseTexture, ivec2(j.x, i.y), 0).xy;
+  vec2 n01 = texelFetch(noiseTexture, ivec2(i.x, j.y), 0).xy;
+  vec2 n11 = texelFetch(noiseTexture, j, 0).xy;
+  return mix(mix(n00, n10, f.x), mix(n01, n11, f.x), f.y);
 }
 #else
 vec2 nprNoise(vec2 pixel, ivec2 size)
