@@ -4,6 +4,7 @@
 
 #include "nprArguments.h"
 #include "nprPassOptions.h"
+#include "nprViewer.h"
 
 namespace
 {
@@ -24,25 +25,14 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
   -h, --help               this text
   --version                the program and vtkNPR version
 
-Keys:
-  1..6   style: shaded, edges, toon, toon+edges, sketch, inked
-  + -    line width up / down by 0.5 px
-  ] [    crease angle up / down by 5 degrees
-  s c o  silhouettes, creases, contours on / off
-  p      save a screenshot of the render (no overlay)
-  P      save a screenshot as shown (with the overlay)
-  k      save the camera (JSON for npr-render --camera-in)
-  r      reset the camera
-  h      help overlay on / off
-  q e    quit
-
 )";
 }
 
 nprViewOptions nprParseViewOptions(int argc, char* argv[])
 {
   nprViewOptions options;
-  static const std::string help = std::string(Usage) + nprPassOptionsHelp;
+  static const std::string help =
+    std::string(Usage) + "Keys:\n" + nprViewKeys + "\n" + nprPassOptionsHelp;
   nprArgumentReader arguments(argc, argv, help.c_str());
   while (arguments.Next())
   {

@@ -25,21 +25,6 @@
 
 namespace
 {
-const char* const HelpText = "npr-view keys\n"
-                             "  1..6   style: 1 shaded, 2 edges, 3 toon,\n"
-                             "         4 toon+edges, 5 sketch, 6 inked\n"
-                             "  + -    line width up / down (0.5 px)\n"
-                             "  ] [    crease angle up / down (5 deg)\n"
-                             "  s c o  silhouettes, creases, contours on/off\n"
-                             "  p      save a screenshot (render only)\n"
-                             "  P      save a screenshot with this overlay\n"
-                             "  k      save the camera (npr-render --camera-in)\n"
-                             "  r      reset the camera\n"
-                             "  h      this help on/off\n"
-                             "  q e    quit\n"
-                             "mouse: left rotate, middle or shift+left pan,\n"
-                             "       right or wheel zoom, ctrl+left spin";
-
 // A process-wide clock in milliseconds, for the frame time between two events.
 double NowMilliseconds()
 {
@@ -52,6 +37,19 @@ bool Exists(const std::string& path)
   return std::ifstream(path).good();
 }
 }
+
+const char* const nprViewKeys = R"(  1..6   style: shaded, edges, toon, toon+edges, sketch, inked
+  + -    line width up / down by 0.5 px
+  ] [    crease angle up / down by 5 degrees
+  s c o  silhouettes, creases, contours on / off
+  p      save a screenshot of the render (no overlay)
+  P      save a screenshot as shown (with the overlay)
+  k      save the camera (JSON for npr-render --camera-in)
+  r      reset the camera
+  h      help overlay on / off
+  q e    quit
+mouse: left rotate, middle or shift+left pan, right or wheel zoom, ctrl+left spin
+)";
 
 vtkStandardNewMacro(nprViewInteractorStyle);
 
@@ -101,7 +99,8 @@ nprViewer::nprViewer(vtkRenderWindow* window, vtkRenderer* renderer,
   help->SetBackgroundColor(1.0, 1.0, 0.85);
   help->SetBackgroundOpacity(0.9);
   help->SetVerticalJustificationToTop();
-  this->Help->SetInput(HelpText);
+  const std::string keys = std::string("npr-view keys\n") + nprViewKeys;
+  this->Help->SetInput(keys.substr(0, keys.size() - 1).c_str()); // without the last newline
   this->Help->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   this->Help->GetPositionCoordinate()->SetValue(0.02, 0.98);
   this->Help->VisibilityOff();

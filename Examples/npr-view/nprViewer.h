@@ -20,6 +20,9 @@ class vtkRenderWindow;
 class vtkRenderer;
 class vtkTextActor;
 
+// The keys and mouse buttons, one per line (for --help and the help overlay).
+extern const char* const nprViewKeys;
+
 class nprViewer
 {
 public:
