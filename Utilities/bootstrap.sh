@@ -54,7 +54,7 @@ packages=(libvtk9-dev python3-vtk9 libegl-dev libegl-mesa0 libgl1-mesa-dri libop
 # debootstrap for the chroots of the other releases (installed here, before their set-ups start
 # side by side).
 # dpkg-dev and file for CPack's Debian packages (dpkg-shlibdeps).
-if [[ $task == test ]]; then packages+=(debootstrap clang-format dpkg-dev file); fi
+if [[ $task == test ]]; then packages+=(debootstrap clang-format dpkg-dev file xdotool); fi
 missing=()
 for package in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then

@@ -15,7 +15,7 @@
 #   libvtknpr-dev   development  headers, the CMake package (find_package(vtkNPR)), wrapping
 #                                hierarchy files
 #   python3-vtknpr  python       the `vtknpr` Python package
-#   vtknpr-tools    programs     npr-render (and npr-render-osmesa where built)
+#   vtknpr-tools    programs     npr-render (and npr-render-osmesa where built), npr-view
 # The plugin build (NPR_BUILD_PARAVIEW_PLUGIN) gives one: paraview-vtknpr.
 #
 # NPR_DEBIAN_RELEASE names the Debian release in the package version (0.1.0-1+deb12); by default
@@ -121,7 +121,7 @@ else ()
   set(CPACK_DEBIAN_PYTHON_DESCRIPTION
     "Non-photorealistic rendering for VTK: Python module\n The vtknpr package: every vtkNPR class for VTK's Python (vtkmodules), and\n vtknpr.pyvista.enable_npr for PyVista plotters.")
   set(CPACK_DEBIAN_PROGRAMS_DESCRIPTION
-    "Non-photorealistic rendering for VTK: command-line renderer\n npr-render renders model files (STL, OBJ, PLY, VTP, VTK, glTF, OFF) in vtkNPR's styles\n to PNG images, headless through EGL.")
+    "Non-photorealistic rendering for VTK: command-line renderer\n npr-render renders model files (STL, OBJ, PLY, VTP, VTK, glTF, OFF) in vtkNPR's styles\n to PNG images, headless through EGL; npr-view shows them in an X window.")
 endif ()
 
 include(CPack)

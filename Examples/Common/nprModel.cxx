@@ -2,13 +2,20 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nprModel.h"
 
+#include "vtkActor.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkNPRModelReader.h"
 #include "vtkNPRShadingNormals.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
 
+#include <iostream>
 #include <stdexcept>
 
 vtkSmartPointer<vtkPolyData> nprReadModel(const std::string& path, std::string* warning)
@@ -55,4 +62,29 @@ void nprApplyModelLook(vtkProperty* property, size_t index)
   property->SetColor(color[0], color[1], color[2]);
   property->SetSpecular(0.2);
   property->SetSpecularPower(30.0);
+}
+
+long long nprAddModel(
+  vtkRenderer* renderer, const std::string& path, size_t index, const std::string& program)
+{
+  std::string warning;
+  vtkSmartPointer<vtkPolyData> model = nprReadModel(path, &warning);
+  if (!warning.empty())
+  {
+    std::cerr << program << ": warning: " << warning << "\n";
+  }
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(nprPrepareMesh(model));
+  // Colours stored in the file (PLY, OFF, VTK) are shown as they are; other arrays are not.
+  vtkDataArray* colors = model->GetPointData()->GetScalars() ? model->GetPointData()->GetScalars()
+                                                             : model->GetCellData()->GetScalars();
+  const bool fileColors = vtkUnsignedCharArray::SafeDownCast(colors) &&
+    (colors->GetNumberOfComponents() == 3 || colors->GetNumberOfComponents() == 4);
+  mapper->SetScalarVisibility(fileColors);
+  mapper->SetColorModeToDirectScalars();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  nprApplyModelLook(actor->GetProperty(), index);
+  renderer->AddActor(actor);
+  return nprCountTriangles(model);
 }

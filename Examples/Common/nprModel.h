@@ -12,6 +12,7 @@
 
 class vtkPolyData;
 class vtkProperty;
+class vtkRenderer;
 
 // Reads a model file (any format vtkNPRModelReader knows). Throws std::runtime_error with the
 // reader's one-line message; a warning (such as points dropped) goes to warning when given.
@@ -27,5 +28,11 @@ long long nprCountTriangles(vtkPolyData* mesh);
 // The surface of the index-th model of a scene: pleasant, distinguishable colours, a little
 // specular.
 void nprApplyModelLook(vtkProperty* property, size_t index);
+
+// Reads the index-th model of a scene and adds it to renderer: the prepared mesh, in its file's
+// colours when it has them, else in nprApplyModelLook's. A reader warning is printed on stderr as
+// "PROGRAM: warning: ...". Returns the model's triangles.
+long long nprAddModel(
+  vtkRenderer* renderer, const std::string& path, size_t index, const std::string& program);
 
 #endif

@@ -10,6 +10,12 @@
 vtkSmartPointer<vtkNPRPass> nprMakePass(const nprPassSettings& settings)
 {
   auto pass = vtkSmartPointer<vtkNPRPass>::New();
+  nprApplyPassSettings(pass, settings);
+  return pass;
+}
+
+void nprApplyPassSettings(vtkNPRPass* pass, const nprPassSettings& settings)
+{
   pass->SetStyle(vtkNPRPass::GetStyleFromName(settings.Style.c_str()));
   vtkNPREdgePass* edges = pass->GetEdgePass();
   edges->SetSilhouettes(settings.Silhouettes);
@@ -40,5 +46,4 @@ vtkSmartPointer<vtkNPRPass> nprMakePass(const nprPassSettings& settings)
   vtkNPRInkPass* ink = pass->GetInkPass();
   ink->SetLineWidth(settings.LineWidth);
   ink->SetInkColor(settings.SilhouetteColor);
-  return pass;
 }

@@ -51,4 +51,8 @@ struct nprPassSettings
 // it, rather than VTK's own chain, is the caller's choice).
 vtkSmartPointer<vtkNPRPass> nprMakePass(const nprPassSettings& settings);
 
+// Sets settings on an existing pass (style included): what nprMakePass does to a new one. The
+// pass keeps its shaders and buffers, so a viewer can change settings from frame to frame.
+void nprApplyPassSettings(vtkNPRPass* pass, const nprPassSettings& settings);
+
 #endif

@@ -12,22 +12,15 @@
 #include "nprTiming.h"
 #include "nprWindowImage.h"
 
-#include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkCellData.h"
 #include "vtkNPRInkPass.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRReferenceMask.h"
 #include "vtkNPRRenderWindowFactory.h"
 #include "vtkNew.h"
-#include "vtkPointData.h"
-#include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
-#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,46 +31,6 @@
 
 namespace
 {
-std::string JsonString(const std::string& text)
-{
-  std::string quoted = "\"";
-  for (char c : text)
-  {
-    if (c == '"' || c == '\\')
-    {
-      quoted += '\\';
-    }
-    quoted += (static_cast<unsigned char>(c) < 0x20) ? ' ' : c;
-  }
-  return quoted + "\"";
-}
-
-// Adds the index-th model: its file's colours when it has them, else the palette's colour.
-// Returns its triangles.
-long long AddModel(vtkRenderer* renderer, const std::string& path, size_t index)
-{
-  std::string warning;
-  vtkSmartPointer<vtkPolyData> model = nprReadModel(path, &warning);
-  if (!warning.empty())
-  {
-    std::cerr << "npr-render: warning: " << warning << "\n";
-  }
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(nprPrepareMesh(model));
-  // Colours stored in the file (PLY, OFF, VTK) are shown as they are; other arrays are not.
-  vtkDataArray* colors = model->GetPointData()->GetScalars() ? model->GetPointData()->GetScalars()
-                                                             : model->GetCellData()->GetScalars();
-  const bool fileColors = vtkUnsignedCharArray::SafeDownCast(colors) &&
-    (colors->GetNumberOfComponents() == 3 || colors->GetNumberOfComponents() == 4);
-  mapper->SetScalarVisibility(fileColors);
-  mapper->SetColorModeToDirectScalars();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  nprApplyModelLook(actor->GetProperty(), index);
-  renderer->AddActor(actor);
-  return nprCountTriangles(model);
-}
-
 // The visible object-space lines of what --lines asks for, as a white-on-black 8-bit grey PNG:
 // silhouettes and creases as named; contours (object outlines) are silhouettes and boundaries;
 // non-manifold edges, where surfaces meet at an angle, go with creases.
@@ -136,19 +89,19 @@ void TimeFrames(const nprRenderOptions& options, vtkRenderWindow* window, vtkRen
   auto ratio = [](double value) { return nprFormatNumber(std::round(value * 1e3) / 1e3); };
   const std::vector<double>& main = times[0];
   const double mainMedian = nprMedian(main);
-  std::cout << "{\"style\":" << JsonString(options.Pass.Style) << ",\"frames\":" << main.size()
+  std::cout << "{\"style\":" << nprJsonString(options.Pass.Style) << ",\"frames\":" << main.size()
             << ",\"median_ms\":" << milliseconds(mainMedian)
             << ",\"min_ms\":" << milliseconds(*std::min_element(main.begin(), main.end()))
             << ",\"max_ms\":" << milliseconds(*std::max_element(main.begin(), main.end()));
   if (styles.size() > 1)
   {
     // The first compared style as before; every compared style with its time over the main's.
-    std::cout << ",\"compare_style\":" << JsonString(styles[1])
+    std::cout << ",\"compare_style\":" << nprJsonString(styles[1])
               << ",\"compare_median_ms\":" << milliseconds(nprMedian(times[1]))
               << ",\"ratio\":" << ratio(mainMedian / nprMedian(times[1])) << ",\"compare\":[";
     for (size_t i = 1; i < styles.size(); ++i)
     {
-      std::cout << (i > 1 ? "," : "") << "{\"style\":" << JsonString(styles[i])
+      std::cout << (i > 1 ? "," : "") << "{\"style\":" << nprJsonString(styles[i])
                 << ",\"median_ms\":" << milliseconds(nprMedian(times[i]))
                 << ",\"ratio_to_main\":" << ratio(nprMedian(times[i]) / mainMedian) << "}";
     }
@@ -157,8 +110,8 @@ void TimeFrames(const nprRenderOptions& options, vtkRenderWindow* window, vtkRen
   std::cout << ",\"triangles\":" << triangles
             << ",\"pixels\":" << static_cast<long long>(width) * height << ",\"width\":" << width
             << ",\"height\":" << height
-            << ",\"backend\":" << JsonString(vtkNPRRenderWindowFactory::GetBackendName(window))
-            << ",\"renderer\":" << JsonString(vtkNPRRenderWindowFactory::GetGLRenderer(window))
+            << ",\"backend\":" << nprJsonString(vtkNPRRenderWindowFactory::GetBackendName(window))
+            << ",\"renderer\":" << nprJsonString(vtkNPRRenderWindowFactory::GetGLRenderer(window))
             << "}" << std::endl;
 }
 
@@ -176,7 +129,7 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
   long long triangles = 0;
   for (size_t i = 0; i < options.Models.size(); ++i)
   {
-    triangles += AddModel(renderer, options.Models[i], i);
+    triangles += nprAddModel(renderer, options.Models[i], i, "npr-render");
   }
 
   int width = options.Width, height = options.Height;

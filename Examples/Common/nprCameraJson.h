@@ -35,4 +35,7 @@ std::string nprCameraToJson(const nprCameraState& camera);
 // Shortest text that reads back as the same double; integral values keep a ".0".
 std::string nprFormatNumber(double value);
 
+// text as a JSON string, quotes included (control characters become spaces).
+std::string nprJsonString(const std::string& text);
+
 #endif

@@ -226,3 +226,17 @@ nprCameraState nprReadCameraFile(const std::string& fileName)
   }
   return camera;
 }
+
+std::string nprJsonString(const std::string& text)
+{
+  std::string quoted = "\"";
+  for (char c : text)
+  {
+    if (c == '"' || c == '\\')
+    {
+      quoted += '\\';
+    }
+    quoted += (static_cast<unsigned char>(c) < 0x20) ? ' ' : c;
+  }
+  return quoted + "\"";
+}

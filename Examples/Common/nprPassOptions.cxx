@@ -1,0 +1,213 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "nprPassOptions.h"
+
+#include "nprArguments.h"
+#include "nprPassSettings.h"
+
+#include "vtkNPREdgePass.h"
+#include "vtkNPRPass.h"
+
+#include <algorithm>
+#include <iterator>
+#include <vector>
+
+const char* const nprPassOptionsHelp = R"(Style:
+  --style NAME             shaded (default), edges, toon, toon+edges, sketch or inked
+
+Lines (--style edges, toon+edges and sketch):
+  --lines LIST             line types drawn, comma separated: silhouettes, creases,
+                           contours, or none (default silhouettes,creases,contours)
+  --silhouette-threshold X relative depth step that makes a silhouette (default 0.005)
+  --crease-angle DEG       normal angle that makes a crease, 1..179 (default 30)
+  --contour-side SIDE      inside, outside or both (default inside)
+  --line-width PX          line width in pixels, 0.5..16 (default 1.5)
+  --line-color COLOR       colour of every line type (default black)
+  --silhouette-color COLOR, --crease-color COLOR, --contour-color COLOR
+  --no-antialias           lines without anti-aliasing
+  --encoding NAME          how the G-buffer stores depth and normals: float (default),
+                           half, packed8 or packed16 (the 1990s packed depth+normal
+                           value, lines from its Laplacian)
+  --packed-threshold X     packed encodings: Laplacian that makes a line, in units of one
+                           component's range, 0.001..4 (default 0.1)
+  --packed-blur            packed encodings: blur before the Laplacian (fatter lines)
+
+Inking (--style inked):
+  --line-width PX          ink line width in pixels, 0.5..16 (default 1.5)
+  --line-color COLOR       ink colour (default black)
+
+Toon shading (--style toon, toon+edges):
+  --toon-bands N           number of equal light bands, 1..64 (default 3)
+  --toon-per-vertex        light at the vertices, interpolated, then banded (default:
+                           per pixel)
+
+Sketch (--style sketch):
+  --uncertainty PX         largest displacement of lines and fills in pixels, 0..32
+                           (default 3; 0 draws the exact lines on flat colours)
+  --noise-seed N           seed of the noise, 0..2147483647 (default 1)
+  --noise-frequency F      noise cells per 100 pixels, 0.05..25 (default 2)
+  --noise-space SPACE      surface (the wobble stays on the surfaces as the camera moves) or
+                           screen (fixed to the pixels) (default surface)
+  --paper-color COLOR      draw on paper of this colour instead of the background
+  --sketch-toon            fill with the toon bands (--toon-bands) instead of flat colours
+)";
+
+bool nprIsStyleName(const std::string& name)
+{
+  return vtkNPRPass::GetStyleFromName(name.c_str()) >= 0;
+}
+
+std::string nprStyleNames()
+{
+  std::string names;
+  for (int style = vtkNPRPass::SHADED; style <= vtkNPRPass::INKED; ++style)
+  {
+    names += (names.empty() ? "" : ", ") + std::string(vtkNPRPass::GetStyleName(style));
+  }
+  return names;
+}
+
+bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
+{
+  const std::string& arg = arguments.Current();
+  if (arg == "--style")
+  {
+    pass.Style = arguments.Value();
+    if (!nprIsStyleName(pass.Style))
+    {
+      throw nprUsageError(
+        "unknown style '" + pass.Style + "' (valid styles: " + nprStyleNames() + ")");
+    }
+  }
+  else if (arg == "--lines")
+  {
+    const std::vector<std::string> parts = nprSplitList(arguments.Value());
+    pass.Silhouettes = pass.Creases = pass.Contours = false;
+    for (const std::string& part : parts)
+    {
+      if (part == "silhouettes" || part == "silhouette")
+      {
+        pass.Silhouettes = true;
+      }
+      else if (part == "creases" || part == "crease")
+      {
+        pass.Creases = true;
+      }
+      else if (part == "contours" || part == "contour")
+      {
+        pass.Contours = true;
+      }
+      else if (part != "none")
+      {
+        throw nprUsageError(
+          "--lines expects silhouettes, creases, contours or none, got '" + part + "'");
+      }
+    }
+  }
+  else if (arg == "--silhouette-threshold")
+  {
+    pass.SilhouetteThreshold = nprParseRange(arg, arguments.Value(), 1e-5, 1.0);
+  }
+  else if (arg == "--crease-angle")
+  {
+    pass.CreaseAngle = nprParseRange(arg, arguments.Value(), 1.0, 179.0);
+  }
+  else if (arg == "--contour-side")
+  {
+    const std::string side = arguments.Value();
+    const char* const sides[] = { "inside", "outside", "both" };
+    const auto found = std::find(std::begin(sides), std::end(sides), side);
+    if (found == std::end(sides))
+    {
+      throw nprUsageError("--contour-side expects inside, outside or both, got '" + side + "'");
+    }
+    pass.ContourSide = static_cast<int>(found - std::begin(sides));
+  }
+  else if (arg == "--line-width")
+  {
+    pass.LineWidth = nprParseRange(arg, arguments.Value(), 0.5, 16.0);
+  }
+  else if (arg == "--line-color")
+  {
+    nprParseColor(arg, arguments.Value(), pass.SilhouetteColor);
+    std::copy_n(pass.SilhouetteColor, 3, pass.CreaseColor);
+    std::copy_n(pass.SilhouetteColor, 3, pass.ContourColor);
+  }
+  else if (arg == "--silhouette-color")
+  {
+    nprParseColor(arg, arguments.Value(), pass.SilhouetteColor);
+  }
+  else if (arg == "--crease-color")
+  {
+    nprParseColor(arg, arguments.Value(), pass.CreaseColor);
+  }
+  else if (arg == "--contour-color")
+  {
+    nprParseColor(arg, arguments.Value(), pass.ContourColor);
+  }
+  else if (arg == "--no-antialias")
+  {
+    pass.AntiAliasing = false;
+  }
+  else if (arg == "--encoding")
+  {
+    const std::string encoding = arguments.Value();
+    pass.Encoding = vtkNPREdgePass::GetEncodingFromName(encoding.c_str());
+    if (pass.Encoding < 0)
+    {
+      throw nprUsageError(
+        "--encoding expects float, half, packed8 or packed16, got '" + encoding + "'");
+    }
+  }
+  else if (arg == "--packed-threshold")
+  {
+    pass.PackedThreshold = nprParseRange(arg, arguments.Value(), 0.001, 4.0);
+  }
+  else if (arg == "--packed-blur")
+  {
+    pass.PackedBlur = true;
+  }
+  else if (arg == "--toon-bands")
+  {
+    pass.ToonBands = nprParseInteger(arg, arguments.Value(), 1, 64);
+  }
+  else if (arg == "--toon-per-vertex")
+  {
+    pass.ToonPerVertex = true;
+  }
+  else if (arg == "--uncertainty")
+  {
+    pass.Uncertainty = nprParseRange(arg, arguments.Value(), 0.0, 32.0);
+  }
+  else if (arg == "--noise-seed")
+  {
+    pass.NoiseSeed = nprParseInteger(arg, arguments.Value(), 0, 2147483647);
+  }
+  else if (arg == "--noise-space")
+  {
+    const std::string space = arguments.Value();
+    if (space != "surface" && space != "screen")
+    {
+      throw nprUsageError("--noise-space expects surface or screen, got '" + space + "'");
+    }
+    pass.NoiseSpace = space == "screen" ? vtkNPRSketchPass::SCREEN : vtkNPRSketchPass::SURFACE;
+  }
+  else if (arg == "--noise-frequency")
+  {
+    pass.NoiseFrequency = nprParseRange(arg, arguments.Value(), 0.05, 25.0);
+  }
+  else if (arg == "--paper-color")
+  {
+    nprParseColor(arg, arguments.Value(), pass.PaperColor);
+    pass.Paper = true;
+  }
+  else if (arg == "--sketch-toon")
+  {
+    pass.SketchToon = true;
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}

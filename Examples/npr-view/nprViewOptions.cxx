@@ -1,0 +1,81 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "nprViewOptions.h"
+
+#include "nprArguments.h"
+#include "nprPassOptions.h"
+#include "nprViewer.h"
+
+namespace
+{
+const char* const Usage = R"(usage: npr-view [options] MODEL [MODEL...]
+
+Shows the given models in an X window with the vtkNPR styles; mouse and keys as in VTK's
+trackball camera, and the keys below. Needs an X display (use npr-render without one).
+Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
+
+  --size WxH               window size in pixels (default 1024x768, or the size in
+                           --camera-in's file)
+  --background COLOR       r,g,b in 0..1 or #rrggbb (default white)
+  --camera-in FILE         start with this camera (JSON, as npr-render --camera-in)
+  --output-prefix PREFIX   screenshots PREFIXNNNN.png, cameras PREFIXcamera-NNNN.json
+                           (default npr-view-, in the current directory)
+  --orbit-benchmark N      turn the camera 1 degree per frame for N frames, print one
+                           JSON line with the frame times and exit
+  -h, --help               this text
+  --version                the program and vtkNPR version
+
+)";
+}
+
+nprViewOptions nprParseViewOptions(int argc, char* argv[])
+{
+  nprViewOptions options;
+  static const std::string help =
+    std::string(Usage) + "Keys:\n" + nprViewKeys + "\n" + nprPassOptionsHelp;
+  nprArgumentReader arguments(argc, argv, help.c_str());
+  while (arguments.Next())
+  {
+    const std::string& arg = arguments.Current();
+    if (nprParsePassOption(arguments, options.Pass))
+    {
+      continue; // --style and the flags of the styles
+    }
+    if (arg == "--size")
+    {
+      const auto size = nprParseSize("--size", arguments.Value(), 1, 16384, "WxH (e.g. 1024x768)");
+      options.Width = size.first;
+      options.Height = size.second;
+      options.SizeGiven = true;
+    }
+    else if (arg == "--background")
+    {
+      nprParseColor(arg, arguments.Value(), options.Background);
+    }
+    else if (arg == "--camera-in")
+    {
+      options.CameraIn = arguments.Value();
+    }
+    else if (arg == "--output-prefix")
+    {
+      options.OutputPrefix = arguments.Value();
+    }
+    else if (arg == "--orbit-benchmark")
+    {
+      options.OrbitFrames = nprParseInteger(arg, arguments.Value(), 1, 100000);
+    }
+    else if (arg.size() > 1 && arg[0] == '-')
+    {
+      throw nprUsageError("unknown option '" + arg + "' (see --help)");
+    }
+    else
+    {
+      options.Models.push_back(arg);
+    }
+  }
+  if (options.Models.empty())
+  {
+    throw nprUsageError("no model file given (see --help)");
+  }
+  return options;
+}

@@ -1,0 +1,28 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+// npr-view's command line: its options, --help and their parsing.
+#ifndef nprViewOptions_h
+#define nprViewOptions_h
+
+#include "nprPassSettings.h"
+
+#include <string>
+#include <vector>
+
+struct nprViewOptions
+{
+  std::vector<std::string> Models;
+  int Width = 1024;
+  int Height = 768;
+  bool SizeGiven = false;
+  double Background[3] = { 1.0, 1.0, 1.0 };
+  std::string CameraIn;
+  std::string OutputPrefix = "npr-view-";
+  int OrbitFrames = 0;  // --orbit-benchmark N
+  nprPassSettings Pass; // --style and the flags of the styles, as npr-render takes them
+};
+
+// Prints --help and exits for -h; throws nprUsageError for anything else that is wrong.
+nprViewOptions nprParseViewOptions(int argc, char* argv[]);
+
+#endif
