@@ -103,7 +103,7 @@ def check_coherence(out):
     check({"edges", "sketch, surface noise", "sketch, screen noise", "inked"} <= styles,
           "styles: %s" % sorted(styles))
     for row in rows:
-        for key in ("landed", "appeared", "vanished"):
+        for key in ("landed", "landed_exactly", "appeared", "vanished"):
             value = number(row, key)
             check(0.0 <= value <= 1.0, "%s out of [0, 1]: %s" % (key, row))
         if row["path"] == "pan 20 px":

@@ -115,6 +115,10 @@ nprCoherenceStep nprCompareCoherenceFrames(
       {
         ++step.Landed;
       }
+      if (second.Lines[static_cast<size_t>(v) * second.Width + u])
+      {
+        ++step.LandedExactly;
+      }
       for (int dy = -1; dy <= 1; ++dy)
       {
         for (int dx = -1; dx <= 1; ++dx)
@@ -137,6 +141,8 @@ nprCoherenceStep nprCompareCoherenceFrames(
     }
   }
   step.LandedFraction = step.Carried ? static_cast<double>(step.Landed) / step.Carried : 0.0;
+  step.LandedExactlyFraction =
+    step.Carried ? static_cast<double>(step.LandedExactly) / step.Carried : 0.0;
   step.VanishedFraction = step.Carried ? 1.0 - step.LandedFraction : 0.0;
   step.AppearedFraction =
     step.NextLines ? static_cast<double>(step.Appeared) / step.NextLines : 0.0;

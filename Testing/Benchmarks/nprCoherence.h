@@ -29,14 +29,16 @@ nprCoherenceFrame nprCaptureCoherenceFrame(vtkRenderWindow* window, vtkRenderer*
 
 struct nprCoherenceStep
 {
-  long long Lines = 0;         // line pixels of the first frame
-  long long Carried = 0;       // of those, with a depth, that land inside the second frame
-  long long Landed = 0;        // of those, within 1 pixel of a line pixel of the second frame
-  long long NextLines = 0;     // line pixels of the second frame
-  long long Appeared = 0;      // of those, with no carried line pixel within 1 pixel
-  double LandedFraction = 0;   // Landed / Carried
-  double AppearedFraction = 0; // Appeared / NextLines
-  double VanishedFraction = 0; // 1 - LandedFraction
+  long long Lines = 0;              // line pixels of the first frame
+  long long Carried = 0;            // of those, with a depth, that land inside the second frame
+  long long Landed = 0;             // of those, within 1 pixel of a line pixel of the second frame
+  long long LandedExactly = 0;      // of those, on a line pixel of the second frame
+  long long NextLines = 0;          // line pixels of the second frame
+  long long Appeared = 0;           // of those, with no carried line pixel within 1 pixel
+  double LandedFraction = 0;        // Landed / Carried
+  double LandedExactlyFraction = 0; // LandedExactly / Carried
+  double AppearedFraction = 0;      // Appeared / NextLines
+  double VanishedFraction = 0;      // 1 - LandedFraction
 };
 
 // The first frame's line pixels carried into the second (margin: pixels this close to the
