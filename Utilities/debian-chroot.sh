@@ -57,9 +57,10 @@ base=${NPR_CHROOT_BASE:-/var/cache/vtknpr}
 # What every chroot needs to build and test: the toolchain, Mesa's EGL (software), Xvfb; and to
 # make Debian packages with CPack (dpkg-shlibdeps, file).
 common=(cmake ninja-build g++ xvfb xauth libegl-mesa0 libgl1-mesa-dri libopengl-dev dpkg-dev file)
-# VTK and its Python bindings; EGL's development files for the module's own EGL window (VTK < 9.4).
-# The ParaView plugin compiles the passes only and needs neither.
-vtk=(libvtk9-dev python3-vtk9 libegl-dev)
+# VTK and its Python bindings; EGL's development files for the module's own EGL window (VTK < 9.4);
+# xdotool to drive npr-view in its test. The ParaView plugin compiles the passes only and needs
+# none of them.
+vtk=(libvtk9-dev python3-vtk9 libegl-dev xdotool)
 # PyVista on that VTK, for the vtknpr.pyvista entry point and PyVista's examples as clients.
 pyvista=(python3-pyvista)
 # ParaView's development files and the -dev packages its CMake configuration needs without

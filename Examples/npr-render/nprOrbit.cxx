@@ -223,6 +223,10 @@ std::string nprOrbitOutputKind(const std::string& output)
   {
     return "mp4";
   }
+  if (EndsWith(name, ".avi"))
+  {
+    return "avi";
+  }
   return "";
 }
 
@@ -241,19 +245,21 @@ std::string nprOrbitFramePath(const std::string& output, int index, int count)
 void nprCheckOrbitOutput(const nprOrbitSettings& settings)
 {
   const std::string kind = nprOrbitOutputKind(settings.Output);
-  if (kind == "mp4")
+  if (kind == "mp4" && FindFFmpeg().empty())
   {
-#ifndef NPR_HAS_VTK_FFMPEG
-    if (FindFFmpeg().empty())
-    {
-      throw std::runtime_error(settings.Output +
-        ": writing MP4 needs the ffmpeg program (Debian package ffmpeg), which is not on PATH, "
-        "and this VTK has no vtkFFMPEGWriter; write .ogv or PNG frames instead");
-    }
-#endif
-    CheckWritable(settings.Output);
+    throw std::runtime_error(settings.Output +
+      ": writing MP4 needs the ffmpeg program (Debian package ffmpeg), which is not on PATH; "
+      "write .ogv or PNG frames instead");
   }
-  else if (kind == "ogv")
+#ifndef NPR_HAS_VTK_FFMPEG
+  if (kind == "avi")
+  {
+    throw std::runtime_error(settings.Output +
+      ": writing AVI needs VTK's vtkFFMPEGWriter, which this VTK does not have; write .ogv, "
+      ".mp4 (with the ffmpeg program) or PNG frames instead");
+  }
+#endif
+  if (kind != "png")
   {
     CheckWritable(settings.Output);
   }
@@ -274,15 +280,17 @@ void nprWriteOrbit(vtkRenderWindow* window, vtkRenderer* renderer, const nprOrbi
   }
   else if (kind == "mp4")
   {
+    sink.reset(new FFmpegSink(FindFFmpeg(), settings, size[0], size[1]));
+  }
 #ifdef NPR_HAS_VTK_FFMPEG
+  else if (kind == "avi")
+  {
     vtkNew<vtkFFMPEGWriter> writer;
     writer->SetRate(static_cast<int>(settings.Rate + 0.5));
     writer->SetQuality(2);
     sink.reset(new MovieSink(window, writer, settings.Output));
-#else
-    sink.reset(new FFmpegSink(FindFFmpeg(), settings, size[0], size[1]));
-#endif
   }
+#endif
   else
   {
     sink.reset(new PNGSink(settings));

@@ -31,8 +31,8 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
   --frames N               time N frames after a warm-up; print one JSON line
   --orbit N                write N frames of the camera turning about the view up through
                            the focal point: -o NAME.png writes NAME_0001.png..., -o NAME.ogv
-                           an Ogg Theora video, -o NAME.mp4 an MP4 (VTK's FFMPEG writer, or
-                           the ffmpeg program)
+                           an Ogg Theora video, -o NAME.mp4 an MP4 (the ffmpeg program),
+                           -o NAME.avi an AVI (VTK's FFMPEG writer, where VTK has it)
   --orbit-degrees DEG      the whole turn of --orbit, -3600..3600 (default 360: a loop)
   --fps RATE               frames per second of a video, 1..120 (default 25)
   --edge-mask FILE         also write the line coverage alone: white on black, 8-bit
@@ -168,7 +168,8 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
   {
     if (options.Output.empty() || outputKind.empty())
     {
-      throw nprUsageError("--orbit needs -o NAME.png (numbered frames), NAME.ogv or NAME.mp4");
+      throw nprUsageError(
+        "--orbit needs -o NAME.png (numbered frames), NAME.ogv, NAME.mp4 or NAME.avi");
     }
     if (options.Frames > 0 || !options.EdgeMask.empty() || !options.ReferenceMask.empty())
     {
@@ -176,7 +177,7 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
                           "--reference-mask");
     }
   }
-  else if (outputKind == "ogv" || outputKind == "mp4")
+  else if (!outputKind.empty() && outputKind != "png")
   {
     throw nprUsageError("-o " + options.Output + ": a video needs --orbit N");
   }

@@ -1,9 +1,9 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 # SPDX-License-Identifier: BSD-3-Clause
 """npr-render --orbit: numbered PNG frames (the first is the still of the same camera, the others
-differ), an Ogg Theora video read back (its frame size and number of frames), an MP4 where the
-ffmpeg program is installed (read back with ffprobe) or a clear error where it is not, and the
-usage errors."""
+differ), an Ogg Theora video read back (its frame size, rate and number of frames), an MP4 where
+the ffmpeg program is installed (read back with ffprobe) and an AVI where VTK has its FFMPEG
+writer, or their clear errors, and the usage errors."""
 import argparse
 import json
 import os
@@ -120,25 +120,37 @@ try:
 except (OSError, ValueError) as error:
     check(False, "orbit.ogv reads back as Ogg Theora: %s" % error)
 
-# ---- MP4: through ffmpeg where it is installed ----
-if shutil.which("ffmpeg") and shutil.which("ffprobe"):
-    rc, _, err = run(cad, "--orbit", "8", "--size", "%dx%d" % video_size, "-o", out("orbit.mp4"))
+# ---- MP4 through the ffmpeg program, AVI through VTK's vtkFFMPEGWriter (VTK 9.4 and later in
+# Debian); a clear error where the program or the writer is missing ----
+rc, _, err = run(cad, "--orbit", "8", "--size", "%dx%d" % video_size, "-o", out("orbit.mp4"))
+if shutil.which("ffmpeg"):
     check(rc == 0, "--orbit 8 -o orbit.mp4 (%s)" % err.strip())
-    probe = subprocess.run(["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
-                            "stream=nb_read_frames,width,height", "-of", "json", out("orbit.mp4")],
-                           capture_output=True, text=True)
-    stream = json.loads(probe.stdout or "{}").get("streams", [{}])[0]
-    check(int(stream.get("nb_read_frames", 0)) == 8, "the MP4 has 8 frames (%s)" % stream)
-    check((stream.get("width"), stream.get("height")) == (322, 242), "the MP4 is padded to even sizes (%s)" % stream)
+    if shutil.which("ffprobe"):
+        probe = subprocess.run(["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0",
+                                "-show_entries", "stream=nb_read_frames,width,height", "-of", "json",
+                                out("orbit.mp4")], capture_output=True, text=True)
+        stream = json.loads(probe.stdout or "{}").get("streams", [{}])[0]
+        check(int(stream.get("nb_read_frames", 0)) == 8, "the MP4 has 8 frames (%s)" % stream)
+        check((stream.get("width"), stream.get("height")) == (322, 242),
+              "the MP4 is padded to even sizes (%s)" % stream)
 else:
-    rc, _, err = run(cad, "--orbit", "3", "-o", out("orbit.mp4"))
     check(rc == 1 and "needs the ffmpeg program" in err, "without ffmpeg, MP4 is a clear error (%s)" % err.strip())
-    print("note: ffmpeg/ffprobe not installed: the MP4 itself is not checked here")
+    print("note: ffmpeg not installed: the MP4 itself is not checked here")
+rc, _, err = run(cad, "--orbit", "8", "--size", "%dx%d" % video_size, "-o", out("orbit.avi"))
+if rc == 0:
+    with open(out("orbit.avi"), "rb") as f:
+        head = f.read(12)
+    check(head[:4] == b"RIFF" and head[8:12] == b"AVI " and os.path.getsize(out("orbit.avi")) > 2000,
+          "orbit.avi is an AVI file (%r, %d bytes)" % (head, os.path.getsize(out("orbit.avi"))))
+else:
+    check(rc == 1 and "needs VTK's vtkFFMPEGWriter" in err, "without vtkFFMPEGWriter, AVI is a clear error (%s)"
+          % err.strip())
 
 # ---- Usage errors ----
 for argv, expected in [
     ([cad, "--orbit", "4"], "--orbit needs -o"),
     ([cad, "--orbit", "4", "-o", out("x.gif")], "--orbit needs -o"),
+    ([cad, "-o", out("x.avi")], "a video needs --orbit N"),
     ([cad, "-o", out("x.ogv")], "a video needs --orbit N"),
     ([cad, "--orbit", "0", "-o", out("x.png")], "--orbit"),
     ([cad, "--orbit", "3", "--frames", "2", "-o", out("x.png")], "cannot be combined"),
