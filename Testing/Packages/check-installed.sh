@@ -52,6 +52,13 @@ check_vtk() {
   check npr-render-model bash -c "npr-render /src/Testing/Data/cad_part.vtp --style edges \
     --size 480x360 --azimuth 30 --elevation 30 -o $work/cad_part.png &&
     python3 /src/Testing/Packages/check_vtknpr.py image $work/cad_part.png"
+  # An orbit as an Ogg Theora video (VTK's movie writer, a dependency of vtknpr-tools).
+  check npr-render-orbit bash -c "npr-render /src/Testing/Data/cad_part.vtp --style sketch \
+    --size 160x120 --orbit 4 -o $work/orbit.ogv && test \$(head -c 4 $work/orbit.ogv) = OggS"
+  # The viewer, installed with the tools: without a display, one error line and exit status 1.
+  check npr-view-no-display bash -c "env -u DISPLAY npr-view /src/Testing/Data/cad_part.vtp \
+    2>$work/view.txt; status=\$?; cat $work/view.txt; test \$status -eq 1 &&
+    grep -q 'no X display' $work/view.txt"
   # The system's Python, no PYTHONPATH: import vtknpr and render through vtkNPRPass.
   check python-vtknpr env -u PYTHONPATH python3 /src/Testing/Packages/check_vtknpr.py python "$upstream"
   # A separate project: find_package(vtkNPR) from /usr, built and its tests run (EGL rendering,
