@@ -56,7 +56,12 @@ vtkStandardNewMacro(nprViewInteractorStyle);
 void nprViewInteractorStyle::OnChar()
 {
   vtkRenderWindowInteractor* interactor = this->Interactor;
-  const char key = interactor->GetKeyCode();
+  char key = interactor->GetKeyCode();
+  // VTK 9.3's X interactor gives a shifted letter in lower case, with the shift key down.
+  if (interactor->GetShiftKey() && std::islower(static_cast<unsigned char>(key)))
+  {
+    key = static_cast<char>(std::toupper(static_cast<unsigned char>(key)));
+  }
   if (this->Viewer && this->Viewer->HandleKey(key))
   {
     interactor->Render();
