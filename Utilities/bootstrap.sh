@@ -53,8 +53,9 @@ packages=(libvtk9-dev python3-vtk9 libegl-dev libegl-mesa0 libgl1-mesa-dri libop
   libosmesa6-dev cmake ninja-build g++ xvfb xauth)
 # debootstrap for the chroots of the other releases (installed here, before their set-ups start
 # side by side).
-# dpkg-dev and file for CPack's Debian packages (dpkg-shlibdeps).
-if [[ $task == test ]]; then packages+=(debootstrap clang-format dpkg-dev file xdotool); fi
+# dpkg-dev and file for CPack's Debian packages (dpkg-shlibdeps); xdotool to drive npr-view;
+# ffmpeg for npr-render's MP4 videos.
+if [[ $task == test ]]; then packages+=(debootstrap clang-format dpkg-dev file xdotool ffmpeg); fi
 missing=()
 for package in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then

@@ -162,8 +162,9 @@ public:
     std::ostringstream command;
     // Rows come bottom first (vflip); H.264 in 4:2:0 wants even sizes (pad).
     command << ShellQuoted(ffmpeg) << " -y -loglevel error -f rawvideo -pix_fmt rgb24 -s " << width
-            << "x" << height << " -framerate " << settings.Rate
-            << " -i - -vf vflip,pad=ceil(iw/2)*2:ceil(ih/2)*2 -c:v libx264 -pix_fmt yuv420p "
+            << "x" << height << " -framerate " << settings.Rate << " -i - -vf "
+            << ShellQuoted("vflip,pad=ceil(iw/2)*2:ceil(ih/2)*2")
+            << " -c:v libx264 -pix_fmt yuv420p "
             << "-movflags +faststart " << ShellQuoted(settings.Output);
     this->PreviousSigpipe = std::signal(SIGPIPE, SIG_IGN); // a failed ffmpeg is an error here
     this->Pipe = popen(command.str().c_str(), "w");
