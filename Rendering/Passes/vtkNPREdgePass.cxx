@@ -227,12 +227,8 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
   {
     if (!internal.LineTexture)
     {
-      internal.LineTexture = vtkTextureObject::New();
-      internal.LineTexture->SetContext(window);
-      internal.LineTexture->SetMinificationFilter(vtkTextureObject::Linear);
-      internal.LineTexture->SetMagnificationFilter(vtkTextureObject::Linear);
-      internal.LineTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-      internal.LineTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+      internal.LineTexture =
+        vtkNPRNewTexture(window, vtkTextureObject::Linear, vtkTextureObject::ClampToEdge);
       internal.LineTexture->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
       internal.Framebuffer = vtkOpenGLFramebufferObject::New();
       internal.Framebuffer->SetContext(window);

@@ -75,13 +75,7 @@ namespace
 {
 vtkTextureObject* NewNearestTexture(vtkOpenGLRenderWindow* window)
 {
-  vtkTextureObject* texture = vtkTextureObject::New();
-  texture->SetContext(window);
-  texture->SetMinificationFilter(vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  return texture;
+  return vtkNPRNewTexture(window, vtkTextureObject::Nearest, vtkTextureObject::ClampToEdge);
 }
 
 // Above this far/near ratio the depth attachment holds log depth (see GetDepthRemapped()).

@@ -19,10 +19,23 @@
 #include "vtkRenderer.h"
 #include "vtkShader.h"
 #include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
 
 #include <algorithm>
 #include <mutex>
 #include <set>
+
+vtkTextureObject* vtkNPRNewTexture(vtkOpenGLRenderWindow* window, int filter, int wrap)
+{
+  vtkTextureObject* texture = vtkTextureObject::New();
+  texture->SetContext(window);
+  texture->SetMinificationFilter(filter);
+  texture->SetMagnificationFilter(filter);
+  texture->SetWrapS(wrap);
+  texture->SetWrapT(wrap);
+  texture->SetWrapR(wrap);
+  return texture;
+}
 
 double vtkNPRWindowScale(vtkRenderer* renderer)
 {

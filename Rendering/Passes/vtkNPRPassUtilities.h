@@ -17,6 +17,11 @@ class vtkOpenGLRenderWindow;
 class vtkProp;
 class vtkRenderState;
 class vtkRenderer;
+class vtkTextureObject;
+
+// A new texture object of the window with these filters (vtkTextureObject::Nearest or Linear)
+// and wrap modes on every axis (ClampToEdge, Repeat, ...); the caller allocates and deletes it.
+vtkTextureObject* vtkNPRNewTexture(vtkOpenGLRenderWindow* window, int filter, int wrap);
 
 // How many pixels one pixel at 72 DPI is in this renderer's window: DPI / 72 x tile scale.
 double vtkNPRWindowScale(vtkRenderer* renderer);

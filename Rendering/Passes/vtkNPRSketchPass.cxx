@@ -387,12 +387,8 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
   // recomputed only when the G-buffer or the line settings changed ----
   if (!internal.CoverageTexture)
   {
-    internal.CoverageTexture = vtkTextureObject::New();
-    internal.CoverageTexture->SetContext(window);
-    internal.CoverageTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    internal.CoverageTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    internal.CoverageTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-    internal.CoverageTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    internal.CoverageTexture =
+      vtkNPRNewTexture(window, vtkTextureObject::Nearest, vtkTextureObject::ClampToEdge);
     internal.CoverageTexture->SetInternalFormat(GL_RGBA32F);
     internal.CoverageTexture->SetFormat(GL_RGBA);
     internal.CoverageTexture->SetDataType(GL_FLOAT);
@@ -533,13 +529,9 @@ vtkTextureObject* vtkNPRSketchPass::PrepareScreenNoise(vtkOpenGLRenderWindow* wi
   {
     if (!internal.NoiseTexture)
     {
-      internal.NoiseTexture = vtkTextureObject::New();
+      internal.NoiseTexture =
+        vtkNPRNewTexture(window, vtkTextureObject::Nearest, vtkTextureObject::Repeat);
     }
-    internal.NoiseTexture->SetContext(window);
-    internal.NoiseTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    internal.NoiseTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    internal.NoiseTexture->SetWrapS(vtkTextureObject::Repeat);
-    internal.NoiseTexture->SetWrapT(vtkTextureObject::Repeat);
     internal.NoiseTexture->SetInternalFormat(GL_RG32F);
     internal.NoiseTexture->SetFormat(GL_RG);
     internal.NoiseTexture->SetDataType(GL_FLOAT);
@@ -571,12 +563,8 @@ vtkTextureObject* vtkNPRSketchPass::RenderSurfaceNoise(
   const int height = (static_cast<int>(depth->GetHeight()) + block - 1) / block;
   if (!internal.NoiseFieldTexture)
   {
-    internal.NoiseFieldTexture = vtkTextureObject::New();
-    internal.NoiseFieldTexture->SetContext(window);
-    internal.NoiseFieldTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    internal.NoiseFieldTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    internal.NoiseFieldTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-    internal.NoiseFieldTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    internal.NoiseFieldTexture =
+      vtkNPRNewTexture(window, vtkTextureObject::Nearest, vtkTextureObject::ClampToEdge);
     internal.NoiseFieldTexture->SetInternalFormat(GL_RG32F);
     internal.NoiseFieldTexture->SetFormat(GL_RG);
     internal.NoiseFieldTexture->SetDataType(GL_FLOAT);
@@ -670,16 +658,11 @@ vtkTextureObject* vtkNPRSketchPass::PrepareSurfaceNoiseTile(vtkOpenGLRenderWindo
   {
     if (!internal.SurfaceNoiseTexture)
     {
-      internal.SurfaceNoiseTexture = vtkTextureObject::New();
+      internal.SurfaceNoiseTexture =
+        vtkNPRNewTexture(window, vtkTextureObject::Linear, vtkTextureObject::Repeat);
     }
     auto tile = SurfaceNoiseTile(this->NoiseSeed);
     vtkTextureObject* texture = internal.SurfaceNoiseTexture;
-    texture->SetContext(window);
-    texture->SetMinificationFilter(vtkTextureObject::Linear);
-    texture->SetMagnificationFilter(vtkTextureObject::Linear);
-    texture->SetWrapS(vtkTextureObject::Repeat);
-    texture->SetWrapT(vtkTextureObject::Repeat);
-    texture->SetWrapR(vtkTextureObject::Repeat);
     texture->SetInternalFormat(GL_RGBA8);
     texture->SetFormat(GL_RGBA);
     texture->SetDataType(GL_UNSIGNED_BYTE);

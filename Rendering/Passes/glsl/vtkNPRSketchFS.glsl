@@ -30,35 +30,34 @@ bool nprInside(ivec2 texel, ivec2 size)
   return all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, size));
 }
 
+// Bilinear mix of the xy of four texels: i and j the lower and upper corners, f the weights.
+vec2 nprBilinear(sampler2D tile, ivec2 i, ivec2 j, vec2 f)
+{
+  vec2 n00 = texelFetch(tile, i, 0).xy;
+  vec2 n10 = texelFetch(tile, ivec2(j.x, i.y), 0).xy;
+  vec2 n01 = texelFetch(tile, ivec2(i.x, j.y), 0).xy;
+  vec2 n11 = texelFetch(tile, j, 0).xy;
+  return mix(mix(n00, n10, f.x), mix(n01, n11, f.x), f.y);
+}
+
 #if NPR_SURFACE_NOISE
 // The noise field of vtkNPRSketchNoiseFS (one texel per block), interpolated bilinearly.
-vec2 nprNoise(vec2 pixel, ivec2 size)
+vec2 nprNoise(vec2 pixel)
 {
   ivec2 last = textureSize(noiseTexture, 0) - 1;
   vec2 t = (pixel + 0.5) / noiseBlock - 0.5;
   vec2 cell = floor(t);
-  vec2 f = t - cell;
-  ivec2 i = clamp(ivec2(cell), ivec2(0), last);
-  ivec2 j = clamp(ivec2(cell) + 1, ivec2(0), last);
-  vec2 n00 = texelFetch(noiseTexture, i, 0).xy;
-  vec2 n10 = texelFetch(noiseTexture, ivec2(j.x, i.y), 0).xy;
-  vec2 n01 = texelFetch(noiseTexture, ivec2(i.x, j.y), 0).xy;
-  vec2 n11 = texelFetch(noiseTexture, j, 0).xy;
-  return mix(mix(n00, n10, f.x), mix(n01, n11, f.x), f.y);
+  return nprBilinear(noiseTexture, clamp(ivec2(cell), ivec2(0), last),
+    clamp(ivec2(cell) + 1, ivec2(0), last), t - cell);
 }
 #else
-vec2 nprNoise(vec2 pixel, ivec2 size)
+// The screen noise's tile, wrapped around.
+vec2 nprNoise(vec2 pixel)
 {
   vec2 t = (pixel + 0.5) * noiseScale - 0.5;
   vec2 cell = floor(t);
-  vec2 f = t - cell;
   ivec2 i = ivec2(cell) & 255;
-  ivec2 j = (i + 1) & 255;
-  vec2 n00 = texelFetch(noiseTexture, i, 0).xy;
-  vec2 n10 = texelFetch(noiseTexture, ivec2(j.x, i.y), 0).xy;
-  vec2 n01 = texelFetch(noiseTexture, ivec2(i.x, j.y), 0).xy;
-  vec2 n11 = texelFetch(noiseTexture, j, 0).xy;
-  return mix(mix(n00, n10, f.x), mix(n01, n11, f.x), f.y);
+  return nprBilinear(noiseTexture, i, (i + 1) & 255, t - cell);
 }
 #endif
 
@@ -80,7 +79,7 @@ void main()
   }
   ivec2 size = textureSize(depthTexture, 0);
   vec2 pixel = vec2(ivec2(gl_FragCoord.xy) - viewportOrigin);
-  vec2 noise = nprNoise(pixel, size);
+  vec2 noise = nprNoise(pixel);
 
   // Surfaces: nearest texel at the displaced position.
   ivec2 surfaceTexel = ivec2(floor(pixel + 0.5 + nprTimes(surfaceDisplacement, noise)));
