@@ -1,0 +1,187 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkNPRDrawingLines
+ * @brief   A renderer's feature lines as strokes, each piece visible or hidden: the geometry of a
+ *          technical drawing (hidden-line removal).
+ *
+ * For a renderer (its active camera and its visible, opaque vtkActors drawn by a
+ * vtkPolyDataMapper, with their actor matrices: the scene vtkNPRReferenceMask sees) and an image
+ * size, Update() computes on the CPU, in double precision:
+ * - the silhouette, crease, boundary and non-manifold edges of every actor (vtkNPRFeatureLines,
+ *   one per actor, kept between updates), in world coordinates, clipped to the view frustum;
+ * - where each one passes behind a surface of any actor: each edge is sampled at most
+ *   SampleSpacing pixels apart in the image (at least its two ends), each sample tested by the
+ *   reference mask's ray cast (vtkNPROccluders: from the near plane to the sample, short of it by
+ *   OcclusionEpsilon of the distance), and between two samples that differ the change is found by
+ *   bisection to within 1/1000 of a pixel. Pieces shorter than 1/100 of a pixel are dropped (an
+ *   edge that ends on a silhouette touches it only at its end);
+ * - strokes: the pieces of one kind (the same line type and the same visibility) chained into
+ *   polylines through the mesh vertices where exactly two pieces of that kind meet; a stroke ends
+ *   where one, three or more meet, and at a change of visibility. A closed loop (the rim of a
+ *   cylinder) is one polyline whose last point id is its first.
+ *
+ * Output, GetStrokes(): a vtkPolyData of polylines,
+ * - points in world coordinates (double);
+ * - point data "ImageCoordinates" (vtkDoubleArray, 3 components): x and y in pixels of the image
+ *   (window coordinates: pixel (i, j) covers [i, i+1) x [j, j+1), row 0 at the bottom, as
+ *   vtkNPRReferenceMask and vtkWindowToImageFilter have it) and z the depth as the depth buffer
+ *   holds it ([0, 1], from the camera's projection);
+ * - cell data "FeatureType" (vtkUnsignedCharArray): the stroke's one line type, a single bit of
+ *   vtkNPRFeatureLines::FeatureTypes; an edge that is both silhouette and crease is a silhouette;
+ * - cell data "Hidden" (vtkUnsignedCharArray): 1 for a hidden stroke, 0 for a visible one;
+ * - field data "ImageSize" (vtkIntArray, 2 components): the image's width and height.
+ * Hidden pieces are output only with HiddenLines on.
+ *
+ * Accuracy: a piece of an edge hidden or uncovered between two samples (an occluder or a gap
+ * narrower than SampleSpacing in the image, seen between them) can be missed; everything else is
+ * exact to the bisection's 1/1000 pixel, OcclusionEpsilon and double rounding. Not included, as
+ * in vtkNPRReferenceMask: intersection curves, translucent actors, props that are not vtkActors
+ * with a vtkPolyDataMapper, mapper clipping planes, actors inside assemblies.
+ *
+ * Cost: the adjacency of each mesh and the occlusion structure are built once and reused while
+ * the meshes and actor matrices do not change; a camera change costs the lines (one pass over
+ * each mesh's edges) and the rays, which run on all cores (vtkSMPTools). Times of the last update:
+ * GetLinesTime(), GetLocatorTime(), GetVisibilityTime(), GetChainTime().
+ *
+ * @sa vtkNPRReferenceMask vtkNPRFeatureLines
+ */
+#ifndef vtkNPRDrawingLines_h
+#define vtkNPRDrawingLines_h
+
+#include "vtkFiltersNPRModule.h" // for export macro
+#include "vtkObject.h"
+
+#include <memory> // for std::unique_ptr
+
+class vtkPolyData;
+class vtkRenderer;
+
+class VTKFILTERSNPR_EXPORT vtkNPRDrawingLines : public vtkObject
+{
+public:
+  static vtkNPRDrawingLines* New();
+  vtkTypeMacro(vtkNPRDrawingLines, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The renderer whose camera and actors are used.
+   */
+  virtual void SetRenderer(vtkRenderer* renderer);
+  vtkGetObjectMacro(Renderer, vtkRenderer);
+  ///@}
+
+  ///@{
+  /**
+   * The image size in pixels; 0, 0 (the default): the renderer's size in its window.
+   */
+  vtkSetVector2Macro(Size, int);
+  vtkGetVector2Macro(Size, int);
+  ///@}
+
+  ///@{
+  /**
+   * The line types (all on by default), as in vtkNPRFeatureLines.
+   */
+  vtkSetMacro(Silhouettes, bool);
+  vtkGetMacro(Silhouettes, bool);
+  vtkBooleanMacro(Silhouettes, bool);
+  vtkSetMacro(Creases, bool);
+  vtkGetMacro(Creases, bool);
+  vtkBooleanMacro(Creases, bool);
+  vtkSetMacro(Boundaries, bool);
+  vtkGetMacro(Boundaries, bool);
+  vtkBooleanMacro(Boundaries, bool);
+  vtkSetMacro(NonManifoldEdges, bool);
+  vtkGetMacro(NonManifoldEdges, bool);
+  vtkBooleanMacro(NonManifoldEdges, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The angle between face normals, in degrees, above which an edge is a crease (default 30;
+   * clamped to [0, 180]).
+   */
+  vtkSetClampMacro(CreaseAngle, double, 0.0, 180.0);
+  vtkGetMacro(CreaseAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Also output the hidden pieces of the lines (off by default).
+   */
+  vtkSetMacro(HiddenLines, bool);
+  vtkGetMacro(HiddenLines, bool);
+  vtkBooleanMacro(HiddenLines, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The largest distance in pixels between the visibility samples of an edge (default 1,
+   * clamped to [0.05, 16]).
+   */
+  vtkSetClampMacro(SampleSpacing, double, 0.05, 16.0);
+  vtkGetMacro(SampleSpacing, double);
+  ///@}
+
+  ///@{
+  /**
+   * As vtkNPRReferenceMask's (default 1e-6, clamped to [0, 0.01]).
+   */
+  vtkSetClampMacro(OcclusionEpsilon, double, 0.0, 0.01);
+  vtkGetMacro(OcclusionEpsilon, double);
+  ///@}
+
+  /**
+   * Computes the strokes. False, with an error, when there is no renderer or no size.
+   */
+  bool Update();
+
+  /**
+   * The strokes of the last Update() (see the class description).
+   */
+  vtkPolyData* GetStrokes();
+
+  ///@{
+  /**
+   * What the last Update() did.
+   */
+  vtkIdType GetNumberOfFeatureEdges() const; // edges of all actors
+  vtkIdType GetNumberOfRayCasts() const;     // visibility tests, bisection included
+  vtkIdType GetNumberOfStrokes() const;
+  double GetLinesTime() const;      // seconds finding the feature lines
+  double GetLocatorTime() const;    // seconds building the occlusion structure
+  double GetVisibilityTime() const; // seconds sampling, casting rays and splitting
+  double GetChainTime() const;      // seconds chaining the pieces into strokes
+  ///@}
+
+  /**
+   * How many times the occlusion structure has been built (see vtkNPRReferenceMask).
+   */
+  vtkIdType GetNumberOfLocatorBuilds() const;
+
+protected:
+  vtkNPRDrawingLines();
+  ~vtkNPRDrawingLines() override;
+
+  vtkRenderer* Renderer = nullptr;
+  int Size[2] = { 0, 0 };
+  bool Silhouettes = true;
+  bool Creases = true;
+  bool Boundaries = true;
+  bool NonManifoldEdges = true;
+  double CreaseAngle = 30.0;
+  bool HiddenLines = false;
+  double SampleSpacing = 1.0;
+  double OcclusionEpsilon = 1e-6;
+
+private:
+  vtkNPRDrawingLines(const vtkNPRDrawingLines&) = delete;
+  void operator=(const vtkNPRDrawingLines&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

@@ -1,0 +1,144 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkNPRDrawingPass
+ * @brief   A technical drawing: faces in one colour, visible lines solid, hidden lines dashed,
+ *          from exact object-space lines, written as a depth sprite.
+ *
+ * Reads the G-buffer of the edge pass's vtkNPRGBufferPass (drawn earlier in the frame: its
+ * colour for the background, its depth) and draws over it:
+ * - the faces (every pixel the G-buffer covers) in FaceColor;
+ * - the strokes of a vtkNPRDrawingLines for the renderer (object space, double precision, props
+ *   hiding each other's lines), rasterised with anti-aliasing:
+ *   - visible lines solid, in the edge pass's colours (silhouettes and boundaries in its
+ *     SilhouetteColor, creases and non-manifold edges in its CreaseColor), its effective line
+ *     width (LineWidth x DPI / 72 x tile scale), with round caps and joins;
+ *   - with HiddenLines on, hidden lines under them, HiddenLineWidth times as wide, in
+ *     HiddenLineColor, dashed in screen space: DashLength on, GapLength off (pixels, scaled like
+ *     the line width), the pattern running on along each stroke.
+ * The line types and the crease angle are the edge pass's (Silhouettes: silhouettes and
+ * boundaries; Creases: creases and non-manifold edges; CreaseAngle).
+ *
+ * Depth sprite: a face pixel keeps its depth; a line pixel off the faces (a silhouette drawn
+ * over the background) takes the nearest depth within the line's reach, so translucent props,
+ * volumes and layers drawn later are depth-tested against the drawing as drawn.
+ *
+ * The strokes are computed again only when the camera, the size, the scene (actors, their
+ * meshes and matrices) or a setting changed; GetNumberOfStrokeUpdates() counts the updates.
+ * Their cost is the CPU's (see vtkNPRDrawingLines): fractions of a second for CAD parts,
+ * seconds for million-triangle meshes, so this style suits figures more than interaction.
+ *
+ * @sa vtkNPRPass vtkNPRDrawingLines vtkNPRDrawingExporter
+ */
+#ifndef vtkNPRDrawingPass_h
+#define vtkNPRDrawingPass_h
+
+#include "vtkRenderPass.h"
+#include "vtkRenderingNPRModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkNPRDrawingLines;
+class vtkNPREdgePass;
+class vtkPolyData;
+
+class VTKRENDERINGNPR_EXPORT vtkNPRDrawingPass : public vtkRenderPass
+{
+public:
+  static vtkNPRDrawingPass* New();
+  vtkTypeMacro(vtkNPRDrawingPass, vtkRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  void Render(const vtkRenderState* state) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+  ///@{
+  /**
+   * The edge pass whose G-buffer is read and whose line settings are used (required).
+   */
+  virtual void SetEdgePass(vtkNPREdgePass* pass);
+  vtkGetObjectMacro(EdgePass, vtkNPREdgePass);
+  ///@}
+
+  ///@{
+  /**
+   * Draw the hidden lines, dashed (off by default).
+   */
+  vtkSetMacro(HiddenLines, bool);
+  vtkGetMacro(HiddenLines, bool);
+  vtkBooleanMacro(HiddenLines, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The colour of the faces (default white).
+   */
+  vtkSetVector3Macro(FaceColor, double);
+  vtkGetVector3Macro(FaceColor, double);
+  ///@}
+
+  ///@{
+  /**
+   * The colour of the hidden lines (default 0.45 grey).
+   */
+  vtkSetVector3Macro(HiddenLineColor, double);
+  vtkGetVector3Macro(HiddenLineColor, double);
+  ///@}
+
+  ///@{
+  /**
+   * The width of the hidden lines relative to the visible ones (default 0.6, clamped to
+   * [0.1, 1]).
+   */
+  vtkSetClampMacro(HiddenLineWidth, double, 0.1, 1.0);
+  vtkGetMacro(HiddenLineWidth, double);
+  ///@}
+
+  ///@{
+  /**
+   * The dash pattern of the hidden lines in pixels at 72 DPI (default 6 on, 4 off; each clamped
+   * to [0.5, 100]).
+   */
+  vtkSetClampMacro(DashLength, double, 0.5, 100.0);
+  vtkGetMacro(DashLength, double);
+  vtkSetClampMacro(GapLength, double, 0.5, 100.0);
+  vtkGetMacro(GapLength, double);
+  ///@}
+
+  /**
+   * The vtkNPRDrawingLines this pass computes its strokes with (its settings other than the
+   * renderer, size, line types, crease angle and hidden lines can be tuned).
+   */
+  vtkNPRDrawingLines* GetDrawingLines();
+
+  /**
+   * The strokes of the last frame drawn (see vtkNPRDrawingLines::GetStrokes()).
+   */
+  vtkPolyData* GetStrokes();
+
+  /**
+   * How many times the strokes were computed.
+   */
+  vtkIdType GetNumberOfStrokeUpdates() const;
+
+protected:
+  vtkNPRDrawingPass();
+  ~vtkNPRDrawingPass() override;
+
+  vtkNPREdgePass* EdgePass = nullptr;
+  bool HiddenLines = false;
+  double FaceColor[3] = { 1.0, 1.0, 1.0 };
+  double HiddenLineColor[3] = { 0.45, 0.45, 0.45 };
+  double HiddenLineWidth = 0.6;
+  double DashLength = 6.0;
+  double GapLength = 4.0;
+
+private:
+  vtkNPRDrawingPass(const vtkNPRDrawingPass&) = delete;
+  void operator=(const vtkNPRDrawingPass&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif
