@@ -1,0 +1,248 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkNPRSceneLines.h"
+
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkAlgorithm.h"
+#include "vtkAlgorithmOutput.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNPRFeatureLines.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+}
+
+void vtkNPRSceneView::Set(vtkCamera* camera, int width, int height)
+{
+  this->Width = width;
+  this->Height = height;
+  const double aspect = static_cast<double>(width) / height;
+  std::copy_n(&camera->GetCompositeProjectionTransformMatrix(aspect, -1, 1)->Element[0][0], 16,
+    this->Projection);
+  camera->GetPosition(this->Eye);
+  camera->GetDirectionOfProjection(this->Direction);
+  camera->GetClippingRange(this->Range);
+  this->Parallel = camera->GetParallelProjection() != 0;
+}
+
+void vtkNPRSceneView::Clip(const double x[3], double clip[4]) const
+{
+  const double* m = this->Projection;
+  for (int r = 0; r < 4; ++r)
+  {
+    clip[r] = m[4 * r] * x[0] + m[4 * r + 1] * x[1] + m[4 * r + 2] * x[2] + m[4 * r + 3];
+  }
+}
+
+bool vtkNPRSceneView::ToImage(const double x[3], double image[3]) const
+{
+  double c[4];
+  this->Clip(x, c);
+  image[0] = 0.5 * this->Width * (c[0] / c[3] + 1.0);
+  image[1] = 0.5 * this->Height * (c[1] / c[3] + 1.0);
+  image[2] = 0.5 * (c[2] / c[3] + 1.0);
+  return c[3] > 0.0;
+}
+
+bool vtkNPRSceneView::ClipSegment(
+  const double a[3], const double b[3], double margin, double& t0, double& t1) const
+{
+  double ca[4], cb[4];
+  this->Clip(a, ca);
+  this->Clip(b, cb);
+  const double marginX = 1.0 + 2.0 * margin / this->Width;
+  const double marginY = 1.0 + 2.0 * margin / this->Height;
+  // t in [0, 1] against -w <= z <= w and the widened image, homogeneously.
+  t0 = 0.0;
+  t1 = 1.0;
+  const double distances[6][2] = { { ca[3] + ca[2], cb[3] + cb[2] },
+    { ca[3] - ca[2], cb[3] - cb[2] }, { marginX * ca[3] + ca[0], marginX * cb[3] + cb[0] },
+    { marginX * ca[3] - ca[0], marginX * cb[3] - cb[0] },
+    { marginY * ca[3] + ca[1], marginY * cb[3] + cb[1] },
+    { marginY * ca[3] - ca[1], marginY * cb[3] - cb[1] } };
+  for (const auto& d : distances)
+  {
+    if (d[0] < 0.0 && d[1] < 0.0)
+    {
+      return false;
+    }
+    if (d[0] < 0.0)
+    {
+      t0 = std::max(t0, d[0] / (d[0] - d[1]));
+    }
+    else if (d[1] < 0.0)
+    {
+      t1 = std::min(t1, d[0] / (d[0] - d[1]));
+    }
+  }
+  if (!(t0 <= t1))
+  {
+    return false;
+  }
+  const double w0 = ca[3] + t0 * (cb[3] - ca[3]), w1 = ca[3] + t1 * (cb[3] - ca[3]);
+  return w0 > 0.0 && w1 > 0.0;
+}
+
+double vtkNPRSceneView::ParameterAt(
+  const double a[3], const double b[3], double t0, double t1, double s) const
+{
+  double ca[4], cb[4];
+  this->Clip(a, ca);
+  this->Clip(b, cb);
+  const double w0 = ca[3] + t0 * (cb[3] - ca[3]), w1 = ca[3] + t1 * (cb[3] - ca[3]);
+  // Image fraction s is parameter fraction s w0 / ((1 - s) w1 + s w0).
+  const double tau = s * w0 / ((1.0 - s) * w1 + s * w0);
+  return t0 + (t1 - t0) * tau;
+}
+
+double vtkNPRSceneView::ImageLength(
+  const double a[3], const double b[3], double t0, double t1) const
+{
+  double p0[3], p1[3], i0[3], i1[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    p0[k] = a[k] + t0 * (b[k] - a[k]);
+    p1[k] = a[k] + t1 * (b[k] - a[k]);
+  }
+  this->ToImage(p0, i0);
+  this->ToImage(p1, i1);
+  return std::hypot(i1[0] - i0[0], i1[1] - i0[1]);
+}
+
+void vtkNPRSceneView::Ray(const double p[3], double epsilon, double from[3], double to[3]) const
+{
+  const double toPoint[3] = { p[0] - this->Eye[0], p[1] - this->Eye[1], p[2] - this->Eye[2] };
+  const double depth = toPoint[0] * this->Direction[0] + toPoint[1] * this->Direction[1] +
+    toPoint[2] * this->Direction[2];
+  for (int i = 0; i < 3; ++i)
+  {
+    from[i] = this->Parallel ? p[i] - (depth - this->Range[0]) * this->Direction[i]
+                             : this->Eye[i] + toPoint[i] * (this->Range[0] / depth);
+    to[i] = from[i] + (1.0 - epsilon) * (p[i] - from[i]);
+  }
+}
+
+vtkNPRSceneLines::vtkNPRSceneLines() = default;
+vtkNPRSceneLines::~vtkNPRSceneLines() = default;
+
+vtkIdType vtkNPRSceneLines::GetNumberOfAdjacencyBuilds() const
+{
+  vtkIdType builds = 0;
+  for (const auto& entry : this->Lines)
+  {
+    builds += entry.second.Lines ? entry.second.Lines->GetNumberOfAdjacencyBuilds() : 0;
+  }
+  return builds;
+}
+
+void vtkNPRSceneLines::Update(
+  vtkRenderer* renderer, const Settings& settings, int trianglesPerLocator)
+{
+  // The actors as they are drawn: visible, opaque, polygonal through a vtkPolyDataMapper.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  std::vector<vtkNPRMeshInstance> actors;
+  vtkActorCollection* collection = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  collection->InitTraversal(it);
+  while (vtkActor* actor = collection->GetNextActor(it))
+  {
+    auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+    if (!actor->GetVisibility() || !mapper)
+    {
+      continue;
+    }
+    if (vtkAlgorithm* producer = mapper->GetInputAlgorithm())
+    {
+      producer->Update(mapper->GetInputConnection(0, 0)->GetIndex());
+    }
+    vtkPolyData* mesh = mapper->GetInput();
+    if (!mesh || !actor->HasOpaqueGeometry())
+    {
+      continue;
+    }
+    vtkNPRMeshInstance state{ actor, mesh, mesh->GetMTime(), {} };
+    vtkMatrix4x4* matrix = actor->GetMatrix();
+    std::copy_n(&matrix->Element[0][0], 16, state.Matrix.data());
+    actors.push_back(state);
+  }
+
+  // Feature lines of each actor, in world coordinates.
+  Clock::time_point start = Clock::now();
+  this->Segments.clear();
+  std::map<vtkActor*, LinesEntry> used;
+  vtkIdType nodeOffset = 0;
+  for (const vtkNPRMeshInstance& state : actors)
+  {
+    LinesEntry& entry = this->Lines[state.Actor];
+    if (!entry.Lines || entry.Actor != state.Actor) // new, or another actor at a freed address
+    {
+      entry.Actor = state.Actor;
+      entry.Lines = vtkSmartPointer<vtkNPRFeatureLines>::New();
+    }
+    used[state.Actor] = entry;
+    vtkNPRFeatureLines* lines = entry.Lines;
+    lines->SetInputData(state.Mesh);
+    lines->SetCamera(camera, state.Actor->GetMatrix());
+    lines->SetSilhouettes(settings.Silhouettes);
+    lines->SetCreases(settings.Creases);
+    lines->SetBoundaries(settings.Boundaries);
+    lines->SetNonManifoldEdges(settings.NonManifoldEdges);
+    lines->SetFeatureAngle(settings.CreaseAngle);
+    lines->Update();
+    vtkPolyData* output = lines->GetOutput();
+    auto* types =
+      vtkUnsignedCharArray::SafeDownCast(output->GetCellData()->GetArray("FeatureType"));
+    auto iterator = vtk::TakeSmartPointer(output->GetLines()->NewIterator());
+    vtkIdType cell = 0;
+    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal();
+         iterator->GoToNextCell(), ++cell)
+    {
+      vtkIdType size;
+      const vtkIdType* ids;
+      iterator->GetCurrentCell(size, ids);
+      Segment segment;
+      double a[3], b[3];
+      output->GetPoint(ids[0], a);
+      output->GetPoint(ids[1], b);
+      vtkNPRTransformPoint(state.Matrix.data(), a, segment.A);
+      vtkNPRTransformPoint(state.Matrix.data(), b, segment.B);
+      segment.Type = types ? types->GetValue(cell) : 0;
+      segment.NodeA = nodeOffset + ids[0];
+      segment.NodeB = nodeOffset + ids[1];
+      this->Segments.push_back(segment);
+    }
+    nodeOffset += output->GetNumberOfPoints();
+  }
+  this->Lines.swap(used); // forget the actors that are gone
+  this->LinesTime = Seconds(start);
+
+  start = Clock::now();
+  if (!(actors == this->LocatorState) || this->LocatorBuilds == 0 ||
+    this->LocatorTrianglesPerLocator != trianglesPerLocator)
+  {
+    this->Occluders.Build(actors, trianglesPerLocator);
+    this->LocatorState = actors;
+    this->LocatorTrianglesPerLocator = trianglesPerLocator;
+    ++this->LocatorBuilds;
+  }
+  this->LocatorTime = Seconds(start);
+}

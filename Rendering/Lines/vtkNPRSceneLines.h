@@ -1,0 +1,100 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+// What vtkNPRReferenceMask and vtkNPRDrawingLines share: a renderer's actors as drawn, the
+// feature lines of each (one vtkNPRFeatureLines per actor, kept), those lines in world
+// coordinates, the occlusion structure of all their triangles (rebuilt only when the scene
+// changed), and the camera's view: projection into the image, clipping, the ray of a point.
+// Private to NPR::FiltersNPR.
+#ifndef vtkNPRSceneLines_h
+#define vtkNPRSceneLines_h
+
+#include "vtkNPROccluders.h" // for vtkNPROccluders, vtkNPRMeshInstance
+#include "vtkSmartPointer.h" // for the actors' lines
+#include "vtkWeakPointer.h"  // for the actors' lines
+
+#include <map>    // for the actors' lines
+#include <vector> // for the segments
+
+class vtkCamera;
+class vtkNPRFeatureLines;
+class vtkRenderer;
+
+// The camera of a frame as the image sees it.
+struct vtkNPRSceneView
+{
+  int Width = 0, Height = 0;
+  double Projection[16]; // world to clip coordinates (VTK's composite projection, near -1)
+  double Eye[3], Direction[3], Range[2];
+  bool Parallel = false;
+
+  void Set(vtkCamera* camera, int width, int height);
+  void Clip(const double x[3], double clip[4]) const;
+  // Window coordinates of a world point: x, y in pixels (row 0 at the bottom), z the depth
+  // buffer's [0, 1]. False behind the eye.
+  bool ToImage(const double x[3], double image[3]) const;
+  // The part [t0, t1] of the segment a-b inside the frustum, the image widened by `margin`
+  // pixels on each side. False when nothing is left.
+  bool ClipSegment(
+    const double a[3], const double b[3], double margin, double& t0, double& t1) const;
+  // The segment parameter at image fraction s of the clipped piece [t0, t1] (equal steps in
+  // the image are unequal along the segment under perspective).
+  double ParameterAt(const double a[3], const double b[3], double t0, double t1, double s) const;
+  // The length in pixels of the image of a-b between parameters t0 and t1.
+  double ImageLength(const double a[3], const double b[3], double t0, double t1) const;
+  // The ray a visibility test casts for point p: from the near plane to p, short of p by
+  // `epsilon` of its length.
+  void Ray(const double p[3], double epsilon, double from[3], double to[3]) const;
+};
+
+class vtkNPRSceneLines
+{
+public:
+  struct Settings
+  {
+    bool Silhouettes = true, Creases = true, Boundaries = true, NonManifoldEdges = true;
+    double CreaseAngle = 30.0;
+  };
+  // A feature edge in world coordinates; Nodes identify its end points across the scene (the
+  // same mesh vertex of the same actor: the same node).
+  struct Segment
+  {
+    double A[3], B[3];
+    unsigned char Type;
+    vtkIdType NodeA, NodeB;
+  };
+
+  vtkNPRSceneLines();
+  ~vtkNPRSceneLines();
+
+  // The visible, opaque vtkActors of the renderer drawn by a vtkPolyDataMapper (their inputs
+  // brought up to date), their feature lines for the renderer's camera in world coordinates,
+  // and the occlusion structure (built again only when the actors, meshes or matrices changed).
+  void Update(vtkRenderer* renderer, const Settings& settings, int trianglesPerLocator);
+
+  const std::vector<Segment>& GetSegments() const { return this->Segments; }
+  const vtkNPROccluders& GetOccluders() const { return this->Occluders; }
+  vtkIdType GetNumberOfLocatorBuilds() const { return this->LocatorBuilds; }
+  vtkIdType GetNumberOfAdjacencyBuilds() const;
+  double GetLinesTime() const { return this->LinesTime; }
+  double GetLocatorTime() const { return this->LocatorTime; }
+
+private:
+  vtkNPRSceneLines(const vtkNPRSceneLines&) = delete;
+  void operator=(const vtkNPRSceneLines&) = delete;
+
+  struct LinesEntry
+  {
+    vtkWeakPointer<vtkActor> Actor; // to tell a new actor at a freed address
+    vtkSmartPointer<vtkNPRFeatureLines> Lines;
+  };
+  std::map<vtkActor*, LinesEntry> Lines;
+  std::vector<Segment> Segments;
+  std::vector<vtkNPRMeshInstance> LocatorState; // what the occluders were built from
+  int LocatorTrianglesPerLocator = 0;
+  vtkNPROccluders Occluders;
+  vtkIdType LocatorBuilds = 0;
+  double LinesTime = 0.0, LocatorTime = 0.0;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkNPRSceneLines.h
