@@ -41,6 +41,7 @@
 #include "vtkRenderingNPRModule.h" // for export macro
 
 class vtkDualDepthPeelingPass;
+class vtkNPRDrawingPass;
 class vtkNPREdgePass;
 class vtkNPRGBufferPass;
 class vtkNPRInkPass;
@@ -109,6 +110,8 @@ public:
   vtkGetObjectMacro(SketchPass, vtkNPRSketchPass);
   vtkGetObjectMacro(InkPass, vtkNPRInkPass);
   vtkGetObjectMacro(RenderStepsPass, vtkRenderStepsPass);
+  // STAND-IN (branch npr-vector), to be replaced by main's drawing pass getter.
+  vtkNPRDrawingPass* GetDrawingPass() { return nullptr; }
   ///@}
 
 protected:
