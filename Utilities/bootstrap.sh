@@ -50,12 +50,15 @@ build_dir=${NPR_BUILD_DIR:-$source_dir/build}
 # VTK 9.1 with its Python bindings, EGL with Mesa's software renderer, OSMesa, the toolchain, and
 # Xvfb for the tests of VTK's own X window.
 packages=(libvtk9-dev python3-vtk9 libegl-dev libegl-mesa0 libgl1-mesa-dri libopengl-dev
-  libosmesa6-dev cmake ninja-build g++ xvfb xauth)
+  libosmesa6-dev libcairo2-dev cmake ninja-build g++ xvfb xauth)
 # debootstrap for the chroots of the other releases (installed here, before their set-ups start
 # side by side).
 # dpkg-dev and file for CPack's Debian packages (dpkg-shlibdeps); xdotool to drive npr-view;
-# ffmpeg for npr-render's MP4 videos.
-if [[ $task == test ]]; then packages+=(debootstrap clang-format dpkg-dev file xdotool ffmpeg); fi
+# ffmpeg for npr-render's MP4 videos; rsvg-convert and pdftoppm rasterise the exported SVG and PDF
+# drawings in their tests.
+if [[ $task == test ]]; then
+  packages+=(debootstrap clang-format dpkg-dev file xdotool ffmpeg librsvg2-bin poppler-utils)
+fi
 missing=()
 for package in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then

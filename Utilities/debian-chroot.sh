@@ -54,13 +54,16 @@ fi
 source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 base=${NPR_CHROOT_BASE:-/var/cache/vtknpr}
 
-# What every chroot needs to build and test: the toolchain, Mesa's EGL (software), Xvfb; and to
-# make Debian packages with CPack (dpkg-shlibdeps, file).
-common=(cmake ninja-build g++ xvfb xauth libegl-mesa0 libgl1-mesa-dri libopengl-dev dpkg-dev file)
+# What every chroot needs to build and test: the toolchain, Mesa's EGL (software), Xvfb, Cairo
+# (the passes paint the drawing style's strokes with it); and to make Debian packages with CPack
+# (dpkg-shlibdeps, file).
+common=(cmake ninja-build g++ xvfb xauth libegl-mesa0 libgl1-mesa-dri libopengl-dev libcairo2-dev
+  dpkg-dev file)
 # VTK and its Python bindings; EGL's development files for the module's own EGL window (VTK < 9.4);
-# xdotool to drive npr-view in its test. The ParaView plugin compiles the passes only and needs
-# none of them.
-vtk=(libvtk9-dev python3-vtk9 libegl-dev xdotool)
+# xdotool to drive npr-view in its test; rsvg-convert and pdftoppm to rasterise the exported SVG and
+# PDF drawings in theirs. The ParaView plugin compiles the passes and lines only and needs none of
+# them.
+vtk=(libvtk9-dev python3-vtk9 libegl-dev xdotool librsvg2-bin poppler-utils)
 # PyVista on that VTK, for the vtknpr.pyvista entry point and PyVista's examples as clients.
 pyvista=(python3-pyvista)
 # ParaView's development files and the -dev packages its CMake configuration needs without

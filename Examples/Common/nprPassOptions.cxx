@@ -13,9 +13,10 @@
 #include <vector>
 
 const char* const nprPassOptionsHelp = R"(Style:
-  --style NAME             shaded (default), edges, toon, toon+edges, sketch or inked
+  --style NAME             shaded (default), edges, toon, toon+edges, sketch, inked or
+                           drawing
 
-Lines (--style edges, toon+edges and sketch):
+Lines (--style edges, toon+edges, sketch and drawing):
   --lines LIST             line types drawn, comma separated: silhouettes, creases,
                            contours, or none (default silhouettes,creases,contours)
   --silhouette-threshold X relative depth step that makes a silhouette (default 0.005)
@@ -35,6 +36,11 @@ Lines (--style edges, toon+edges and sketch):
 Inking (--style inked):
   --line-width PX          ink line width in pixels, 0.5..16 (default 1.5)
   --line-color COLOR       ink colour (default black)
+
+Technical drawing (--style drawing: white faces, exact lines from the meshes; --lines,
+--crease-angle, --line-width and the colours apply):
+  --hidden-lines           also draw the hidden lines, dashed (6 px on, 4 off at 72 DPI),
+                           0.6 times as wide, in grey
 
 Toon shading (--style toon, toon+edges):
   --toon-bands N           number of equal light bands, 1..64 (default 3)
@@ -60,7 +66,7 @@ bool nprIsStyleName(const std::string& name)
 std::string nprStyleNames()
 {
   std::string names;
-  for (int style = vtkNPRPass::SHADED; style <= vtkNPRPass::INKED; ++style)
+  for (int style = vtkNPRPass::SHADED; style <= vtkNPRPass::DRAWING; ++style)
   {
     names += (names.empty() ? "" : ", ") + std::string(vtkNPRPass::GetStyleName(style));
   }
@@ -182,6 +188,10 @@ bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
   else if (arg == "--noise-seed")
   {
     pass.NoiseSeed = nprParseInteger(arg, arguments.Value(), 0, 2147483647);
+  }
+  else if (arg == "--hidden-lines")
+  {
+    pass.HiddenLines = true;
   }
   else if (arg == "--noise-space")
   {

@@ -43,6 +43,7 @@ void nprApplyPassSettings(vtkNPRPass* pass, const nprPassSettings& settings)
   sketch->SetPaper(settings.Paper);
   sketch->SetPaperColor(settings.PaperColor);
   pass->SetSketchToonShading(settings.SketchToon);
+  pass->SetHiddenLines(settings.HiddenLines);
   vtkNPRInkPass* ink = pass->GetInkPass();
   ink->SetLineWidth(settings.LineWidth);
   ink->SetInkColor(settings.SilhouetteColor);

@@ -45,6 +45,9 @@ struct nprPassSettings
   bool Paper = false;
   double PaperColor[3] = { 1.0, 0.98, 0.92 };
   bool SketchToon = false;
+
+  // Technical drawing
+  bool HiddenLines = false;
 };
 
 // A vtkNPRPass of settings.Style with every setting applied (also for "shaded": whether to use

@@ -4,9 +4,11 @@
 
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
+#include "vtkNPRDrawingExporter.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <stdexcept>
@@ -46,4 +48,25 @@ void nprWriteWindowPNG(vtkRenderWindow* window, const std::string& path, bool gr
     image = first->GetOutput();
   }
   nprWritePNG(image, path);
+}
+
+bool nprIsDrawingFile(const std::string& path)
+{
+  return vtkNPRDrawingExporter::GetFormatFromFileName(path.c_str()) >= 0;
+}
+
+std::string nprOutputExtensions()
+{
+  return std::string(".png, ") + vtkNPRDrawingExporter::GetSupportedExtensions();
+}
+
+void nprWriteDrawing(vtkRenderer* renderer, const std::string& path)
+{
+  vtkNew<vtkNPRDrawingExporter> exporter;
+  exporter->SetRenderer(renderer);
+  exporter->SetFileName(path.c_str());
+  if (!exporter->Write())
+  {
+    throw std::runtime_error(exporter->GetErrorMessage());
+  }
 }

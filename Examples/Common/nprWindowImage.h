@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Images out of a render window, and PNG files.
+// Images out of a render window: PNG files, and vector drawings (SVG, PDF, PostScript).
 #ifndef nprWindowImage_h
 #define nprWindowImage_h
 
@@ -10,6 +10,7 @@
 
 class vtkImageData;
 class vtkRenderWindow;
+class vtkRenderer;
 
 // The window's colour buffer as RGB, read from the back buffer. rerender: render the window
 // first; otherwise the image is the frame last rendered.
@@ -20,5 +21,17 @@ void nprWritePNG(vtkImageData* image, const std::string& path);
 
 // Renders the window and writes it as a PNG: RGB, or (grey) its first channel as 8-bit grey.
 void nprWriteWindowPNG(vtkRenderWindow* window, const std::string& path, bool grey);
+
+// Whether -o PATH names a vector drawing: .svg, .pdf, .ps or .eps, any case
+// (vtkNPRDrawingExporter's formats).
+bool nprIsDrawingFile(const std::string& path);
+
+// The extensions -o accepts without --orbit, for error messages: ".png, .svg, .pdf, .ps, .eps".
+std::string nprOutputExtensions();
+
+// Writes the renderer's lines as a vector drawing (vtkNPRDrawingExporter; the format from the
+// extension) in its vtkNPRPass's style, over the window's image unless the style is "drawing".
+// Throws std::runtime_error with the exporter's message.
+void nprWriteDrawing(vtkRenderer* renderer, const std::string& path);
 
 #endif

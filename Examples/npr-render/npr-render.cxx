@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 // SPDX-License-Identifier: BSD-3-Clause
-// npr-render: renders model files headless into a PNG, with the vtkNPR styles.
+// npr-render: renders model files headless into a PNG or a vector drawing (SVG, PDF), with the
+// vtkNPR styles.
 // Run `npr-render --help` for the flags; Documentation/cli.md describes them.
 #include "nprCameraJson.h"
 #include "nprModel.h"
@@ -187,7 +188,11 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
   {
     TimeFrames(options, window, renderer, pass, triangles, width, height);
   }
-  if (!options.Output.empty())
+  if (!options.Output.empty() && nprIsDrawingFile(options.Output))
+  {
+    nprWriteDrawing(renderer, options.Output); // .svg, .pdf, .ps, .eps
+  }
+  else if (!options.Output.empty())
   {
     nprWriteWindowPNG(window, options.Output, false);
   }

@@ -5,6 +5,7 @@
 #include "nprArguments.h"
 #include "nprOrbit.h"
 #include "nprPassOptions.h"
+#include "nprWindowImage.h"
 
 #include "vtkNPRRenderWindowFactory.h"
 
@@ -12,10 +13,14 @@ namespace
 {
 const char* const Usage = R"(usage: npr-render [options] MODEL [MODEL...]
 
-Renders one scene of the given models headless and writes a PNG.
+Renders one scene of the given models headless and writes a PNG, or a vector drawing
+of its lines (SVG, PDF, PostScript).
 Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
 
-  -o, --output FILE        PNG to write (with --orbit: frames or a video)
+  -o, --output FILE        the image to write, by its extension: .png, or the lines as
+                           a vector drawing .svg, .pdf, .ps or .eps (1 pixel = 1 point,
+                           over the image unless --style drawing); with --orbit:
+                           frames or a video
   --size WxH               image size in pixels (default 1024x768)
   --compare-style LIST     with --frames: also time these styles (comma separated), frames
                            interleaved with the main style's in the same window; print
@@ -180,6 +185,11 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
   else if (!outputKind.empty() && outputKind != "png")
   {
     throw nprUsageError("-o " + options.Output + ": a video needs --orbit N");
+  }
+  else if (!options.Output.empty() && outputKind.empty() && !nprIsDrawingFile(options.Output))
+  {
+    throw nprUsageError("-o " + options.Output + ": unknown extension (supported: " +
+      nprOutputExtensions() + "; with --orbit: .png, .ogv, .mp4, .avi)");
   }
   if (options.Output.empty() && options.Frames == 0 && options.CameraOut.empty() &&
     options.EdgeMask.empty() && options.ReferenceMask.empty())

@@ -38,7 +38,9 @@ bool Exists(const std::string& path)
 }
 }
 
-const char* const nprViewKeys = R"(  1..6   style: shaded, edges, toon, toon+edges, sketch, inked
+const char* const nprViewKeys =
+  R"(  1..7   style: shaded, edges, toon, toon+edges, sketch, inked, drawing
+  d      hidden lines of the drawing on / off
   + -    line width up / down by 0.5 px
   ] [    crease angle up / down by 5 degrees
   s c o  silhouettes, creases, contours on / off
@@ -143,7 +145,8 @@ bool nprViewer::HandleKey(char key)
     case '4':
     case '5':
     case '6':
-      // Keys 1..6 in the order of vtkNPRPass's styles.
+    case '7':
+      // Keys 1..7 in the order of vtkNPRPass's styles.
       s.Style = vtkNPRPass::GetStyleName(vtkNPRPass::SHADED + (key - '1'));
       break;
     case '+':
@@ -171,6 +174,10 @@ bool nprViewer::HandleKey(char key)
     case 'o':
     case 'O':
       s.Contours = !s.Contours;
+      break;
+    case 'd':
+    case 'D':
+      s.HiddenLines = !s.HiddenLines;
       break;
     case 'p':
       this->SaveScreenshot(false);
@@ -200,6 +207,7 @@ std::string nprViewer::StatusText() const
   lines += s.Silhouettes ? " silhouettes" : "";
   lines += s.Creases ? " creases" : "";
   lines += s.Contours ? " contours" : "";
+  lines += s.Style == "drawing" && s.HiddenLines ? " hidden" : "";
   char text[512];
   std::snprintf(text, sizeof(text),
     "style %s\nlines:%s\nline width %.1f px, crease angle %.0f deg\nframe %.1f ms   (h: keys)",

@@ -75,6 +75,7 @@ void vtkNPRViewPass::Render(const vtkRenderState* state)
     case vtkNPRPass::EDGES:
     case vtkNPRPass::TOON_EDGES:
     case vtkNPRPass::INKED:
+    case vtkNPRPass::DRAWING: // each rank sees its own pieces only: the depth lines instead
       effect = this->NPRPass->GetEdgePass();
       break;
     case vtkNPRPass::SKETCH:

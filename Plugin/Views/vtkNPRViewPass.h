@@ -19,7 +19,8 @@
  *   against the background; no object ids separate touching objects). Toon shading is per
  *   fragment, so it is applied inside IceT, to each rank's piece, by the pass
  *   GetSceneRenderPass() returns (the view makes it vtkPVSynchronizedRenderer's render pass).
- *   The inked wireframe cannot be applied to an image: INKED draws the depth lines instead.
+ *   The inked wireframe cannot be applied to an image, and a rank's object-space lines would
+ *   miss the other ranks' pieces: INKED and DRAWING draw the depth lines instead.
  *   Since the composited image has no seams, no line appears where ranks' pieces meet.
  *
  * Composited input is detected from the delegate (a vtkCameraPass over a vtkIceTCompositePass);

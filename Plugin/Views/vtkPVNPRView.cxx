@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkPVNPRView.h"
 
+#include "vtkNPRDrawingExporter.h"
+#include "vtkNPRDrawingPass.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRInkPass.h"
 #include "vtkNPRPass.h"
@@ -88,6 +90,39 @@ vtkPVNPRViewForward(Silhouettes, bool, GetEdgePass(), SetSilhouettes)
 {
   this->NPRViewPass->GetNPRPass()->GetSketchPass()->SetNoiseSeed(
     static_cast<unsigned int>(seed < 0 ? 0 : seed));
+}
+
+void vtkPVNPRView::SetDrawingHiddenLines(bool on)
+{
+  this->NPRViewPass->GetNPRPass()->SetHiddenLines(on);
+}
+
+void vtkPVNPRView::SetDrawingFaceColor(double r, double g, double b)
+{
+  this->NPRViewPass->GetNPRPass()->GetDrawingPass()->SetFaceColor(r, g, b);
+}
+
+void vtkPVNPRView::SetDrawingHiddenLineColor(double r, double g, double b)
+{
+  this->NPRViewPass->GetNPRPass()->GetDrawingPass()->SetHiddenLineColor(r, g, b);
+}
+
+void vtkPVNPRView::SetDrawingFileName(const char* path)
+{
+  this->DrawingFileName = path ? path : "";
+}
+
+bool vtkPVNPRView::ExportDrawing()
+{
+  vtkNew<vtkNPRDrawingExporter> exporter;
+  exporter->SetRenderer(this->GetRenderer());
+  exporter->SetFileName(this->DrawingFileName.c_str());
+  if (!exporter->Write())
+  {
+    vtkErrorMacro("the drawing was not written: " << exporter->GetErrorMessage());
+    return false;
+  }
+  return true;
 }
 
 void vtkPVNPRView::SetForceDepthOnly(bool on)

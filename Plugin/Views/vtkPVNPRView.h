@@ -23,6 +23,8 @@
 #include "vtkNew.h"            // for vtkNew
 #include "vtkPVRenderView.h"
 
+#include <string> // for the drawing's file name
+
 class vtkNPRViewPass;
 
 class VTKNPRVIEWS_EXPORT vtkPVNPRView : public vtkPVRenderView
@@ -39,7 +41,8 @@ public:
 
   ///@{
   /**
-   * Style: 0 shaded, 1 edges, 2 toon, 3 toon+edges, 4 sketch, 5 inked (vtkNPRPass::Styles);
+   * Style: 0 shaded, 1 edges, 2 toon, 3 toon+edges, 4 sketch, 5 inked, 6 drawing
+   * (vtkNPRPass::Styles);
    * SketchToonShading sketches the toon bands instead of flat colours.
    */
   void SetStyle(int style);
@@ -75,6 +78,25 @@ public:
 
   ///@{
   /**
+   * Drawing (vtkNPRDrawingPass).
+   */
+  void SetDrawingHiddenLines(bool on);
+  void SetDrawingFaceColor(double r, double g, double b);
+  void SetDrawingHiddenLineColor(double r, double g, double b);
+  ///@}
+
+  ///@{
+  /**
+   * Vector output of the view's lines (vtkNPRDrawingExporter): ExportDrawing() writes
+   * DrawingFileName (.svg, .pdf, .ps or .eps) on the process that renders (the client in a builtin
+   * session, the server's first rank otherwise). False, with an error, when it could not.
+   */
+  void SetDrawingFileName(const char* path);
+  bool ExportDrawing();
+  ///@}
+
+  ///@{
+  /**
    * Sketch (vtkNPRSketchPass).
    */
   void SetSketchUncertainty(double pixels);
@@ -106,6 +128,7 @@ protected:
   void UpdateSceneRenderPass();
 
   vtkNew<vtkNPRViewPass> NPRViewPass;
+  std::string DrawingFileName;
 
 private:
   vtkPVNPRView(const vtkPVNPRView&) = delete;

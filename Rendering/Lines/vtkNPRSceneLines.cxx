@@ -10,6 +10,8 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNPRFeatureLines.h"
 #include "vtkPolyData.h"
@@ -174,31 +176,54 @@ void vtkNPRSceneLines::Update(
     {
       producer->Update(mapper->GetInputConnection(0, 0)->GetIndex());
     }
-    vtkPolyData* mesh = mapper->GetInput();
-    if (!mesh || !actor->HasOpaqueGeometry())
+    if (!actor->HasOpaqueGeometry())
     {
       continue;
     }
-    vtkNPRMeshInstance state{ actor, mesh, mesh->GetMTime(), {} };
+    vtkNPRMeshInstance state{ actor, nullptr, 0, {} };
     vtkMatrix4x4* matrix = actor->GetMatrix();
     std::copy_n(&matrix->Element[0][0], 16, state.Matrix.data());
-    actors.push_back(state);
+    // A composite input (ParaView's representations, vtkCompositePolyDataMapper2): each
+    // polygonal leaf is a mesh of the actor.
+    vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+    if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+    {
+      auto iterator = vtk::TakeSmartPointer(composite->NewIterator());
+      for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
+      {
+        if (auto* leaf = vtkPolyData::SafeDownCast(iterator->GetCurrentDataObject()))
+        {
+          state.Mesh = leaf;
+          state.MeshTime = leaf->GetMTime();
+          actors.push_back(state);
+        }
+      }
+    }
+    else if (auto* mesh = vtkPolyData::SafeDownCast(input))
+    {
+      state.Mesh = mesh;
+      state.MeshTime = mesh->GetMTime();
+      actors.push_back(state);
+    }
   }
 
   // Feature lines of each actor, in world coordinates.
   Clock::time_point start = Clock::now();
   this->Segments.clear();
-  std::map<vtkActor*, LinesEntry> used;
+  std::map<MeshKey, LinesEntry> used;
   vtkIdType nodeOffset = 0;
   for (const vtkNPRMeshInstance& state : actors)
   {
-    LinesEntry& entry = this->Lines[state.Actor];
-    if (!entry.Lines || entry.Actor != state.Actor) // new, or another actor at a freed address
+    const MeshKey key{ state.Actor, state.Mesh };
+    LinesEntry& entry = this->Lines[key];
+    // New, or another actor or mesh at a freed address.
+    if (!entry.Lines || entry.Actor != state.Actor || entry.Mesh != state.Mesh)
     {
       entry.Actor = state.Actor;
+      entry.Mesh = state.Mesh;
       entry.Lines = vtkSmartPointer<vtkNPRFeatureLines>::New();
     }
-    used[state.Actor] = entry;
+    used[key] = entry;
     vtkNPRFeatureLines* lines = entry.Lines;
     lines->SetInputData(state.Mesh);
     lines->SetCamera(camera, state.Actor->GetMatrix());

@@ -12,11 +12,13 @@
 #include "vtkSmartPointer.h" // for the actors' lines
 #include "vtkWeakPointer.h"  // for the actors' lines
 
-#include <map>    // for the actors' lines
-#include <vector> // for the segments
+#include <map>     // for the actors' lines
+#include <utility> // for std::pair
+#include <vector>  // for the segments
 
 class vtkCamera;
 class vtkNPRFeatureLines;
+class vtkPolyData;
 class vtkRenderer;
 
 // The camera of a frame as the image sees it.
@@ -67,8 +69,9 @@ public:
   ~vtkNPRSceneLines();
 
   // The visible, opaque vtkActors of the renderer drawn by a vtkPolyDataMapper (their inputs
-  // brought up to date), their feature lines for the renderer's camera in world coordinates,
-  // and the occlusion structure (built again only when the actors, meshes or matrices changed).
+  // brought up to date; each polygonal leaf of a composite input), their feature lines for the
+  // renderer's camera in world coordinates, and the occlusion structure (built again only when the
+  // actors, meshes or matrices changed).
   void Update(vtkRenderer* renderer, const Settings& settings, int trianglesPerLocator);
 
   const std::vector<Segment>& GetSegments() const { return this->Segments; }
@@ -82,12 +85,15 @@ private:
   vtkNPRSceneLines(const vtkNPRSceneLines&) = delete;
   void operator=(const vtkNPRSceneLines&) = delete;
 
+  // Each mesh of each actor (a composite input has several) keeps its feature lines.
+  using MeshKey = std::pair<vtkActor*, vtkPolyData*>;
   struct LinesEntry
   {
-    vtkWeakPointer<vtkActor> Actor; // to tell a new actor at a freed address
+    vtkWeakPointer<vtkActor> Actor; // to tell a new actor or mesh at a freed address
+    vtkWeakPointer<vtkPolyData> Mesh;
     vtkSmartPointer<vtkNPRFeatureLines> Lines;
   };
-  std::map<vtkActor*, LinesEntry> Lines;
+  std::map<MeshKey, LinesEntry> Lines;
   std::vector<Segment> Segments;
   std::vector<vtkNPRMeshInstance> LocatorState; // what the occluders were built from
   int LocatorTrianglesPerLocator = 0;

@@ -3,6 +3,7 @@
 #include "vtkNPRPass.h"
 
 #include "vtkDualDepthPeelingPass.h"
+#include "vtkNPRDrawingPass.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
 #include "vtkNPRInkPass.h"
@@ -44,6 +45,8 @@ vtkNPRPass::vtkNPRPass()
   this->SketchPass->SetEdgePass(this->EdgePass);
   this->InkPass = vtkNPRInkPass::New();
   this->InkPass->SetDelegatePass(this->OpaquePass);
+  this->DrawingPass = vtkNPRDrawingPass::New();
+  this->DrawingPass->SetEdgePass(this->EdgePass);
   // Line and point primitives, left out of the G-buffer, drawn after the effect.
   this->LinePrimitivesPass = vtkNPRLinePrimitivesPass::New();
   this->LinePrimitivesPass->DelegatePass = this->OpaquePass;
@@ -62,6 +65,12 @@ vtkNPRPass::vtkNPRPass()
   sketchPasses->AddItem(this->SketchPass);
   sketchPasses->AddItem(this->LinePrimitivesPass);
   this->SketchSequence->SetPasses(sketchPasses);
+  this->DrawingSequence = vtkSequencePass::New();
+  vtkNew<vtkRenderPassCollection> drawingPasses;
+  drawingPasses->AddItem(this->GBufferPass);
+  drawingPasses->AddItem(this->DrawingPass);
+  drawingPasses->AddItem(this->LinePrimitivesPass);
+  this->DrawingSequence->SetPasses(drawingPasses);
   this->TranslucentPass = vtkTranslucentPass::New();
   this->DepthPeelingPass = vtkDualDepthPeelingPass::New();
   this->DepthPeelingPass->SetTranslucentPass(this->TranslucentPass);
@@ -72,6 +81,8 @@ vtkNPRPass::~vtkNPRPass()
   this->RenderStepsPass->Delete();
   this->EdgesSequence->Delete();
   this->SketchSequence->Delete();
+  this->DrawingSequence->Delete();
+  this->DrawingPass->Delete();
   this->LinePrimitivesPass->Delete();
   this->SketchPass->Delete();
   this->InkPass->Delete();
@@ -101,14 +112,30 @@ const char* vtkNPRPass::GetStyleName(int style)
       return "sketch";
     case INKED:
       return "inked";
+    case DRAWING:
+      return "drawing";
     default:
       return "unknown";
   }
 }
 
+void vtkNPRPass::SetHiddenLines(bool hidden)
+{
+  if (this->DrawingPass->GetHiddenLines() != hidden)
+  {
+    this->DrawingPass->SetHiddenLines(hidden);
+    this->Modified();
+  }
+}
+
+bool vtkNPRPass::GetHiddenLines()
+{
+  return this->DrawingPass->GetHiddenLines();
+}
+
 int vtkNPRPass::GetStyleFromName(const char* name)
 {
-  for (int style = SHADED; name && style <= INKED; ++style)
+  for (int style = SHADED; name && style <= DRAWING; ++style)
   {
     if (strcmp(name, GetStyleName(style)) == 0)
     {
@@ -121,8 +148,10 @@ int vtkNPRPass::GetStyleFromName(const char* name)
 void vtkNPRPass::Render(const vtkRenderState* state)
 {
   vtkRenderer* renderer = state->GetRenderer();
-  this->GBufferPass->SetNormalsRequested(this->EdgePass->GetCreases());
-  this->GBufferPass->SetObjectIdsRequested(this->EdgePass->GetContours());
+  // The drawing's lines come from the meshes: its G-buffer needs depth only.
+  const bool imageLines = this->Style != DRAWING;
+  this->GBufferPass->SetNormalsRequested(imageLines && this->EdgePass->GetCreases());
+  this->GBufferPass->SetObjectIdsRequested(imageLines && this->EdgePass->GetContours());
   this->GBufferPass->SetGeometryEncoding(this->EdgePass->GetEncoding());
   switch (this->Style)
   {
@@ -145,6 +174,10 @@ void vtkNPRPass::Render(const vtkRenderState* state)
       this->ToonPass->SetDelegatePass(this->SurfacePass);
       this->GBufferPass->SetDelegatePass(this->SketchToonShading ? this->ToonPass : this->FlatPass);
       this->RenderStepsPass->SetOpaquePass(this->SketchSequence);
+      break;
+    case DRAWING:
+      this->GBufferPass->SetDelegatePass(this->FlatPass);
+      this->RenderStepsPass->SetOpaquePass(this->DrawingSequence);
       break;
     default: // EDGES
       this->GBufferPass->SetDelegatePass(this->SurfacePass);
@@ -174,6 +207,7 @@ void vtkNPRPass::ReleaseGraphicsResources(vtkWindow* window)
   this->FlatPass->ReleaseGraphicsResources(window);
   this->SketchPass->ReleaseGraphicsResources(window);
   this->InkPass->ReleaseGraphicsResources(window);
+  this->DrawingPass->ReleaseGraphicsResources(window);
   this->LinePrimitivesPass->ReleaseGraphicsResources(window);
   this->OpaquePass->ReleaseGraphicsResources(window);
   this->SurfacePass->ReleaseGraphicsResources(window);
@@ -196,4 +230,6 @@ void vtkNPRPass::PrintSelf(ostream& os, vtkIndent indent)
   this->SketchPass->PrintSelf(os, indent.GetNextIndent());
   os << indent << "InkPass:\n";
   this->InkPass->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "DrawingPass:\n";
+  this->DrawingPass->PrintSelf(os, indent.GetNextIndent());
 }

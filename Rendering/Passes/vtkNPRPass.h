@@ -16,17 +16,20 @@
  *                   toon pass with SketchToonShading), then vtkNPRSketchPass,
  *       INKED       vtkNPRInkPass (drawing a vtkOpaquePass twice: fat back-face wireframe,
  *                   then the faces with polygon offset) straight into the window,
+ *       DRAWING     vtkNPRGBufferPass (drawing flat colours, of which only the depth is used),
+ *                   then vtkNPRDrawingPass: faces in one colour, the exact object-space lines
+ *                   over them, hidden lines dashed on request (SetHiddenLines()),
  *     translucent: vtkTranslucentPass, or vtkDualDepthPeelingPass when the renderer's
  *                  UseDepthPeeling is on (its MaximumNumberOfPeels and OcclusionRatio apply),
  *     volumes, overlay.
  *
- * The edge and sketch passes write a depth sprite, so everything drawn after the opaque step
- * (translucent props, volumes, 2D actors, renderers on higher layers) composites as with VTK's
+ * The edge, sketch and drawing passes write a depth sprite, so everything drawn after the opaque
+ * step (translucent props, volumes, 2D actors, renderers on higher layers) composites as with VTK's
  * own chain. Translucent props are shaded as usual in every style.
  *
  * The effect passes are exposed for tuning (GetEdgePass(), GetToonPass(), GetSketchPass(),
- * GetInkPass(), GetGBufferPass()); the G-buffer channels and encoding follow what the enabled
- * lines need (the edge pass's line types and Encoding). The sketch uses
+ * GetInkPass(), GetDrawingPass(), GetGBufferPass()); the G-buffer channels and encoding follow what
+ * the enabled lines need (the edge pass's line types and Encoding). The sketch and the drawing use
  * the edge pass's line settings (types, thresholds, width, colours).
  *
  * Renderer flags that VTK ignores once a pass is set (UseFXAA, UseSSAO, UseShadows) stay ignored;
@@ -41,6 +44,7 @@
 #include "vtkRenderingNPRModule.h" // for export macro
 
 class vtkDualDepthPeelingPass;
+class vtkNPRDrawingPass;
 class vtkNPREdgePass;
 class vtkNPRGBufferPass;
 class vtkNPRInkPass;
@@ -68,14 +72,15 @@ public:
     TOON = 2,
     TOON_EDGES = 3,
     SKETCH = 4,
-    INKED = 5
+    INKED = 5,
+    DRAWING = 6
   };
 
   ///@{
   /**
-   * The style (default EDGES). Names: shaded, edges, toon, toon+edges, sketch, inked.
+   * The style (default EDGES). Names: shaded, edges, toon, toon+edges, sketch, inked, drawing.
    */
-  vtkSetClampMacro(Style, int, SHADED, INKED);
+  vtkSetClampMacro(Style, int, SHADED, DRAWING);
   vtkGetMacro(Style, int);
   void SetStyleToShaded() { this->SetStyle(SHADED); }
   void SetStyleToEdges() { this->SetStyle(EDGES); }
@@ -83,6 +88,7 @@ public:
   void SetStyleToToonEdges() { this->SetStyle(TOON_EDGES); }
   void SetStyleToSketch() { this->SetStyle(SKETCH); }
   void SetStyleToInked() { this->SetStyle(INKED); }
+  void SetStyleToDrawing() { this->SetStyle(DRAWING); }
   static const char* GetStyleName(int style);
   /**
    * The style of a name (as GetStyleName() gives it), -1 for an unknown name.
@@ -101,6 +107,15 @@ public:
 
   ///@{
   /**
+   * DRAWING: draw the hidden lines, dashed (off by default; the drawing pass's HiddenLines).
+   */
+  void SetHiddenLines(bool hidden);
+  bool GetHiddenLines();
+  vtkBooleanMacro(HiddenLines, bool);
+  ///@}
+
+  ///@{
+  /**
    * The passes this one owns, for tuning. Do not replace them inside the chain.
    */
   vtkGetObjectMacro(GBufferPass, vtkNPRGBufferPass);
@@ -108,6 +123,7 @@ public:
   vtkGetObjectMacro(ToonPass, vtkNPRToonPass);
   vtkGetObjectMacro(SketchPass, vtkNPRSketchPass);
   vtkGetObjectMacro(InkPass, vtkNPRInkPass);
+  vtkGetObjectMacro(DrawingPass, vtkNPRDrawingPass);
   vtkGetObjectMacro(RenderStepsPass, vtkRenderStepsPass);
   ///@}
 
@@ -126,9 +142,11 @@ protected:
   vtkNPRToonPass* FlatPass; // one band, no highlight: the flat colours a sketch fills with
   vtkNPRSketchPass* SketchPass;
   vtkNPRInkPass* InkPass;
+  vtkNPRDrawingPass* DrawingPass;
   class vtkNPRLinePrimitivesPass* LinePrimitivesPass;
   vtkSequencePass* EdgesSequence;
   vtkSequencePass* SketchSequence;
+  vtkSequencePass* DrawingSequence;
   vtkTranslucentPass* TranslucentPass;
   vtkDualDepthPeelingPass* DepthPeelingPass;
 

@@ -6,9 +6,13 @@
 #ifndef vtkNPRStrokePainter_h
 #define vtkNPRStrokePainter_h
 
+#include "vtkType.h" // for vtkIdType
+
+#include <array>  // for the counts
 #include <string> // for the error message
 #include <vector> // for the image
 
+typedef struct _cairo cairo_t;
 class vtkNPRDrawingPass;
 class vtkNPREdgePass;
 class vtkPolyData;
@@ -39,6 +43,33 @@ vtkNPRStrokeStyle vtkNPRMakeStrokeStyle(
 // False, with `error` set, when Cairo fails.
 bool vtkNPRRasterizeStrokes(vtkPolyData* strokes, const vtkNPRStrokeStyle& style, int width,
   int height, std::vector<unsigned char>& rgba, std::string& error);
+
+// The classes of strokes, in the order they are painted (hidden ones first, under the visible
+// ones): the groups of an SVG file, class="npr-hidden", "npr-silhouette", ...
+enum vtkNPRStrokeClass
+{
+  NPR_STROKES_HIDDEN = 0,
+  NPR_STROKES_SILHOUETTE,   // visible silhouettes
+  NPR_STROKES_BOUNDARY,     // visible boundary edges
+  NPR_STROKES_CREASE,       // visible creases
+  NPR_STROKES_NON_MANIFOLD, // visible non-manifold edges
+  NPR_STROKE_CLASSES
+};
+// "npr-hidden", "npr-silhouette", "npr-boundary", "npr-crease", "npr-non-manifold".
+const char* vtkNPRStrokeClassName(int strokeClass);
+
+// How many strokes of each class were painted.
+using vtkNPRStrokeCounts = std::array<vtkIdType, NPR_STROKE_CLASSES>;
+
+// Paints the strokes onto `cr`, whose user space is the image's: one unit a pixel, the image
+// `height` pixels high with row 0 at the top (ImageCoordinates' y is flipped here). One path a
+// stroke (move_to, line_to through its points, close_path for a closed loop), one cairo_stroke
+// each: round caps and joins; hidden strokes first, dashed (the pattern running on along the
+// stroke), then the visible ones class by class (vtkNPRStrokeClass). Strokes of a line type the
+// style leaves out are skipped. Counts what it painted. False, with `error` set, when the strokes
+// lack ImageCoordinates, FeatureType or Hidden, or Cairo fails.
+bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeStyle& style,
+  double height, vtkNPRStrokeCounts& counts, std::string& error);
 
 #endif
 // VTK-HeaderTest-Exclude: vtkNPRStrokePainter.h

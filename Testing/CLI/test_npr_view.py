@@ -195,9 +195,12 @@ back = saved("s", "c", "o", "p")
 toon = saved("3", "p")
 sketch = saved("5", "p")
 inked = saved("6", "p")
+drawing = saved("7", "p")
+hidden = saved("d", "p")
+visible = saved("d", "p")
 counts = {name: line_pixels(path, shaded) for name, path in
           [("edges", edges), ("wide", wide), ("sharp", sharp), ("none", none), ("back", back),
-           ("toon", toon), ("sketch", sketch), ("inked", inked)]}
+           ("toon", toon), ("sketch", sketch), ("inked", inked), ("drawing", drawing)]}
 # Measured (480x360, llvmpipe): edges 1091, wide 2616, sharp 2886, none 0, toon 0, sketch 1151,
 # inked 1380.
 print("line pixels:", counts, flush=True)
@@ -210,6 +213,10 @@ check(counts["toon"] < 50 and colours(toon) < colours(shaded) / 4,
       "toon: no lines, a few bands (%d colours against shaded's %d)" % (colours(toon), colours(shaded)))
 check(counts["sketch"] > 500 and differing(sketch, edges) > 0.01, "sketch: lines, and not the edges image")
 check(counts["inked"] > 500 and differing(inked, edges) > 0.005, "inked: ink lines, not the edges image")
+check(counts["drawing"] > 500 and differing(drawing, edges) > 0.005,
+      "drawing: lines, and not the edges image")
+check(differing(hidden, drawing) > 0.001, "d: the hidden lines appear")
+check(differing(visible, drawing, 0) == 0, "d again: the drawing as before")
 
 # VTK's keys that clash: w (wireframe), s/S (surface), f (fly to), p (pick), 3 (stereo), j, t, a,
 # u: none may change the view.

@@ -104,6 +104,35 @@ if not args.mpi:
           "toon has fewer shades than shaded (%d < %d)" % (levels(images["Toon"]), levels(shaded)))
     check(int((abs(images["Sketch"] - images["Edges"]).sum(axis=2) > 60).sum()) > 2000,
           "sketch differs from edges")
+    # Drawing: white faces and the meshes' own lines; hidden lines, in grey, on request.
+    def grey(img):
+        mean = img.sum(axis=2) / 3.0
+        return int(((mean > 80) & (mean < 200) & (img.max(axis=2) - img.min(axis=2) < 8)).sum())
+    view.DrawingHiddenLines = 0
+    _, _, drawing = render("Drawing", False)
+    view.DrawingHiddenLines = 1
+    _, _, hidden = render("Drawing", False)
+    view.DrawingHiddenLines = 0
+    white = float((drawing[mask].min(axis=1) >= 250).mean())
+    print("drawing: %.3f of the covered pixels white, %d dark; grey pixels %d, with hidden lines %d"
+          % (white, dark(drawing), grey(drawing), grey(hidden)))
+    check(white > 0.8, "drawing: the faces are white (%.3f)" % white)
+    check(dark(drawing) > 1500, "drawing draws lines")
+    check(grey(hidden) > grey(drawing) + 500, "drawing: hidden lines appear in grey")
+    # The view's lines as a vector file (vtkNPRDrawingExporter through the view's command).
+    svg = os.path.join(args.output_dir, "drawing.svg")
+    if os.path.exists(svg):
+        os.remove(svg)
+    view.Style = STYLES.index("Drawing")
+    view.DrawingHiddenLines = 1
+    view.DrawingFileName = svg
+    view.SMProxy.UpdateVTKObjects()
+    view.SMProxy.InvokeCommand("ExportDrawing")
+    view.DrawingHiddenLines = 0
+    text = open(svg).read() if os.path.exists(svg) else ""
+    print("drawing.svg: %d bytes, %d paths" % (len(text), text.count("<path")))
+    check(text.count("<path") > 20 and '<g class="npr-hidden">' in text and
+          '<g class="npr-silhouette">' in text, "ExportDrawing writes the SVG with its groups")
     # Lines from depth only (what MPI gives): silhouettes and creases remain.
     for style in LINE_STYLES:
         name, path, img = render(style, True)

@@ -7,7 +7,7 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 SIZE = [400, 300]
-STYLES = ["Shaded", "Edges", "Toon", "Toon+Edges", "Sketch", "Inked"]
+STYLES = ["Shaded", "Edges", "Toon", "Toon+Edges", "Sketch", "Inked", "Drawing"]
 
 
 def create_scene(size=SIZE):

@@ -27,7 +27,7 @@ from .vtkRenderingNPR import vtkNPRPass
 
 __all__ = ["enable_npr", "disable_npr", "npr_pass", "SETTINGS"]
 
-STYLES = ("shaded", "edges", "toon", "toon+edges", "sketch", "inked")
+STYLES = ("shaded", "edges", "toon", "toon+edges", "sketch", "inked", "drawing")
 
 # PyVista-style names of the passes' settings, and what each sets.
 SETTINGS = {
@@ -50,6 +50,8 @@ SETTINGS = {
     "noise_space": "'surface' (the wobble stays on the surfaces when the camera moves) or 'screen'",
     "paper": "whether sketches are drawn on paper (bool)",
     "paper_color": "colour of the sketch's paper",
+    "hidden_lines": "whether the drawing shows its hidden lines, dashed (bool)",
+    "face_color": "colour of the drawing's faces",
 }
 
 # The PyVista passes that draw the scene with their own shaders.
@@ -115,6 +117,10 @@ def _apply(npr, settings):
             sketch.SetPaper(bool(value))
         elif name == "paper_color":
             sketch.SetPaperColor(*_color(value))
+        elif name == "hidden_lines":
+            npr.SetHiddenLines(bool(value))
+        elif name == "face_color":
+            npr.GetDrawingPass().SetFaceColor(*_color(value))
 
 
 def _renderer_of(target):

@@ -1,0 +1,457 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkNPRDrawingExporter.h"
+
+#include "vtkErrorCode.h"
+#include "vtkImageData.h"
+#include "vtkNPRDrawingLines.h"
+#include "vtkNPRDrawingPass.h"
+#include "vtkNPREdgePass.h"
+#include "vtkNPRPass.h"
+#include "vtkNPRStrokePainter.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <cairo-pdf.h>
+#include <cairo-ps.h>
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+double Seconds(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+cairo_status_t AppendToString(void* closure, const unsigned char* data, unsigned int length)
+{
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+// Puts each class of strokes of Cairo's SVG into a <g class="npr-..."> group. Cairo 1.16 writes
+// one <path .../> element per cairo_stroke, one a line, in painting order; the strokes were
+// painted last, class after class, so they are the last `total` <path> elements of the file.
+// Returns false (and leaves `svg` as it was) when the file has not that form: fewer <path>
+// elements, or anything but white space between two strokes.
+bool LabelClasses(std::string& svg, const vtkNPRStrokeCounts& counts)
+{
+  vtkIdType total = 0;
+  for (vtkIdType count : counts)
+  {
+    total += count;
+  }
+  if (total == 0)
+  {
+    return true;
+  }
+  std::vector<size_t> starts;
+  for (size_t at = svg.find("<path"); at != std::string::npos; at = svg.find("<path", at + 5))
+  {
+    starts.push_back(at);
+  }
+  if (static_cast<vtkIdType>(starts.size()) < total)
+  {
+    return false;
+  }
+  starts.erase(starts.begin(), starts.end() - total);
+  std::vector<size_t> ends; // just past each stroke's "/>" and its line end
+  for (size_t k = 0; k < starts.size(); ++k)
+  {
+    size_t end = svg.find("/>", starts[k]);
+    if (end == std::string::npos || (k + 1 < starts.size() && end > starts[k + 1]) ||
+      svg.find('>', starts[k]) != end + 1)
+    {
+      return false; // not an empty element
+    }
+    end += 2;
+    if (end < svg.size() && svg[end] == '\n')
+    {
+      ++end;
+    }
+    if (k + 1 < starts.size())
+    {
+      for (size_t i = end; i < starts[k + 1]; ++i)
+      {
+        if (!std::isspace(static_cast<unsigned char>(svg[i])))
+        {
+          return false;
+        }
+      }
+    }
+    ends.push_back(end);
+  }
+  std::string out;
+  out.reserve(svg.size() + 256);
+  out.append(svg, 0, starts[0]);
+  size_t stroke = 0;
+  for (int strokeClass = 0; strokeClass < NPR_STROKE_CLASSES; ++strokeClass)
+  {
+    if (counts[strokeClass] == 0)
+    {
+      continue;
+    }
+    const size_t first = stroke, last = stroke + counts[strokeClass] - 1;
+    out += "<g class=\"";
+    out += vtkNPRStrokeClassName(strokeClass);
+    out += "\">\n";
+    out.append(svg, starts[first], ends[last] - starts[first]);
+    if (out.back() != '\n')
+    {
+      out += '\n';
+    }
+    out += "</g>\n";
+    stroke = last + 1;
+  }
+  out.append(svg, ends.back(), std::string::npos);
+  svg.swap(out);
+  return true;
+}
+}
+
+struct vtkNPRDrawingExporter::Internals
+{
+  vtkNew<vtkNPRDrawingLines> Lines;
+  std::string ErrorMessage;
+  vtkNPRStrokeCounts Counts{};
+  bool Labelled = false;
+  bool Embedded = false;
+  double StrokesTime = 0.0, WriteTime = 0.0;
+};
+
+vtkStandardNewMacro(vtkNPRDrawingExporter);
+vtkCxxSetObjectMacro(vtkNPRDrawingExporter, Renderer, vtkRenderer);
+vtkCxxSetObjectMacro(vtkNPRDrawingExporter, RenderWindow, vtkRenderWindow);
+vtkCxxSetObjectMacro(vtkNPRDrawingExporter, DrawingPass, vtkNPRDrawingPass);
+vtkCxxSetObjectMacro(vtkNPRDrawingExporter, EdgePass, vtkNPREdgePass);
+
+vtkNPRDrawingExporter::vtkNPRDrawingExporter()
+  : Internal(new Internals)
+{
+}
+
+vtkNPRDrawingExporter::~vtkNPRDrawingExporter()
+{
+  this->SetRenderer(nullptr);
+  this->SetRenderWindow(nullptr);
+  this->SetDrawingPass(nullptr);
+  this->SetEdgePass(nullptr);
+  this->SetFileName(nullptr);
+}
+
+const char* vtkNPRDrawingExporter::GetSupportedExtensions()
+{
+  return ".svg, .pdf, .ps, .eps";
+}
+
+int vtkNPRDrawingExporter::GetFormatFromFileName(const char* fileName)
+{
+  if (!fileName)
+  {
+    return -1;
+  }
+  std::string extension = std::filesystem::path(fileName).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".svg")
+  {
+    return SVG;
+  }
+  if (extension == ".pdf")
+  {
+    return PDF;
+  }
+  if (extension == ".ps")
+  {
+    return PS;
+  }
+  if (extension == ".eps")
+  {
+    return EPS;
+  }
+  return -1;
+}
+
+const char* vtkNPRDrawingExporter::GetErrorMessage() const
+{
+  return this->Internal->ErrorMessage.c_str();
+}
+
+vtkNPRDrawingLines* vtkNPRDrawingExporter::GetDrawingLines()
+{
+  return this->Internal->Lines;
+}
+
+vtkIdType vtkNPRDrawingExporter::GetNumberOfStrokes(int strokeClass) const
+{
+  return strokeClass >= 0 && strokeClass < NPR_STROKE_CLASSES ? this->Internal->Counts[strokeClass]
+                                                              : 0;
+}
+
+vtkIdType vtkNPRDrawingExporter::GetNumberOfStrokes() const
+{
+  vtkIdType total = 0;
+  for (vtkIdType count : this->Internal->Counts)
+  {
+    total += count;
+  }
+  return total;
+}
+
+bool vtkNPRDrawingExporter::GetClassesLabelled() const
+{
+  return this->Internal->Labelled;
+}
+
+bool vtkNPRDrawingExporter::GetImageEmbedded() const
+{
+  return this->Internal->Embedded;
+}
+
+double vtkNPRDrawingExporter::GetStrokesTime() const
+{
+  return this->Internal->StrokesTime;
+}
+
+double vtkNPRDrawingExporter::GetWriteTime() const
+{
+  return this->Internal->WriteTime;
+}
+
+bool vtkNPRDrawingExporter::Fail(unsigned long code, const std::string& message)
+{
+  this->ErrorCode = code;
+  this->Internal->ErrorMessage = message;
+  vtkErrorMacro(<< message);
+  return false;
+}
+
+bool vtkNPRDrawingExporter::Write()
+{
+  Internals& internal = *this->Internal;
+  this->ErrorCode = vtkErrorCode::NoError;
+  internal.ErrorMessage.clear();
+  internal.Counts.fill(0);
+  internal.Labelled = internal.Embedded = false;
+  internal.StrokesTime = internal.WriteTime = 0.0;
+
+  // What to write, and where: checked before any work.
+  if (!this->FileName || !*this->FileName)
+  {
+    return this->Fail(vtkErrorCode::NoFileNameError, "no file name");
+  }
+  const std::string path = this->FileName;
+  const int format = GetFormatFromFileName(this->FileName);
+  if (format < 0)
+  {
+    return this->Fail(vtkErrorCode::FileFormatError,
+      path + ": unsupported extension (supported: " + GetSupportedExtensions() + ")");
+  }
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+  {
+    return this->Fail(vtkErrorCode::CannotOpenFileError, path + ": is a directory");
+  }
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
+  {
+    return this->Fail(
+      vtkErrorCode::CannotOpenFileError, path + ": no such directory: " + parent.string());
+  }
+  vtkRenderer* renderer = this->Renderer;
+  if (!renderer && this->RenderWindow)
+  {
+    renderer = this->RenderWindow->GetRenderers()->GetFirstRenderer();
+  }
+  if (!renderer)
+  {
+    return this->Fail(vtkErrorCode::UnknownError, "no renderer (SetRenderer or SetRenderWindow)");
+  }
+  vtkRenderWindow* window = renderer->GetRenderWindow();
+  int width = this->Size[0], height = this->Size[1];
+  if (width <= 0 || height <= 0)
+  {
+    const int* size = window ? renderer->GetSize() : nullptr;
+    width = size ? size[0] : 0;
+    height = size ? size[1] : 0;
+  }
+  if (width <= 0 || height <= 0)
+  {
+    return this->Fail(
+      vtkErrorCode::UnknownError, "no size: set Size or put the renderer in a window with a size");
+  }
+
+  // The style: explicit passes, else the renderer's vtkNPRPass, else the defaults.
+  vtkNPRPass* npr = vtkNPRPass::SafeDownCast(renderer->GetPass());
+  vtkNPRDrawingPass* drawing = this->DrawingPass;
+  vtkNPREdgePass* edges = this->EdgePass;
+  if (npr)
+  {
+    drawing = drawing ? drawing : npr->GetDrawingPass();
+    edges = edges ? edges : npr->GetEdgePass();
+  }
+  const bool drawingStyle =
+    npr && std::strcmp(vtkNPRPass::GetStyleName(npr->GetStyle()), "drawing") == 0;
+  const vtkNPRStrokeStyle style = vtkNPRMakeStrokeStyle(drawing, edges, renderer);
+
+  // The raster under the lines: the renderer's part of the window, rendered again.
+  vtkSmartPointer<vtkImageData> raster;
+  if (window && (this->EmbedImage == 1 || (this->EmbedImage == -1 && !drawingStyle)))
+  {
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->SetViewport(renderer->GetViewport());
+    grab->SetInputBufferTypeToRGB();
+    grab->ReadFrontBufferOff();
+    grab->ShouldRerenderOn();
+    grab->Update();
+    raster = grab->GetOutput();
+  }
+
+  // The strokes.
+  Clock::time_point start = Clock::now();
+  vtkNPRDrawingLines* lines = internal.Lines;
+  lines->SetRenderer(renderer);
+  lines->SetSize(width, height);
+  lines->SetSilhouettes(style.Silhouettes);
+  lines->SetBoundaries(style.Silhouettes);
+  lines->SetCreases(style.Creases);
+  lines->SetNonManifoldEdges(style.Creases);
+  if (edges)
+  {
+    lines->SetCreaseAngle(edges->GetCreaseAngle());
+  }
+  lines->SetHiddenLines(style.HiddenLines);
+  if (!lines->Update())
+  {
+    return this->Fail(vtkErrorCode::UnknownError, "cannot compute the strokes");
+  }
+  internal.StrokesTime = Seconds(start);
+
+  // Painting, into memory: the file is written only once everything succeeded.
+  start = Clock::now();
+  std::string bytes;
+  cairo_surface_t* surface = nullptr;
+  switch (format)
+  {
+    case SVG:
+      surface = cairo_svg_surface_create_for_stream(AppendToString, &bytes, width, height);
+      cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PT);
+      break;
+    case PDF:
+      surface = cairo_pdf_surface_create_for_stream(AppendToString, &bytes, width, height);
+      cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "vtkNPR");
+      break;
+    default:
+      surface = cairo_ps_surface_create_for_stream(AppendToString, &bytes, width, height);
+      cairo_ps_surface_set_eps(surface, format == EPS ? 1 : 0);
+      break;
+  }
+  cairo_t* cr = cairo_create(surface);
+  double background[3];
+  renderer->GetBackground(background);
+  cairo_set_source_rgb(cr, background[0], background[1], background[2]);
+  cairo_paint(cr);
+  if (raster)
+  {
+    const int* dimensions = raster->GetDimensions();
+    const int rw = dimensions[0], rh = dimensions[1];
+    cairo_surface_t* image = cairo_image_surface_create(CAIRO_FORMAT_RGB24, rw, rh);
+    unsigned char* data = cairo_image_surface_get_data(image);
+    const int stride = cairo_image_surface_get_stride(image);
+    const auto* rgb = static_cast<const unsigned char*>(raster->GetScalarPointer());
+    const int components = raster->GetNumberOfScalarComponents();
+    for (int j = 0; j < rh; ++j) // VTK's row 0 is the bottom, Cairo's the top
+    {
+      const unsigned char* in = rgb + static_cast<size_t>(rh - 1 - j) * rw * components;
+      auto* out = reinterpret_cast<std::uint32_t*>(data + static_cast<size_t>(j) * stride);
+      for (int i = 0; i < rw; ++i, in += components)
+      {
+        out[i] = 0xff000000u | (std::uint32_t(in[0]) << 16) | (std::uint32_t(in[1]) << 8) | in[2];
+      }
+    }
+    cairo_surface_mark_dirty(image);
+    cairo_save(cr);
+    cairo_scale(cr, static_cast<double>(width) / rw, static_cast<double>(height) / rh);
+    cairo_set_source_surface(cr, image, 0, 0);
+    cairo_paint(cr);
+    cairo_restore(cr);
+    cairo_surface_destroy(image);
+    internal.Embedded = true;
+  }
+  std::string error;
+  bool painted = vtkNPRPaintStrokes(cr, lines->GetStrokes(), style, height, internal.Counts, error);
+  cairo_destroy(cr);
+  cairo_surface_finish(surface);
+  const cairo_status_t status = cairo_surface_status(surface);
+  cairo_surface_destroy(surface);
+  if (!painted)
+  {
+    return this->Fail(vtkErrorCode::UnknownError, path + ": " + error);
+  }
+  if (status != CAIRO_STATUS_SUCCESS)
+  {
+    return this->Fail(
+      vtkErrorCode::UnknownError, path + ": Cairo: " + cairo_status_to_string(status));
+  }
+  if (format == SVG)
+  {
+    internal.Labelled = LabelClasses(bytes, internal.Counts);
+    if (!internal.Labelled)
+    {
+      vtkWarningMacro(<< path << ": Cairo's SVG has not the expected form (Cairo "
+                      << cairo_version_string()
+                      << "): the strokes are written without their class groups");
+    }
+  }
+
+  std::ofstream file(path, std::ios::binary | std::ios::trunc);
+  if (!file)
+  {
+    return this->Fail(vtkErrorCode::CannotOpenFileError,
+      path + ": cannot open for writing: " + std::strerror(errno));
+  }
+  file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  file.close();
+  if (!file)
+  {
+    std::remove(path.c_str()); // no partial file
+    return this->Fail(vtkErrorCode::OutOfDiskSpaceError, path + ": cannot write the file");
+  }
+  internal.WriteTime = Seconds(start);
+  return true;
+}
+
+void vtkNPRDrawingExporter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Renderer: " << this->Renderer << "\n";
+  os << indent << "RenderWindow: " << this->RenderWindow << "\n";
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
+  os << indent << "DrawingPass: " << this->DrawingPass << "\n";
+  os << indent << "EdgePass: " << this->EdgePass << "\n";
+  os << indent << "EmbedImage: " << this->EmbedImage << "\n";
+  os << indent << "ErrorCode: " << this->ErrorCode << "\n";
+  os << indent << "ErrorMessage: " << this->Internal->ErrorMessage << "\n";
+}

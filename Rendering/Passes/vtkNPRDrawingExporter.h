@@ -1,0 +1,182 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkNPRDrawingExporter
+ * @brief   Writes a renderer's lines as a vector drawing: SVG, PDF, PostScript or EPS.
+ *
+ * Write() computes the strokes of the renderer's scene with its own vtkNPRDrawingLines (visible
+ * lines, and hidden ones when the style asks for them) and paints them with Cairo, the same
+ * painting as the drawing style's (vtkNPRStrokePainter): one path a stroke, round caps and joins,
+ * hidden strokes dashed under the visible ones.
+ *
+ * - Format: from the file name's extension, `.svg`, `.pdf`, `.ps` or `.eps` (any case). Any
+ *   other extension is an error naming these (GetSupportedExtensions()).
+ * - Page: the image size (Size, or the renderer's size in its window), 1 image pixel = 1 point
+ *   (1/72 inch; the 72 DPI at which VTK's line widths are given), so line widths are in points.
+ *   The SVG's width and height are in `pt` with a viewBox of the image in pixels.
+ * - Style: the renderer's vtkNPRPass (its drawing pass's HiddenLines, HiddenLineColor,
+ *   HiddenLineWidth, DashLength, GapLength; its edge pass's line types, colours, width and crease
+ *   angle), or the passes given with SetDrawingPass() and SetEdgePass(), or the defaults.
+ * - Background: a rectangle of the renderer's background colour. When the renderer's style is
+ *   not "drawing" (or it has no vtkNPRPass), the window's image (rendered again) is embedded as a
+ *   raster under the lines (EmbedImage: -1, the default, decides so; 0 never; 1 always).
+ * - Order and structure: background, raster, hidden strokes, then the visible silhouettes,
+ *   boundaries, creases and non-manifold edges. In an SVG file each of these classes of strokes
+ *   is a `<g class="npr-hidden">`, `npr-silhouette`, `npr-boundary`, `npr-crease`,
+ *   `npr-non-manifold` group of `<path>` elements, one per stroke (hidden ones with a
+ *   `stroke-dasharray`), so a style sheet or an editor can restyle a class. Cairo writes no
+ *   classes itself: the groups are added to its output afterwards (if its output has not the
+ *   expected form, the file is written without them and a warning says so). PDF and PostScript
+ *   files have the same painting order, without groups.
+ *
+ * Errors (Write() returns false, GetErrorCode() is a vtkErrorCode and GetErrorMessage() says
+ * why): no renderer, no file name, an unknown extension, no size, a path that cannot be written
+ * (a missing folder, a folder); no file is left behind. An empty scene gives a valid empty
+ * drawing (the background, and the raster if any).
+ *
+ * @sa vtkNPRDrawingLines vtkNPRDrawingPass vtkNPRPass
+ */
+#ifndef vtkNPRDrawingExporter_h
+#define vtkNPRDrawingExporter_h
+
+#include "vtkObject.h"
+#include "vtkRenderingNPRModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+#include <string> // for the error message
+
+class vtkNPRDrawingLines;
+class vtkNPRDrawingPass;
+class vtkNPREdgePass;
+class vtkRenderWindow;
+class vtkRenderer;
+
+class VTKRENDERINGNPR_EXPORT vtkNPRDrawingExporter : public vtkObject
+{
+public:
+  static vtkNPRDrawingExporter* New();
+  vtkTypeMacro(vtkNPRDrawingExporter, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Formats
+  {
+    SVG = 0,
+    PDF = 1,
+    PS = 2,
+    EPS = 3
+  };
+
+  ///@{
+  /**
+   * The renderer to draw; without one, the first renderer of RenderWindow.
+   */
+  virtual void SetRenderer(vtkRenderer* renderer);
+  vtkGetObjectMacro(Renderer, vtkRenderer);
+  virtual void SetRenderWindow(vtkRenderWindow* window);
+  vtkGetObjectMacro(RenderWindow, vtkRenderWindow);
+  ///@}
+
+  ///@{
+  /**
+   * The file to write; its extension gives the format.
+   */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * The image size in pixels, which is the page size in points; 0, 0 (the default): the
+   * renderer's size in its window.
+   */
+  vtkSetVector2Macro(Size, int);
+  vtkGetVector2Macro(Size, int);
+  ///@}
+
+  ///@{
+  /**
+   * The passes whose settings style the lines; without them, those of the renderer's
+   * vtkNPRPass, else the defaults.
+   */
+  virtual void SetDrawingPass(vtkNPRDrawingPass* pass);
+  vtkGetObjectMacro(DrawingPass, vtkNPRDrawingPass);
+  virtual void SetEdgePass(vtkNPREdgePass* pass);
+  vtkGetObjectMacro(EdgePass, vtkNPREdgePass);
+  ///@}
+
+  ///@{
+  /**
+   * Embed the window's image under the lines: -1 (the default) when the renderer's style is
+   * not "drawing", 0 never, 1 always.
+   */
+  vtkSetClampMacro(EmbedImage, int, -1, 1);
+  vtkGetMacro(EmbedImage, int);
+  ///@}
+
+  /**
+   * Writes the file. False, with GetErrorCode() and GetErrorMessage(), on an error.
+   */
+  bool Write();
+
+  /**
+   * The format of a file name from its extension (Formats), -1 for an unsupported one.
+   */
+  static int GetFormatFromFileName(const char* fileName);
+
+  /**
+   * ".svg, .pdf, .ps, .eps".
+   */
+  static const char* GetSupportedExtensions();
+
+  ///@{
+  /**
+   * The outcome of the last Write(): a vtkErrorCode value (0: none) and the message.
+   */
+  vtkGetMacro(ErrorCode, unsigned long);
+  const char* GetErrorMessage() const;
+  ///@}
+
+  /**
+   * The vtkNPRDrawingLines that computes the strokes (its strokes of the last Write(): the
+   * renderer, size, line types, crease angle and hidden lines are set by Write()).
+   */
+  vtkNPRDrawingLines* GetDrawingLines();
+
+  ///@{
+  /**
+   * What the last Write() painted: the strokes of a class (0 hidden, 1 silhouette, 2 boundary,
+   * 3 crease, 4 non-manifold) and in all; whether the SVG's groups were labelled; whether a
+   * raster was embedded; the seconds computing the strokes and painting and writing the file.
+   */
+  vtkIdType GetNumberOfStrokes(int strokeClass) const;
+  vtkIdType GetNumberOfStrokes() const;
+  bool GetClassesLabelled() const;
+  bool GetImageEmbedded() const;
+  double GetStrokesTime() const;
+  double GetWriteTime() const;
+  ///@}
+
+protected:
+  vtkNPRDrawingExporter();
+  ~vtkNPRDrawingExporter() override;
+
+  vtkRenderer* Renderer = nullptr;
+  vtkRenderWindow* RenderWindow = nullptr;
+  char* FileName = nullptr;
+  int Size[2] = { 0, 0 };
+  vtkNPRDrawingPass* DrawingPass = nullptr;
+  vtkNPREdgePass* EdgePass = nullptr;
+  int EmbedImage = -1;
+  unsigned long ErrorCode = 0;
+
+private:
+  vtkNPRDrawingExporter(const vtkNPRDrawingExporter&) = delete;
+  void operator=(const vtkNPRDrawingExporter&) = delete;
+
+  bool Fail(unsigned long code, const std::string& message);
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

@@ -1,0 +1,201 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkNPRDrawingPass.h"
+
+#include "vtkNPRDrawingFS.h"
+#include "vtkNPRDrawingLines.h"
+#include "vtkNPREdgePass.h"
+#include "vtkNPRFrameSignature.h"
+#include "vtkNPRGBufferPass.h"
+#include "vtkNPROpenGL.h"
+#include "vtkNPRPassUtilities.h"
+#include "vtkNPRQuadProgram.h"
+#include "vtkNPRStrokePainter.h"
+#include "vtkNPRWindowDepth.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkPolyData.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+struct vtkNPRDrawingPass::Internals
+{
+  vtkNew<vtkNPRDrawingLines> Lines;
+  vtkTextureObject* StrokeTexture = nullptr;
+  vtkNPRQuadProgram Composite;
+  std::string CompositeSource;
+  // What the strokes in the texture were made from.
+  bool StrokesValid = false;
+  vtkNPRFrameSignature Signature;
+  vtkIdType StrokeUpdates = 0;
+  std::vector<unsigned char> Pixels;
+};
+
+vtkStandardNewMacro(vtkNPRDrawingPass);
+vtkCxxSetObjectMacro(vtkNPRDrawingPass, EdgePass, vtkNPREdgePass);
+
+vtkNPRDrawingPass::vtkNPRDrawingPass()
+  : Internal(new Internals)
+{
+}
+
+vtkNPRDrawingPass::~vtkNPRDrawingPass()
+{
+  if (this->Internal->StrokeTexture)
+  {
+    this->Internal->StrokeTexture->Delete();
+  }
+  this->SetEdgePass(nullptr);
+}
+
+vtkNPRDrawingLines* vtkNPRDrawingPass::GetDrawingLines()
+{
+  return this->Internal->Lines;
+}
+
+vtkPolyData* vtkNPRDrawingPass::GetStrokes()
+{
+  return this->Internal->Lines->GetStrokes();
+}
+
+vtkIdType vtkNPRDrawingPass::GetNumberOfStrokeUpdates() const
+{
+  return this->Internal->StrokeUpdates;
+}
+
+void vtkNPRDrawingPass::Render(const vtkRenderState* state)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  vtkNPRGBufferPass* gbuffer = this->EdgePass ? this->EdgePass->GetGBufferPass() : nullptr;
+  if (!this->EdgePass)
+  {
+    vtkErrorMacro("no edge pass: set one (its G-buffer and line settings are used)");
+    return;
+  }
+  if (!gbuffer || gbuffer->GetLastRenderWasSelection() || !gbuffer->GetHasContent())
+  {
+    return; // a picking render, or nothing was drawn
+  }
+  vtkRenderer* renderer = state->GetRenderer();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  vtkOpenGLState* glState = window->GetState();
+  Internals& internal = *this->Internal;
+  vtkTextureObject* depth = gbuffer->GetDepthTexture();
+  const int width = depth->GetWidth();
+  const int height = depth->GetHeight();
+
+  // ---- Step 1: the strokes, computed and rasterised again only when the frame changed ----
+  const vtkMTimeType settingsTime = std::max(this->GetMTime(), this->EdgePass->GetMTime());
+  vtkNPRFrameSignature signature =
+    vtkNPRTakeFrameSignature(state, width, height, false, false, settingsTime);
+  if (!internal.StrokesValid || !(signature == internal.Signature) || !internal.StrokeTexture)
+  {
+    vtkNPRDrawingLines* lines = internal.Lines;
+    lines->SetRenderer(renderer);
+    lines->SetSize(width, height);
+    lines->SetSilhouettes(this->EdgePass->GetSilhouettes());
+    lines->SetBoundaries(this->EdgePass->GetSilhouettes());
+    lines->SetCreases(this->EdgePass->GetCreases());
+    lines->SetNonManifoldEdges(this->EdgePass->GetCreases());
+    lines->SetCreaseAngle(this->EdgePass->GetCreaseAngle());
+    lines->SetHiddenLines(this->HiddenLines);
+    if (!lines->Update())
+    {
+      return;
+    }
+    const vtkNPRStrokeStyle style = vtkNPRMakeStrokeStyle(this, this->EdgePass, renderer);
+    std::string error;
+    if (!vtkNPRRasterizeStrokes(lines->GetStrokes(), style, width, height, internal.Pixels, error))
+    {
+      vtkErrorMacro("the strokes could not be rasterised: " << error);
+      return;
+    }
+    if (!internal.StrokeTexture)
+    {
+      internal.StrokeTexture =
+        vtkNPRNewTexture(window, vtkTextureObject::Nearest, vtkTextureObject::ClampToEdge);
+    }
+    internal.StrokeTexture->Create2DFromRaw(
+      width, height, 4, VTK_UNSIGNED_CHAR, internal.Pixels.data());
+    internal.Signature = signature;
+    internal.StrokesValid = true;
+    ++internal.StrokeUpdates;
+  }
+
+  // ---- Step 2: faces, strokes and depth into the current framebuffer ----
+  const double reach = std::ceil(0.5 * this->EdgePass->GetEffectiveLineWidth(renderer)) + 1.0;
+  std::ostringstream defines;
+  defines << "#define NPR_RADIUS " << static_cast<int>(reach) << "\n#define NPR_REMAPPED_DEPTH "
+          << (gbuffer->GetDepthRemapped() ? 1 : 0) << "\n";
+  if (internal.CompositeSource.empty())
+  {
+    internal.CompositeSource = vtkNPRDrawingFS;
+    vtkShaderProgram::Substitute(internal.CompositeSource, "//NPR::WindowDepth", vtkNPRWindowDepth);
+  }
+  vtkShaderProgram* program =
+    internal.Composite.Ready(window, internal.CompositeSource, defines.str());
+  if (!program)
+  {
+    vtkErrorMacro("the drawing composite shader did not compile");
+    return;
+  }
+  internal.StrokeTexture->Activate();
+  depth->Activate();
+  program->SetUniformi("strokeTexture", internal.StrokeTexture->GetTextureUnit());
+  program->SetUniformi("depthTexture", depth->GetTextureUnit());
+  program->SetUniform3f("faceColor", this->FaceColor);
+  int origin[2] = { 0, 0 };
+  vtkNPRViewportOrigin(state, origin);
+  program->SetUniform2i("viewportOrigin", origin);
+  if (gbuffer->GetDepthRemapped())
+  {
+    program->SetUniform2f("nprDepthRemap", gbuffer->GetDepthRemap());
+  }
+  vtkNPRCompositeState compositeState(glState);
+  compositeState.Apply(origin, width, height);
+  glState->vtkglDisable(GL_SCISSOR_TEST);
+  internal.Composite.Render();
+  internal.StrokeTexture->Deactivate();
+  depth->Deactivate();
+  this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+  vtkOpenGLCheckErrorMacro("failed after vtkNPRDrawingPass::Render");
+}
+
+void vtkNPRDrawingPass::ReleaseGraphicsResources(vtkWindow* window)
+{
+  Internals& internal = *this->Internal;
+  internal.Composite.Release(window);
+  if (internal.StrokeTexture)
+  {
+    internal.StrokeTexture->ReleaseGraphicsResources(window);
+    internal.StrokeTexture->Delete();
+    internal.StrokeTexture = nullptr;
+  }
+  internal.StrokesValid = false;
+}
+
+void vtkNPRDrawingPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "EdgePass: " << this->EdgePass << "\n";
+  os << indent << "HiddenLines: " << this->HiddenLines << "\n";
+  os << indent << "FaceColor: " << this->FaceColor[0] << " " << this->FaceColor[1] << " "
+     << this->FaceColor[2] << "\n";
+  os << indent << "HiddenLineColor: " << this->HiddenLineColor[0] << " " << this->HiddenLineColor[1]
+     << " " << this->HiddenLineColor[2] << "\n";
+  os << indent << "HiddenLineWidth: " << this->HiddenLineWidth << "\n";
+  os << indent << "DashLength: " << this->DashLength << " GapLength: " << this->GapLength << "\n";
+  os << indent << "NumberOfStrokeUpdates: " << this->Internal->StrokeUpdates << "\n";
+}

@@ -1,0 +1,85 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
+"""npr-render -o with vector drawings: .svg, .pdf, .ps and .eps write the lines (over the image,
+in the edges style), .png stays an image, and an unknown extension, a missing folder or a folder
+as the file each exit non-zero with one line `npr-render: error: ...` and leave no file."""
+import argparse
+import os
+import subprocess
+import sys
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--npr-render", required=True)
+parser.add_argument("--data", required=True)
+parser.add_argument("--out", required=True)
+args = parser.parse_args()
+os.makedirs(args.out, exist_ok=True)
+part = os.path.join(args.data, "cad_part.vtp")
+failures = []
+passes = []
+
+
+def run(*argv):
+    result = subprocess.run([args.npr_render, *argv], capture_output=True, text=True, timeout=300)
+    return result.returncode, result.stdout, result.stderr
+
+
+def check(condition, message):
+    print(("ok: " if condition else "FAILED: ") + message)
+    (passes if condition else failures).append(message)
+
+
+def out(name):
+    return os.path.join(args.out, name)
+
+
+common = ["--size", "320x240", "--azimuth", "30", "--elevation", "30"]
+for name in ("edges.svg", "edges.pdf", "edges.ps", "edges.eps", "EDGES.SVG"):
+    path = out(name)
+    if os.path.exists(path):
+        os.remove(path)
+    rc, _, err = run(part, "--style", "edges", *common, "-o", path)
+    check(rc == 0 and os.path.isfile(path), "-o %s writes it (%s)" % (name, err.strip()))
+    if not os.path.isfile(path):
+        continue
+    data = open(path, "rb").read()
+    if name.lower().endswith(".svg"):
+        text = data.decode()
+        check('width="320pt" height="240pt"' in text and "<image" in text and
+              '<g class="npr-silhouette">' in text and text.count("<path") > 10,
+              "%s: the page, the image under the lines, the groups, %d paths" % (name, text.count("<path")))
+    elif name.endswith(".pdf"):
+        check(data.startswith(b"%PDF-") and b"/MediaBox [ 0 0 320 240 ]" in data, "%s: a 320x240 pt PDF" % name)
+    else:
+        check(data.startswith(b"%!PS-Adobe-3.0") and (b"EPSF" in data) == name.endswith(".eps"),
+              "%s: PostScript" % name)
+
+# The drawing style with hidden lines (the target command), where this build has the style.
+rc, _, err = run(part, "--style", "drawing", "--hidden-lines", *common, "-o", out("part.svg"))
+if rc != 0 and "unknown style 'drawing'" in err:
+    print("skipped: --style drawing is not in this build")
+else:
+    text = open(out("part.svg")).read() if os.path.isfile(out("part.svg")) else ""
+    check(rc == 0 and '<g class="npr-hidden">' in text and "stroke-dasharray" in text and "<image" not in text,
+          "--style drawing --hidden-lines -o part.svg: dashed hidden strokes, no image (%s)" % err.strip())
+
+# .png stays an image.
+rc, _, err = run(part, *common, "-o", out("image.png"))
+check(rc == 0 and open(out("image.png"), "rb").read(8) == b"\x89PNG\r\n\x1a\n", "-o image.png writes a PNG")
+
+# Errors: one line each, non-zero, no file.
+os.makedirs(out("folder.svg"), exist_ok=True)
+for target, expected in ((out("drawing.jpg"), "unknown extension (supported: .png, .svg, .pdf, .ps, .eps"),
+                         (out("drawing"), "unknown extension"),
+                         (out(os.path.join("no", "such", "dir", "x.svg")), "no such directory"),
+                         (out("folder.svg"), "is a directory")):
+    rc, _, err = run(part, *common, "-o", target)
+    lines = err.strip().splitlines()
+    check(rc != 0 and len(lines) == 1 and lines[0].startswith("npr-render: error: ") and expected in lines[0],
+          "-o %s: exit %d, one error line with '%s' (%r)" % (os.path.basename(target), rc, expected, err))
+    check(not os.path.isfile(target), "-o %s: no file left" % os.path.basename(target))
+rc, _, err = run(part, "--orbit", "3", "-o", out("orbit.svg"))
+check(rc != 0 and "--orbit needs" in err, "--orbit with .svg is refused (%s)" % err.strip())
+
+print("%d passed, %d failed" % (len(passes), len(failures)))
+sys.exit(1 if failures else 0)
