@@ -279,7 +279,8 @@ int Empty()
       NPR_CHECK(text.find("<svg") != std::string::npos &&
           text.find("</svg>") != std::string::npos && Count(text, "<path") == 0 &&
           text.find("width=\"320pt\" height=\"240pt\"") != std::string::npos &&
-          text.find("fill:rgb(20%,30%,40%)") != std::string::npos,
+          (text.find("fill:rgb(20%,30%,40%)") != std::string::npos ||       // Cairo 1.16
+            text.find("fill=\"rgb(20%, 30%, 40%)\"") != std::string::npos), // 1.18
         "empty SVG:\n"
           << text.substr(0, 600));
     }
