@@ -15,6 +15,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -22,7 +23,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace
@@ -31,7 +32,7 @@ namespace
 // its points are collinear or coincident up to rounding.
 constexpr double DegenerateNormal = 1e-12;
 
-// Exact coordinates as a hash key (-0 and +0 are the same coordinate).
+// Exact coordinates as a sort key (-0 and +0 are the same coordinate).
 struct CoordinateKey
 {
   std::uint64_t Bits[3];
@@ -40,18 +41,9 @@ struct CoordinateKey
     return this->Bits[0] == other.Bits[0] && this->Bits[1] == other.Bits[1] &&
       this->Bits[2] == other.Bits[2];
   }
-};
-
-struct CoordinateHash
-{
-  std::size_t operator()(const CoordinateKey& key) const
+  bool operator<(const CoordinateKey& other) const
   {
-    std::uint64_t h = 0x9e3779b97f4a7c15ull;
-    for (std::uint64_t bits : key.Bits)
-    {
-      h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-    }
-    return static_cast<std::size_t>(h ^ (h >> 29));
+    return std::lexicographical_compare(this->Bits, this->Bits + 3, other.Bits, other.Bits + 3);
   }
 };
 
@@ -65,18 +57,6 @@ CoordinateKey MakeCoordinateKey(const double x[3])
   }
   return key;
 }
-
-// Mixes the bits of an edge's two 32-bit point ids, so that neighbouring edges spread out.
-struct EdgeHash
-{
-  std::size_t operator()(std::uint64_t key) const
-  {
-    key ^= key >> 33;
-    key *= 0xff51afd7ed558ccdull;
-    key ^= key >> 33;
-    return static_cast<std::size_t>(key);
-  }
-};
 
 double Dot(const double a[3], const double b[3])
 {
@@ -160,30 +140,49 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
     return;
   }
 
-  // Each point's representative: the first point at the same coordinates.
+  // Each point's representative: the first point at the same coordinates. Points sorted by
+  // their exact coordinates (then id) put equal ones side by side, the first of them first.
   std::vector<vtkIdType> representative(numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    representative[i] = i;
+  }
   if (merge)
   {
-    std::unordered_map<CoordinateKey, vtkIdType, CoordinateHash> first;
-    first.reserve(numberOfPoints);
+    std::vector<CoordinateKey> keys(numberOfPoints);
+    std::vector<vtkIdType> order;
+    order.reserve(numberOfPoints);
     for (vtkIdType i = 0; i < numberOfPoints; ++i)
     {
-      representative[i] = finite[i]
-        ? first.emplace(MakeCoordinateKey(&this->Coordinates[3 * i]), i).first->second
-        : i;
+      keys[i] = MakeCoordinateKey(&this->Coordinates[3 * i]);
+      if (finite[i])
+      {
+        order.push_back(i);
+      }
     }
-  }
-  else
-  {
-    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    vtkSMPTools::Sort(order.begin(), order.end(),
+      [&keys](vtkIdType a, vtkIdType b)
+      { return keys[a] < keys[b] || (keys[a] == keys[b] && a < b); });
+    for (size_t k = 1; k < order.size(); ++k)
     {
-      representative[i] = i;
+      if (keys[order[k]] == keys[order[k - 1]])
+      {
+        representative[order[k]] = representative[order[k - 1]];
+      }
     }
   }
 
-  std::unordered_map<std::uint64_t, vtkIdType, EdgeHash> edgeIndex;
-  edgeIndex.reserve(static_cast<size_t>(
+  // The faces' edges, found in pairs by sorting them by their two point ids.
+  struct HalfEdge
+  {
+    std::uint64_t Key; // the smaller point id, then the larger
+    std::uint64_t Use; // the order the faces use the edges in (face, then edge), x2 + forward
+  };
+  std::vector<HalfEdge> halfEdges;
+  halfEdges.reserve(static_cast<size_t>(
     this->Polys->GetNumberOfConnectivityIds() + this->Strips->GetNumberOfConnectivityIds()));
+  std::vector<vtkIdType> faceOfUse;
+  faceOfUse.reserve(halfEdges.capacity());
   const double* coordinates = this->Coordinates.data();
 
   // Adds one face (point ids in its winding order) to the table.
@@ -253,19 +252,8 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
       }
       const std::uint64_t key =
         (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
-      const auto inserted = edgeIndex.emplace(key, static_cast<vtkIdType>(this->Edges.size()));
-      if (inserted.second)
-      {
-        this->Edges.push_back(Edge{ a, b, { face, -1 }, 1, forward, false, 0.0 });
-        continue;
-      }
-      Edge& edge = this->Edges[inserted.first->second];
-      if (edge.Count == 1)
-      {
-        edge.Faces[1] = face;
-        edge.SameDirection = forward == edge.FirstForward;
-      }
-      ++edge.Count;
+      halfEdges.push_back({ key, 2 * static_cast<std::uint64_t>(faceOfUse.size()) + forward });
+      faceOfUse.push_back(face);
     }
   };
 
@@ -289,6 +277,43 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
       const vtkIdType triangle[3] = { ids[k + (k & 1)], ids[k + 1 - (k & 1)], ids[k + 2] };
       addFace(3, triangle);
     }
+  }
+
+  // Each run of equal keys is one edge, its uses in the faces' order; the edges then in the order
+  // of their first use.
+  vtkSMPTools::Sort(halfEdges.begin(), halfEdges.end(),
+    [](const HalfEdge& x, const HalfEdge& y)
+    { return x.Key < y.Key || (x.Key == y.Key && x.Use < y.Use); });
+  std::vector<std::pair<std::uint64_t, size_t>> firstUses; // first use, first half-edge
+  for (size_t first = 0; first < halfEdges.size();)
+  {
+    size_t last = first + 1;
+    while (last < halfEdges.size() && halfEdges[last].Key == halfEdges[first].Key)
+    {
+      ++last;
+    }
+    firstUses.emplace_back(halfEdges[first].Use, first);
+    first = last;
+  }
+  vtkSMPTools::Sort(firstUses.begin(), firstUses.end());
+  this->Edges.reserve(firstUses.size());
+  for (const auto& use : firstUses)
+  {
+    const HalfEdge* run = &halfEdges[use.second];
+    const HalfEdge* end = halfEdges.data() + halfEdges.size();
+    const std::uint64_t key = run->Key;
+    Edge edge{ static_cast<vtkIdType>(key >> 32), static_cast<vtkIdType>(key & 0xffffffffull),
+      { faceOfUse[run->Use / 2], -1 }, 0, (run->Use & 1) != 0, false, 0.0 };
+    for (const HalfEdge* h = run; h != end && h->Key == key; ++h)
+    {
+      if (edge.Count == 1)
+      {
+        edge.Faces[1] = faceOfUse[h->Use / 2];
+        edge.SameDirection = ((h->Use & 1) != 0) == edge.FirstForward;
+      }
+      ++edge.Count;
+    }
+    this->Edges.push_back(edge);
   }
 
   // Dihedral angles: the second normal flipped where the two faces' windings disagree.

@@ -30,8 +30,9 @@
  * exact under any actor matrix. The angle between normals is not preserved by non-uniform
  * scaling or shear: creases are measured in the input's coordinates, not in the world's.
  *
- * Cost: the edge-adjacency table (each edge's faces, found with a hash of its two point ids in
- * one linear pass) and the faces' unit normals (Newell's method, in double, relative to the
+ * Cost: the edge-adjacency table (each edge's faces, found by sorting the faces' edges by their
+ * two point ids, in parallel with vtkSMPTools::Sort; coincident points likewise by their
+ * coordinates) and the faces' unit normals (Newell's method, in double, relative to the
  * face's first point) are built once per mesh and reused while the input, its points and its
  * cells are unchanged (their modification times and identities). Changing the viewpoint, the
  * switches or FeatureAngle costs one linear pass over the edges. GetNumberOfAdjacencyBuilds()

@@ -253,7 +253,7 @@ errors = [
     ([os.path.join(models, "bad_index.obj"), "-o", out("x.png")], "bad_index.obj: malformed OBJ file: line 4: uses vertex 9 of 3"),
     ([os.path.join(models, "bad_negative_index.obj"), "-o", out("x.png")], "uses vertex -9, before the first"),
     ([os.path.join(models, "bad_index.vtp"), "-o", out("x.png")], "bad_index.vtp: nothing to draw"),
-    ([rotor, "--style", "watercolour", "-o", out("x.png")], "unknown style 'watercolour' (valid styles: shaded, edges, toon, toon+edges, sketch, inked)"),
+    ([rotor, "--style", "watercolour", "-o", out("x.png")], "unknown style 'watercolour' (valid styles: shaded, edges, toon, toon+edges, sketch, inked, drawing)"),
     ([rotor, "--style", "toon", "--toon-bands", "0", "-o", out("x.png")], "--toon-bands expects an integer in 1..64"),
     ([rotor, "--style", "sketch", "--uncertainty", "40", "-o", out("x.png")], "--uncertainty expects a number in 0..32"),
     ([rotor, "--style", "sketch", "--noise-frequency", "0", "-o", out("x.png")], "--noise-frequency expects a number in 0.05..25"),
