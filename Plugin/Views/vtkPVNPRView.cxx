@@ -114,8 +114,13 @@ void vtkPVNPRView::SetDrawingFileName(const char* path)
 
 bool vtkPVNPRView::ExportDrawing()
 {
+  // The view's renderer is drawn by vtkNPRViewPass, not a vtkNPRPass: the style comes from ours.
+  vtkNPRPass* pass = this->NPRViewPass->GetNPRPass();
   vtkNew<vtkNPRDrawingExporter> exporter;
   exporter->SetRenderer(this->GetRenderer());
+  exporter->SetDrawingPass(pass->GetDrawingPass());
+  exporter->SetEdgePass(pass->GetEdgePass());
+  exporter->SetEmbedImage(pass->GetStyle() == vtkNPRPass::DRAWING ? 0 : 1);
   exporter->SetFileName(this->DrawingFileName.c_str());
   if (!exporter->Write())
   {

@@ -1,11 +1,10 @@
 #!/usr/bin/python3
 # SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Smoke test of npr-benchmark: runs it with --quick (or --stress --quick, --coherence --quick)
-and checks that the
-files are written and that every figure is sane (F1 in [0, 1], no NaN, positive times).
+"""Smoke test of npr-benchmark: runs it with --quick (alone, or with --stress, --coherence or
+--drawing) and checks that the files are written and that every figure is sane (F1 in [0, 1], no NaN, positive times).
 
-usage: check_benchmark.py --npr-benchmark EXE --data DIR --out DIR [--stress | --coherence]"""
+usage: check_benchmark.py --npr-benchmark EXE --data DIR --out DIR [--stress | --coherence | --drawing]"""
 import argparse
 import csv
 import math
@@ -120,6 +119,32 @@ def check_coherence(out):
     check(os.path.isfile(md) and "| camera path |" in open(md).read(), "coherence.md has no table")
 
 
+def check_drawing(out):
+    rows = read_csv(os.path.join(out, "drawing.csv"))
+    check({(row["format"], row["hidden_lines"]) for row in rows} ==
+          {("svg", "0"), ("svg", "1"), ("pdf", "0"), ("pdf", "1")},
+          "drawing.csv: SVG and PDF, with and without hidden lines")
+    for row in rows:
+        check(number(row, "seconds") > 0.0 and int(row["bytes"]) > 0, "time and size: %s" % row)
+        # Strokes chain the edges: fewer strokes than feature edges.
+        check(0 < int(row["strokes"]) < int(row["feature_edges"]), "strokes: %s" % row)
+        path = os.path.join(out, "drawing_%s_%s%s.%s" % (row["scene"], row["size"],
+                                                          "_hidden" if row["hidden_lines"] == "1"
+                                                          else "", row["format"]))
+        check(os.path.isfile(path), "%s missing" % path)
+        # Rasterised by rsvg-convert and pdftoppm (where installed): the reference's lines.
+        f1 = number(row, "f1_at_1")
+        if row["hidden_lines"] == "0" and f1 >= 0.0:
+            check(f1 >= 0.98, "F1@1 of the %s: %s" % (row["format"], row))
+    styles = read_csv(os.path.join(out, "drawing_style.csv"))
+    check(len(styles) >= 1, "drawing_style.csv has %d rows" % len(styles))
+    for row in styles:
+        check(all(number(row, key) > 0.0 for key in ("shaded_ms", "first_ms", "moved_ms",
+                                                       "unchanged_ms")), "times: %s" % row)
+    md = os.path.join(out, "drawing.md")
+    check(os.path.isfile(md) and "| hidden lines |" in open(md).read(), "drawing.md has no table")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--npr-benchmark", required=True)
@@ -128,6 +153,7 @@ def main():
     mode = parser.add_mutually_exclusive_group()
     mode.add_argument("--stress", action="store_true")
     mode.add_argument("--coherence", action="store_true")
+    mode.add_argument("--drawing", action="store_true")
     args = parser.parse_args()
     shutil.rmtree(args.out, ignore_errors=True)
     command = [args.npr_benchmark, "--quick", "--data", args.data, "--out", args.out]
@@ -135,6 +161,8 @@ def main():
         command.append("--stress")
     if args.coherence:
         command.append("--coherence")
+    if args.drawing:
+        command.append("--drawing")
     print(" ".join(command))
     result = subprocess.run(command)
     check(result.returncode == 0, "npr-benchmark exited with %d" % result.returncode)
@@ -142,6 +170,8 @@ def main():
         check_stress(args.out)
     elif args.coherence:
         check_coherence(args.out)
+    elif args.drawing:
+        check_drawing(args.out)
     else:
         check_benchmark(args.out)
     print("FAILED (%d failed checks)" % len(failures) if failures else "PASSED")

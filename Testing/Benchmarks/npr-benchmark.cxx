@@ -4,6 +4,7 @@
 // against the object-space reference mask. Documentation/benchmarks.md describes the scenes,
 // methods and figures; `npr-benchmark --help` the flags.
 #include "nprBenchmarkCoherence.h"
+#include "nprBenchmarkDrawing.h"
 #include "nprBenchmarkMethods.h"
 #include "nprBenchmarkOptions.h"
 #include "nprBenchmarkReport.h"
@@ -191,6 +192,10 @@ int main(int argc, char* argv[])
       if (options.Coherence)
       {
         return nprRunBenchmarkCoherence(options);
+      }
+      if (options.Drawing)
+      {
+        return nprRunBenchmarkDrawing(options);
       }
       return options.Stress ? nprRunBenchmarkStress(options) : RunBenchmark(options);
     });

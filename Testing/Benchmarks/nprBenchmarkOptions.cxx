@@ -15,6 +15,7 @@ namespace
 const char* const Help = R"(usage: npr-benchmark --data DIR --out DIR [options]
        npr-benchmark --stress --data DIR --out DIR [options]
        npr-benchmark --coherence --data DIR --out DIR [options]
+       npr-benchmark --drawing --data DIR --out DIR [options]
 
 Times every line method against the plain shaded frame and scores its line mask against the
 object-space reference mask (precision, recall and F1 at 1 and 2 px, mean symmetric distance).
@@ -25,6 +26,10 @@ With --coherence: how each style's lines follow the surfaces along a pan, an orb
 (line pixels carried to the next frame through depth), and the sketch's frame time with surface
 against screen noise; writes OUT/coherence.csv and OUT/coherence.md (default scenes cad,bunny,
 sizes 640x480,1920x1080).
+With --drawing: each scene's technical drawing written as SVG and PDF by a new exporter (time,
+size, strokes against feature edges, the files rasterised by rsvg-convert and pdftoppm against the
+reference mask), and the drawing style's frame times; writes OUT/drawing.csv and OUT/drawing.md
+(default scenes cad,rotor,bunny,isosurface,bunny1m, size 1920x1080).
 
   --data DIR         folder of cad_part.vtp, rotor.ply and bunny.ply
   --out DIR          folder for the results (created)
@@ -133,6 +138,10 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
     {
       options.Coherence = true;
     }
+    else if (arg == "--drawing")
+    {
+      options.Drawing = true;
+    }
     else if (arg == "--stress-cases")
     {
       options.StressCases = nprSplitList(arguments.Value(), true);
@@ -183,6 +192,10 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
     {
       options.Sizes = { { 640, 480 }, { 1920, 1080 } };
     }
+  }
+  if (options.Drawing && !sizesGiven && !options.Quick)
+  {
+    options.Sizes = { { 1920, 1080 } };
   }
   if (options.Stress)
   {

@@ -23,6 +23,7 @@ struct nprBenchmarkOptions
   bool Quick = false;
   bool Stress = false;
   bool Coherence = false;
+  bool Drawing = false;
   std::vector<std::string> StressCases; // name parts; empty: every case
   double MaxDrift = -1.0;               // < 0: report only
   bool SaveMasks = false;

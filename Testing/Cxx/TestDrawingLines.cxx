@@ -2,9 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The strokes of a technical drawing (vtkNPRDrawingLines): a cube's visible and hidden edges
 // against their analytic projections, in perspective and parallel; one object hiding another's
-// lines, split where the front object's outline crosses them; a cylinder's rims as one closed
-// stroke each; the bunny's strokes chained and their visible points inside the reference mask;
-// bad input.
+// lines, split where the front object's outline crosses them; a rod through a ring, each hiding
+// part of the other's lines; a cylinder's rims as one closed stroke each; the bunny's strokes
+// chained and their visible points inside the reference mask; bad input.
 //
 // usage: TestDrawingLines CASE [DATA_DIR]   (CASE: see the table at the end of this file)
 #include "nprFeatureLineTesting.h"
@@ -23,6 +23,8 @@
 #include "vtkNPRModelReader.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
+#include "vtkParametricFunctionSource.h"
+#include "vtkParametricTorus.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -316,6 +318,87 @@ int DrawingOcclusion(bool parallel)
   return nprTestResult();
 }
 
+// ---- A rod through a ring: each hides part of the other's lines ----
+// Visible line length in pixels on the ring (a torus of radii 1 and 0.25 about z) and on the rod
+// (radius 0.15 along x), each stroke segment told by where its world midpoint lies.
+std::array<double, 2> VisibleLengths(vtkNPRDrawingLines* lines)
+{
+  vtkPolyData* strokes = lines->GetStrokes();
+  vtkDataArray* image = strokes->GetPointData()->GetArray("ImageCoordinates");
+  auto* hidden = vtkUnsignedCharArray::SafeDownCast(strokes->GetCellData()->GetArray("Hidden"));
+  std::array<double, 2> length = { 0.0, 0.0 };
+  auto iterator = vtk::TakeSmartPointer(strokes->GetLines()->NewIterator());
+  vtkIdType cell = 0;
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal();
+       iterator->GoToNextCell(), ++cell)
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    iterator->GetCurrentCell(size, ids);
+    for (vtkIdType i = 0; !hidden->GetValue(cell) && i + 1 < size; ++i)
+    {
+      double a[3], b[3];
+      strokes->GetPoint(ids[i], a);
+      strokes->GetPoint(ids[i + 1], b);
+      const double m[3] = { 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]) };
+      const double ringResidual = std::abs(std::hypot(std::hypot(m[0], m[1]) - 1.0, m[2]) - 0.25);
+      const double pixels =
+        std::hypot(image->GetComponent(ids[i + 1], 0) - image->GetComponent(ids[i], 0),
+          image->GetComponent(ids[i + 1], 1) - image->GetComponent(ids[i], 1));
+      length[ringResidual < 0.02 ? 0 : 1] += pixels;
+    }
+  }
+  return length;
+}
+
+int DrawingMutual()
+{
+  DrawingScene scene(500, 400);
+  vtkNew<vtkParametricTorus> torus;
+  torus->SetRingRadius(1.0);
+  torus->SetCrossSectionRadius(0.25);
+  vtkNew<vtkParametricFunctionSource> ring;
+  ring->SetParametricFunction(torus);
+  ring->SetUResolution(64);
+  ring->SetVResolution(16);
+  vtkSmartPointer<vtkActor> ringActor = nprAddActor(scene.Renderer, ring->GetOutputPort());
+  vtkNew<vtkCylinderSource> cylinder; // along y: turned onto x, through the ring's hole
+  cylinder->SetResolution(32);
+  cylinder->SetRadius(0.15);
+  cylinder->SetHeight(3.0);
+  cylinder->SetCenter(0.0, 1.0, 0.0); // its axis crosses the ring's tube at x = 1 once turned
+  vtkSmartPointer<vtkActor> rod = nprAddActor(scene.Renderer, cylinder->GetOutputPort());
+  rod->SetOrientation(0.0, 0.0, 90.0);
+  vtkCamera* camera = scene.Camera();
+  camera->SetPosition(1.0, 3.0, 5.0);
+  camera->SetFocalPoint(-0.2, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetClippingRange(1.0, 20.0);
+  auto lengths = [&](vtkActor* gone)
+  {
+    if (gone)
+    {
+      gone->VisibilityOff();
+    }
+    NPR_CHECK(scene.Lines->Update(), "the drawing lines failed");
+    if (gone)
+    {
+      gone->VisibilityOn();
+    }
+    return VisibleLengths(scene.Lines);
+  };
+  const double ringAlone = lengths(rod)[0];
+  const double rodAlone = lengths(ringActor)[1];
+  const std::array<double, 2> together = lengths(nullptr);
+  std::cout << "visible line length: ring " << ringAlone << " px alone, " << together[0]
+            << " px with the rod; rod " << rodAlone << " px alone, " << together[1]
+            << " px with the ring\n";
+  NPR_CHECK(ringAlone > 500 && rodAlone > 300, "the ring or the rod has too few lines");
+  NPR_CHECK(together[0] < ringAlone - 10.0, "the rod hides none of the ring's lines");
+  NPR_CHECK(together[1] < rodAlone - 10.0, "the ring hides none of the rod's lines");
+  return nprTestResult();
+}
+
 // ---- A cylinder seen along its axis: each rim is one closed stroke ----
 int DrawingCylinder()
 {
@@ -467,6 +550,7 @@ int main(int argc, char* argv[])
     { "drawing-occlusion", [] { return DrawingOcclusion(false); } },
     { "drawing-occlusion-parallel", [] { return DrawingOcclusion(true); } },
     { "drawing-cylinder", DrawingCylinder },
+    { "drawing-mutual", DrawingMutual },
     { "drawing-bunny", DrawingBunny },
     { "drawing-errors", DrawingErrors },
   };

@@ -1,0 +1,299 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "nprBenchmarkDrawing.h"
+
+#include "nprBenchmarkOptions.h"
+#include "nprBenchmarkReport.h"
+#include "nprBenchmarkScenes.h"
+#include "nprBenchmarkStage.h"
+#include "nprEdgeMetrics.h"
+#include "nprPassSettings.h"
+#include "nprTiming.h"
+
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkNPRDrawingExporter.h"
+#include "vtkNPRDrawingLines.h"
+#include "vtkNPRDrawingPass.h"
+#include "vtkNPREdgePass.h"
+#include "vtkNPRPass.h"
+#include "vtkNPRRenderWindowFactory.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct DrawingRow
+{
+  std::string Scene, Size, Format;
+  bool Hidden = false;
+  double Seconds = 0.0, StrokesSeconds = 0.0, LinesSeconds = 0.0, LocatorSeconds = 0.0,
+         VisibilitySeconds = 0.0, WriteSeconds = 0.0;
+  long long Bytes = 0, Strokes = 0, FeatureEdges = 0;
+  double F1 = -1.0, Precision = -1.0, Recall = -1.0; // -1: not measured
+};
+
+struct StyleRow
+{
+  std::string Scene, Size;
+  double FirstMs = 0.0, MovedMs = 0.0, StillMs = 0.0, ShadedMs = 0.0;
+};
+
+std::string Fixed(double value, int decimals)
+{
+  std::ostringstream text;
+  text.setf(std::ios::fixed);
+  text.precision(decimals);
+  text << value;
+  return text.str();
+}
+
+std::string Quoted(const std::string& path)
+{
+  std::string quoted = "'";
+  for (char c : path)
+  {
+    quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  }
+  return quoted + "'";
+}
+
+// The drawing rasterised at the image size by rsvg-convert or pdftoppm; null when the program
+// is missing or fails.
+vtkSmartPointer<vtkImageData> Rasterise(
+  const std::string& file, bool pdf, int width, int height, const std::string& png)
+{
+#if defined(NPR_RSVG_CONVERT) && defined(NPR_PDFTOPPM)
+  const std::string program = pdf ? NPR_PDFTOPPM : NPR_RSVG_CONVERT;
+  if (program.empty() || program.find("NOTFOUND") != std::string::npos)
+  {
+    return nullptr;
+  }
+  const std::string stem = png.substr(0, png.size() - 4);
+  const std::string command = pdf
+    ? Quoted(program) + " -png -singlefile -scale-to-x " + std::to_string(width) + " -scale-to-y " +
+      std::to_string(height) + " " + Quoted(file) + " " + Quoted(stem)
+    : Quoted(program) + " -w " + std::to_string(width) + " -h " + std::to_string(height) + " -o " +
+      Quoted(png) + " " + Quoted(file);
+  if (std::system(command.c_str()) != 0)
+  {
+    std::cerr << "npr-benchmark: failed: " << command << "\n";
+    return nullptr;
+  }
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(png.c_str());
+  reader->Update();
+  vtkSmartPointer<vtkImageData> image = reader->GetOutput();
+  const int* dimensions = image->GetDimensions();
+  return dimensions[0] == width && dimensions[1] == height ? image : nullptr;
+#else
+  (void)file;
+  (void)pdf;
+  (void)width;
+  (void)height;
+  (void)png;
+  return nullptr;
+#endif
+}
+
+// Line pixels of a drawing rasterised black on white: the first channel below 160.
+std::vector<unsigned char> LinePixels(vtkImageData* image, int width, int height)
+{
+  std::vector<unsigned char> mask(static_cast<size_t>(width) * height, 0);
+  const int components = image->GetNumberOfScalarComponents();
+  const auto* pixels = static_cast<const unsigned char*>(image->GetScalarPointer());
+  for (size_t i = 0; i < mask.size(); ++i)
+  {
+    mask[i] = pixels[i * components] < 160 ? 255 : 0;
+  }
+  return mask;
+}
+}
+
+int nprRunBenchmarkDrawing(const nprBenchmarkOptions& options)
+{
+  const nprClock::time_point runStart = nprClock::now();
+  nprMakeBenchmarkFolders(options);
+  const std::vector<nprBenchmarkScene> scenes =
+    nprLoadBenchmarkScenes(options.Scenes, options.Data, options.DenseMesh, options.ScenesGiven);
+  nprBenchmarkStage stage(options.LineWidth);
+  // The drawing style, lines 1 px wide (what the reference mask is compared with).
+  nprPassSettings settings;
+  settings.Style = "drawing";
+  settings.LineWidth = 1.0;
+  vtkSmartPointer<vtkNPRPass> drawing = nprMakePass(settings);
+  std::vector<DrawingRow> rows;
+  std::vector<StyleRow> styleRows;
+  std::string problems;
+  for (const nprBenchmarkScene& scene : scenes)
+  {
+    stage.SetMesh(scene.Mesh, scene.Raw);
+    for (const auto& size : options.Sizes)
+    {
+      const int width = size.first, height = size.second;
+      stage.Window->SetSize(width, height);
+      const std::string sizeName = std::to_string(width) + "x" + std::to_string(height);
+      stage.Activate(nullptr, false);
+      nprApplyBenchmarkCamera(stage.Renderer, nprBenchmarkCameras()[0]);
+      stage.Window->Render();
+      const nprMask reference = stage.ReferenceMask();
+
+      // ---- Vector files from a new exporter each: nothing built before ----
+      for (bool hidden : { false, true })
+      {
+        drawing->SetHiddenLines(hidden);
+        for (const char* format : { "svg", "pdf" })
+        {
+          DrawingRow row{ scene.Name, sizeName, format, hidden };
+          const std::string stem =
+            options.Out + "/drawing_" + scene.Name + "_" + sizeName + (hidden ? "_hidden" : "");
+          const std::string file = stem + "." + format;
+          vtkNew<vtkNPRDrawingExporter> exporter;
+          exporter->SetRenderer(stage.Renderer);
+          exporter->SetDrawingPass(drawing->GetDrawingPass());
+          exporter->SetEdgePass(drawing->GetEdgePass());
+          exporter->SetEmbedImage(0);
+          exporter->SetFileName(file.c_str());
+          const nprClock::time_point start = nprClock::now();
+          if (!exporter->Write())
+          {
+            problems += file + ": " + exporter->GetErrorMessage() + "\n";
+            continue;
+          }
+          row.Seconds = nprSecondsSince(start);
+          row.StrokesSeconds = exporter->GetStrokesTime();
+          row.WriteSeconds = exporter->GetWriteTime();
+          vtkNPRDrawingLines* lines = exporter->GetDrawingLines();
+          row.LinesSeconds = lines->GetLinesTime();
+          row.LocatorSeconds = lines->GetLocatorTime();
+          row.VisibilitySeconds = lines->GetVisibilityTime();
+          row.Bytes = static_cast<long long>(std::filesystem::file_size(file));
+          row.Strokes = exporter->GetNumberOfStrokes();
+          row.FeatureEdges = lines->GetNumberOfFeatureEdges();
+          if (!hidden)
+          {
+            vtkSmartPointer<vtkImageData> image =
+              Rasterise(file, row.Format == "pdf", width, height, stem + "_" + format + ".png");
+            if (image)
+            {
+              const std::vector<unsigned char> mask = LinePixels(image, width, height);
+              nprEdgeMetrics metrics;
+              metrics.Compute(mask.data(), reference.Pixels.data(), width, height);
+              row.F1 = metrics.F1(1.0);
+              row.Precision = metrics.Precision(1.0);
+              row.Recall = metrics.Recall(1.0);
+            }
+          }
+          std::cerr << "npr-benchmark: " << file << ": " << Fixed(row.Seconds, 3) << " s, "
+                    << row.Bytes << " bytes, " << row.Strokes << " strokes of " << row.FeatureEdges
+                    << " edges" << (row.F1 >= 0 ? ", F1@1 " + Fixed(row.F1, 4) : std::string())
+                    << "\n";
+          if (row.Strokes <= 0 || row.Bytes <= 0 || (row.F1 >= 0 && !(row.F1 <= 1.0)))
+          {
+            problems += file + ": no strokes, an empty file or an F1 out of range\n";
+          }
+          rows.push_back(row);
+        }
+      }
+      drawing->SetHiddenLines(false);
+
+      // ---- The drawing style on screen: the first frame (strokes from scratch), a frame after
+      // the camera turned 1 degree (strokes again, meshes known), an unchanged frame ----
+      StyleRow style{ scene.Name, sizeName };
+      stage.Activate(nullptr, false);
+      style.ShadedMs = nprTimeFrame(stage.Window, stage.Camera());
+      vtkNew<vtkNPRPass> fresh; // nothing built yet
+      nprApplyPassSettings(fresh, settings);
+      stage.Activate(fresh, false);
+      nprClock::time_point start = nprClock::now();
+      stage.Window->Render();
+      style.FirstMs = 1000.0 * nprSecondsSince(start);
+      std::vector<double> moved, still;
+      for (int frame = 0; frame < std::max(1, options.Frames / 2); ++frame)
+      {
+        stage.Camera()->Azimuth(1.0);
+        stage.Renderer->ResetCameraClippingRange();
+        start = nprClock::now();
+        stage.Window->Render();
+        moved.push_back(1000.0 * nprSecondsSince(start));
+        start = nprClock::now();
+        stage.Window->Render();
+        still.push_back(1000.0 * nprSecondsSince(start));
+      }
+      style.MovedMs = nprMedian(moved);
+      style.StillMs = nprMedian(still);
+      styleRows.push_back(style);
+      stage.Activate(nullptr, false);
+      std::cerr << "npr-benchmark: drawing style " << scene.Name << " " << sizeName << ": first "
+                << Fixed(style.FirstMs, 1) << " ms, camera turned " << Fixed(style.MovedMs, 1)
+                << " ms, unchanged " << Fixed(style.StillMs, 1) << " ms\n";
+    }
+  }
+
+  // ---- Reports ----
+  std::ofstream csv(options.Out + "/drawing.csv");
+  csv << "scene,size,format,hidden_lines,seconds,strokes_seconds,lines_seconds,locator_seconds,"
+         "visibility_seconds,write_seconds,bytes,strokes,feature_edges,f1_at_1,precision_at_1,"
+         "recall_at_1\n";
+  std::ostringstream md;
+  md << "| scene | size | file | hidden lines | time (s) | of which lines, locator, visibility "
+        "(s) | painting and writing (s) | size (KB) | strokes | feature edges | F1@1 |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const DrawingRow& row : rows)
+  {
+    csv << row.Scene << "," << row.Size << "," << row.Format << "," << (row.Hidden ? 1 : 0) << ","
+        << row.Seconds << "," << row.StrokesSeconds << "," << row.LinesSeconds << ","
+        << row.LocatorSeconds << "," << row.VisibilitySeconds << "," << row.WriteSeconds << ","
+        << row.Bytes << "," << row.Strokes << "," << row.FeatureEdges << "," << row.F1 << ","
+        << row.Precision << "," << row.Recall << "\n";
+    md << "| " << row.Scene << " | " << row.Size << " | " << row.Format << " | "
+       << (row.Hidden ? "yes" : "no") << " | " << Fixed(row.Seconds, 3) << " | "
+       << Fixed(row.LinesSeconds, 2) << ", " << Fixed(row.LocatorSeconds, 2) << ", "
+       << Fixed(row.VisibilitySeconds, 2) << " | " << Fixed(row.WriteSeconds, 3) << " | "
+       << Fixed(row.Bytes / 1024.0, 0) << " | " << row.Strokes << " | " << row.FeatureEdges << " | "
+       << (row.F1 >= 0 ? Fixed(row.F1, 4) : std::string("")) << " |\n";
+  }
+  md << "\n| scene | size | shaded frame (ms) | drawing, first frame (ms) | drawing, camera turned "
+        "1 degree (ms) | drawing, unchanged (ms) |\n|---|---|---|---|---|---|\n";
+  std::ofstream styleCsv(options.Out + "/drawing_style.csv");
+  styleCsv << "scene,size,shaded_ms,first_ms,moved_ms,unchanged_ms\n";
+  for (const StyleRow& row : styleRows)
+  {
+    md << "| " << row.Scene << " | " << row.Size << " | " << Fixed(row.ShadedMs, 1) << " | "
+       << Fixed(row.FirstMs, 1) << " | " << Fixed(row.MovedMs, 1) << " | " << Fixed(row.StillMs, 1)
+       << " |\n";
+    styleCsv << row.Scene << "," << row.Size << "," << row.ShadedMs << "," << row.FirstMs << ","
+             << row.MovedMs << "," << row.StillMs << "\n";
+  }
+  std::ofstream markdown(options.Out + "/drawing.md");
+  markdown << "Technical drawings (npr-benchmark --drawing) on "
+           << vtkNPRRenderWindowFactory::GetGLRenderer(stage.Window)
+           << ": each file from a new vtkNPRDrawingExporter (the meshes' adjacency and occlusion "
+              "structure built from scratch), 1 px lines; F1@1 of the file rasterised by "
+              "rsvg-convert or pdftoppm against the reference mask.\n\n"
+           << md.str();
+  std::cout << md.str();
+  if (!csv || !styleCsv || !markdown)
+  {
+    throw std::runtime_error(options.Out +
+      ": cannot write drawing.csv, drawing_style.csv or "
+      "drawing.md");
+  }
+  std::cerr << "npr-benchmark: wrote " << options.Out << "/drawing.{csv,md}, drawing_style.csv in "
+            << nprFormat(nprSecondsSince(runStart), 4) << " s\n";
+  if (!problems.empty())
+  {
+    std::cerr << "npr-benchmark: error:\n" << problems;
+    return 1;
+  }
+  return 0;
+}
