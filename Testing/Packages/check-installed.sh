@@ -28,7 +28,7 @@ check() {
     passed=$((passed + 1))
     echo "check-packages: $name passed"
     # What it measured: pixel counts, the consumer's tests, versions.
-    grep -E 'line pixels|tests passed|^npr-render [0-9]|NPRView:|version: [0-9]' "$work/$name.log" |
+    grep -E 'line pixels|tests passed|^npr-render [0-9]|NPRView:|version: [0-9]|[0-9] paths$' "$work/$name.log" |
       tail -n 4 | sed 's/^/    /'
   else
     echo "check-packages: $name FAILED:"
@@ -55,6 +55,11 @@ check_vtk() {
   # An orbit as an Ogg Theora video (VTK's movie writer, a dependency of vtknpr-tools).
   check npr-render-orbit bash -c "npr-render /src/Testing/Data/cad_part.vtp --style sketch \
     --size 160x120 --orbit 4 -o $work/orbit.ogv && test \$(head -c 4 $work/orbit.ogv) = OggS"
+  # A technical drawing as SVG (Cairo, through libvtknpr's dependencies): hidden lines dashed.
+  check npr-render-drawing bash -c "npr-render /src/Testing/Data/cad_part.vtp --style drawing \
+    --hidden-lines --size 480x360 --azimuth 30 --elevation 30 -o $work/part.svg &&
+    grep -q 'class=\"npr-hidden\"' $work/part.svg && grep -q stroke-dasharray $work/part.svg &&
+    echo \"\$(grep -c '<path' $work/part.svg) paths\""
   # The viewer, installed with the tools: without a display, one error line and exit status 1.
   check npr-view-no-display bash -c "env -u DISPLAY npr-view /src/Testing/Data/cad_part.vtp \
     2>$work/view.txt; status=\$?; cat $work/view.txt; test \$status -eq 1 &&
