@@ -347,7 +347,7 @@ if [[ $task == examples ]]; then
   build_host
   cmake --build "$build_dir" --target render-examples
   echo "bootstrap: example images in $build_dir/examples:"
-  ls -1 "$build_dir"/examples/*.png
+  ls -1 "$build_dir"/examples/*.png "$build_dir"/examples/*.svg
 else
   run_test_stages
 fi

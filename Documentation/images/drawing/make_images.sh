@@ -1,0 +1,45 @@
+#!/bin/sh
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
+# Regenerates the pictures of Documentation/drawing.md with the commands shown there.
+#
+#   Documentation/images/drawing/make_images.sh build/bin/npr-render
+#
+# The commands run from the repository root (the model paths are relative to it) and write into
+# this folder: each drawing as the SVG that vtkNPRDrawingExporter writes, then rasterised for the
+# page by rsvg-convert (librsvg2-bin) at its own size, 1 point = 1 pixel. The isosurface comes
+# from isosurface_drawing.py in this folder, run with /usr/bin/python3 and the vtknpr package
+# beside NPR_RENDER (../lib/python3/dist-packages: the build tree's or the installed one).
+set -eu
+. "$(dirname "$0")/../render_common.sh"
+
+size=640x480
+python_path=$(dirname "$npr_render")/../lib/python3/dist-packages
+
+# rasterise NAME: NAME.svg -> NAME.png at the drawing's size.
+rasterise() {
+  echo "rsvg-convert -w ${size%x*} -h ${size#*x} $1.svg -o $1.png"
+  rsvg-convert -w "${size%x*}" -h "${size#*x}" "$out/$1.svg" -o "$out/$1.png"
+}
+
+cad="Testing/Data/cad_part.vtp --size $size --azimuth 35 --elevation 25"
+rotor="Testing/Data/rotor.ply --size $size --azimuth 35 --elevation 25"
+
+# The CAD part and the rotor, without and with hidden lines.
+render cad_part.svg $cad --style drawing
+rasterise cad_part
+render cad_part_hidden.svg $cad --style drawing --hidden-lines
+rasterise cad_part_hidden
+render rotor.svg $rotor --style drawing
+rasterise rotor
+render rotor_hidden.svg $rotor --style drawing --hidden-lines
+rasterise rotor_hidden
+
+# A scientific scene: an isosurface of VTK's wavelet, through vtkNPRPass and vtkNPRDrawingExporter.
+for hidden in "" --hidden-lines; do
+  name=isosurface${hidden:+_hidden}
+  echo "python3 Documentation/images/drawing/isosurface_drawing.py --size $size $hidden -o $name.svg"
+  PYTHONPATH="$python_path${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 \
+    "$out/isosurface_drawing.py" --size "$size" $hidden -o "$out/$name.svg"
+  rasterise "$name"
+done
