@@ -186,12 +186,12 @@ def main():
         if not 0.85 * black["shaded"] <= black[style] <= 1.15 * black["shaded"]:
             failures.append("%s: the outline has %d dark pixels, shaded %d"
                             % (style, black[style], black["shaded"]))
-    if black["shaded"] < 100 or bright["shaded"] < 500:
-        failures.append("shaded: too few outline (%d) or axes (%d) pixels"
-                        % (black["shaded"], bright["shaded"]))
         if not 0.9 * bright["shaded"] <= bright[style] <= 1.1 * bright["shaded"]:
             failures.append("%s: the axes have %d bright pixels, shaded %d"
                             % (style, bright[style], bright["shaded"]))
+    if black["shaded"] < 100 or bright["shaded"] < 500:
+        failures.append("shaded: too few outline (%d) or axes (%d) pixels"
+                        % (black["shaded"], bright["shaded"]))
     for failure in failures:
         print("FAILED: " + failure)
     print("%d passed, %d failed" % (1 if not failures else 0, 1 if failures else 0))
