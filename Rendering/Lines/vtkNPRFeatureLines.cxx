@@ -90,6 +90,10 @@ struct vtkNPRFeatureLines::Adjacency
   std::vector<double> Normals;     // unit normal of every oriented face
   std::vector<Edge> Edges;
   vtkIdType DegenerateFaces = 0;
+  // Scratch of the viewpoint pass, kept to save their allocation: each edge's type, each input
+  // point's output id (all -1 between updates).
+  std::vector<unsigned char> EdgeTypes;
+  std::vector<vtkIdType> OutputIds;
   vtkIdType NonFiniteFaces = 0;
 
   bool IsCurrent(vtkPolyData* input, bool merge) const
@@ -416,10 +420,75 @@ int vtkNPRFeatureLines::RequestData(
     ++this->NumberOfAdjacencyBuilds;
   }
 
-  // One pass over the edges for this viewpoint.
+  // One pass over the edges for this viewpoint, in parallel: each edge's type, then the typed
+  // edges in order (few: the output is small).
   const double* coordinates = adjacency.Coordinates.data();
   const double* normals = adjacency.Normals.data();
-  std::vector<vtkIdType> outputId(adjacency.Coordinates.size() / 3, -1);
+  const std::vector<Adjacency::Edge>& edges = adjacency.Edges;
+  std::vector<unsigned char>& edgeTypes = adjacency.EdgeTypes;
+  edgeTypes.resize(edges.size());
+  const bool boundaries = this->Boundaries, nonManifold = this->NonManifoldEdges;
+  const bool creases = this->Creases, silhouettes = this->Silhouettes;
+  const bool parallel = this->ParallelProjection;
+  const double featureAngle = this->FeatureAngle;
+  const double eye[3] = { this->EyePosition[0], this->EyePosition[1], this->EyePosition[2] };
+  const double direction[3] = { this->DirectionOfProjection[0], this->DirectionOfProjection[1],
+    this->DirectionOfProjection[2] };
+  vtkSMPTools::For(0, static_cast<vtkIdType>(edges.size()),
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType e = first; e < last; ++e)
+      {
+        const Adjacency::Edge& edge = edges[e];
+        unsigned char type = 0;
+        if (edge.Count == 1)
+        {
+          type = boundaries ? BOUNDARY : 0;
+        }
+        else if (edge.Count > 2)
+        {
+          type = nonManifold ? NON_MANIFOLD : 0;
+        }
+        else
+        {
+          if (creases && edge.Angle > featureAngle)
+          {
+            type |= CREASE;
+          }
+          if (silhouettes)
+          {
+            const double* n0 = normals + 3 * edge.Faces[0];
+            const double* n1 = normals + 3 * edge.Faces[1];
+            double f0, f1;
+            if (parallel)
+            {
+              f0 = Dot(n0, direction);
+              f1 = Dot(n1, direction);
+            }
+            else
+            {
+              // The same point of the edge for both faces: each term is exactly the side of
+              // that face's plane the eye is on.
+              const double* p = coordinates + 3 * edge.A;
+              const double toPoint[3] = { p[0] - eye[0], p[1] - eye[1], p[2] - eye[2] };
+              f0 = Dot(n0, toPoint);
+              f1 = Dot(n1, toPoint);
+            }
+            if (edge.SameDirection)
+            {
+              f1 = -f1;
+            }
+            // Facing the eye: a negative term; edge-on (0) counts as facing away.
+            if ((f0 < 0.0) != (f1 < 0.0))
+            {
+              type |= SILHOUETTE;
+            }
+          }
+        }
+        edgeTypes[e] = type;
+      }
+    });
+
   vtkNew<vtkPoints> outputPoints;
   outputPoints->SetDataTypeToDouble();
   vtkNew<vtkCellArray> lines;
@@ -428,71 +497,34 @@ int vtkNPRFeatureLines::RequestData(
   vtkNew<vtkIdTypeArray> inputIds;
   inputIds->SetName("InputPointIds");
   inputIds->SetNumberOfComponents(2);
+  // Each input point's output id (-1: none yet), kept between updates and reset where used.
+  std::vector<vtkIdType>& outputId = adjacency.OutputIds;
+  outputId.resize(adjacency.Coordinates.size() / 3, -1);
+  std::vector<vtkIdType> used;
   auto outputPoint = [&](vtkIdType id)
   {
     if (outputId[id] < 0)
     {
       outputId[id] = outputPoints->InsertNextPoint(coordinates + 3 * id);
+      used.push_back(id);
     }
     return outputId[id];
   };
-
-  for (const Adjacency::Edge& edge : adjacency.Edges)
+  for (size_t e = 0; e < edges.size(); ++e)
   {
-    unsigned char type = 0;
-    if (edge.Count == 1)
+    if (const unsigned char type = edgeTypes[e])
     {
-      type = this->Boundaries ? BOUNDARY : 0;
-    }
-    else if (edge.Count > 2)
-    {
-      type = this->NonManifoldEdges ? NON_MANIFOLD : 0;
-    }
-    else
-    {
-      if (this->Creases && edge.Angle > this->FeatureAngle)
-      {
-        type |= CREASE;
-      }
-      if (this->Silhouettes)
-      {
-        const double* n0 = normals + 3 * edge.Faces[0];
-        const double* n1 = normals + 3 * edge.Faces[1];
-        double f0, f1;
-        if (this->ParallelProjection)
-        {
-          f0 = Dot(n0, this->DirectionOfProjection);
-          f1 = Dot(n1, this->DirectionOfProjection);
-        }
-        else
-        {
-          // The same point of the edge for both faces: each term is exactly the side of that
-          // face's plane the eye is on.
-          const double* p = coordinates + 3 * edge.A;
-          const double toPoint[3] = { p[0] - this->EyePosition[0], p[1] - this->EyePosition[1],
-            p[2] - this->EyePosition[2] };
-          f0 = Dot(n0, toPoint);
-          f1 = Dot(n1, toPoint);
-        }
-        if (edge.SameDirection)
-        {
-          f1 = -f1;
-        }
-        // Facing the eye: a negative term; edge-on (0) counts as facing away.
-        if ((f0 < 0.0) != (f1 < 0.0))
-        {
-          type |= SILHOUETTE;
-        }
-      }
-    }
-    if (type)
-    {
+      const Adjacency::Edge& edge = edges[e];
       const vtkIdType ends[2] = { outputPoint(edge.A), outputPoint(edge.B) };
       lines->InsertNextCell(2, ends);
       types->InsertNextValue(type);
       const vtkIdType ids[2] = { edge.A, edge.B };
       inputIds->InsertNextTypedTuple(ids);
     }
+  }
+  for (vtkIdType id : used)
+  {
+    outputId[id] = -1;
   }
   output->SetPoints(outputPoints);
   output->SetLines(lines);

@@ -35,8 +35,8 @@
  * coordinates) and the faces' unit normals (Newell's method, in double, relative to the
  * face's first point) are built once per mesh and reused while the input, its points and its
  * cells are unchanged (their modification times and identities). Changing the viewpoint, the
- * switches or FeatureAngle costs one linear pass over the edges. GetNumberOfAdjacencyBuilds()
- * counts the builds.
+ * switches or FeatureAngle costs one linear pass over the edges (in parallel, vtkSMPTools) and
+ * one over their types. GetNumberOfAdjacencyBuilds() counts the builds.
  *
  * Points with exactly equal coordinates are one point for the adjacency when
  * MergeCoincidentPoints is on (the default): vtkPolyDataNormals with splitting duplicates the
