@@ -5,6 +5,7 @@ in the edges style), .png stays an image, and an unknown extension, a missing fo
 as the file each exit non-zero with one line `npr-render: error: ...` and leave no file."""
 import argparse
 import os
+import shutil
 import subprocess
 import sys
 
@@ -29,6 +30,22 @@ def check(condition, message):
     (passes if condition else failures).append(message)
 
 
+def pdf_page_size(path, data):
+    """The first page's size in points: from the page dictionary where Cairo writes it as text
+    (1.16), else from pdfinfo (Cairo 1.18 compresses it into an object stream)."""
+    if b"/MediaBox [ 0 0 320 240 ]" in data:
+        return (320, 240)
+    pdfinfo = shutil.which("pdfinfo")
+    if not pdfinfo:
+        return None
+    info = subprocess.run([pdfinfo, path], capture_output=True, text=True).stdout
+    for line in info.splitlines():
+        if line.startswith("Page size:"):
+            parts = line.split()
+            return (round(float(parts[2])), round(float(parts[4])))
+    return None
+
+
 def out(name):
     return os.path.join(args.out, name)
 
@@ -49,7 +66,8 @@ for name in ("edges.svg", "edges.pdf", "edges.ps", "edges.eps", "EDGES.SVG"):
               '<g class="npr-silhouette">' in text and text.count("<path") > 10,
               "%s: the page, the image under the lines, the groups, %d paths" % (name, text.count("<path")))
     elif name.endswith(".pdf"):
-        check(data.startswith(b"%PDF-") and b"/MediaBox [ 0 0 320 240 ]" in data, "%s: a 320x240 pt PDF" % name)
+        check(data.startswith(b"%PDF-") and pdf_page_size(path, data) == (320, 240),
+              "%s: a 320x240 pt PDF (%s)" % (name, pdf_page_size(path, data)))
     else:
         check(data.startswith(b"%!PS-Adobe-3.0") and (b"EPSF" in data) == name.endswith(".eps"),
               "%s: PostScript" % name)

@@ -288,7 +288,28 @@ int Empty()
     {
       NPR_CHECK(
         text.rfind("%PDF-", 0) == 0 && text.find("%%EOF") != std::string::npos, "empty PDF");
-      NPR_CHECK(text.find("/MediaBox [ 0 0 320 240 ]") != std::string::npos, "PDF page size");
+      // Cairo 1.16 writes the page dictionary as text; 1.18 (PDF 1.7) in a compressed object
+      // stream: there the page is measured by pdftoppm at 72 DPI, 1 pixel a point.
+      int page[2] = { 0, 0 };
+      if (text.find("/MediaBox [ 0 0 320 240 ]") != std::string::npos)
+      {
+        page[0] = 320;
+        page[1] = 240;
+      }
+      else if (std::string(PDFTOPPM).find('/') != std::string::npos)
+      {
+        const std::string png = OutputPath("drawing_empty_page");
+        const std::string command =
+          std::string(PDFTOPPM) + " -r 72 -png -singlefile '" + path + "' '" + png + "'";
+        NPR_CHECK(std::system(command.c_str()) == 0, "failed: " << command);
+        if (vtkSmartPointer<vtkImageData> image = nprReadPNG(png + ".png"))
+        {
+          page[0] = image->GetDimensions()[0];
+          page[1] = image->GetDimensions()[1];
+        }
+      }
+      NPR_CHECK(page[0] == 320 && page[1] == 240,
+        "PDF page size " << page[0] << " x " << page[1] << " pt, not 320 x 240");
     }
     else
     {
