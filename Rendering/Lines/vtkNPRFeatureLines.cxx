@@ -58,6 +58,15 @@ CoordinateKey MakeCoordinateKey(const double x[3])
   return key;
 }
 
+// The kinds of edge the viewpoint pass tells apart.
+enum ViewKind : unsigned char
+{
+  ViewBoundary = 1,      // one face
+  ViewNonManifold = 2,   // more than two faces
+  ViewTwoFaces = 4,      // two faces: crease and silhouette tests
+  ViewSameDirection = 8, // the two faces traverse the edge the same way: flip the second
+};
+
 double Dot(const double a[3], const double b[3])
 {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -90,6 +99,14 @@ struct vtkNPRFeatureLines::Adjacency
   std::vector<double> Normals;     // unit normal of every oriented face
   std::vector<Edge> Edges;
   vtkIdType DegenerateFaces = 0;
+  // What the viewpoint pass reads, packed (13 bytes an edge instead of the Edge's 48: the pass is
+  // bound by memory traffic): each edge's two faces and first point, its kind (ViewKind bits),
+  // and whether it is a crease at CreaseAngle (computed again when the angle changes).
+  std::vector<std::uint32_t> ViewFaces; // 2 an edge
+  std::vector<std::uint32_t> ViewPoints;
+  std::vector<unsigned char> ViewKinds;
+  std::vector<unsigned char> Creases;
+  double CreaseAngle = -1.0; // of Creases; < 0: none computed
   // Scratch of the viewpoint pass, kept to save their allocation: each edge's type, each input
   // point's output id (all -1 between updates).
   std::vector<unsigned char> EdgeTypes;
@@ -340,6 +357,25 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
     edge.Angle = vtkMath::DegreesFromRadians(std::atan2(vtkMath::Norm(cross), Dot(n0, n1)));
   }
 
+  // The packed copy the viewpoint pass reads.
+  const size_t edgeCount = this->Edges.size();
+  this->ViewFaces.resize(2 * edgeCount);
+  this->ViewPoints.resize(edgeCount);
+  this->ViewKinds.resize(edgeCount);
+  this->Creases.clear();
+  this->CreaseAngle = -1.0;
+  for (size_t e = 0; e < edgeCount; ++e)
+  {
+    const Edge& edge = this->Edges[e];
+    this->ViewFaces[2 * e] = static_cast<std::uint32_t>(edge.Faces[0]);
+    this->ViewFaces[2 * e + 1] = static_cast<std::uint32_t>(edge.Count >= 2 ? edge.Faces[1] : 0);
+    this->ViewPoints[e] = static_cast<std::uint32_t>(edge.A);
+    this->ViewKinds[e] = static_cast<unsigned char>(edge.Count == 1
+        ? ViewBoundary
+        : (edge.Count > 2 ? ViewNonManifold
+                          : ViewTwoFaces | (edge.SameDirection ? ViewSameDirection : 0)));
+  }
+
   if (this->NonFiniteFaces > 0)
   {
     vtkWarningWithObjectMacro(
@@ -420,45 +456,61 @@ int vtkNPRFeatureLines::RequestData(
     ++this->NumberOfAdjacencyBuilds;
   }
 
-  // One pass over the edges for this viewpoint, in parallel: each edge's type, then the typed
-  // edges in order (few: the output is small).
+  // One pass over the edges for this viewpoint, in parallel, on the packed arrays: each edge's
+  // type; then the typed edges in order (few: the output is small).
   const double* coordinates = adjacency.Coordinates.data();
   const double* normals = adjacency.Normals.data();
   const std::vector<Adjacency::Edge>& edges = adjacency.Edges;
+  const vtkIdType edgeCount = static_cast<vtkIdType>(edges.size());
+  if (this->Creases && adjacency.CreaseAngle != this->FeatureAngle)
+  {
+    adjacency.Creases.resize(edges.size());
+    const double angle = this->FeatureAngle;
+    vtkSMPTools::For(0, edgeCount,
+      [&](vtkIdType first, vtkIdType last)
+      {
+        for (vtkIdType e = first; e < last; ++e)
+        {
+          adjacency.Creases[e] = edges[e].Count == 2 && edges[e].Angle > angle ? CREASE : 0;
+        }
+      });
+    adjacency.CreaseAngle = this->FeatureAngle;
+  }
   std::vector<unsigned char>& edgeTypes = adjacency.EdgeTypes;
   edgeTypes.resize(edges.size());
-  const bool boundaries = this->Boundaries, nonManifold = this->NonManifoldEdges;
-  const bool creases = this->Creases, silhouettes = this->Silhouettes;
+  const std::uint32_t* faces = adjacency.ViewFaces.data();
+  const std::uint32_t* points = adjacency.ViewPoints.data();
+  const unsigned char* kinds = adjacency.ViewKinds.data();
+  const unsigned char* creases = this->Creases ? adjacency.Creases.data() : nullptr;
+  const unsigned char boundary = this->Boundaries ? BOUNDARY : 0;
+  const unsigned char nonManifold = this->NonManifoldEdges ? NON_MANIFOLD : 0;
+  const bool silhouettes = this->Silhouettes;
   const bool parallel = this->ParallelProjection;
-  const double featureAngle = this->FeatureAngle;
   const double eye[3] = { this->EyePosition[0], this->EyePosition[1], this->EyePosition[2] };
   const double direction[3] = { this->DirectionOfProjection[0], this->DirectionOfProjection[1],
     this->DirectionOfProjection[2] };
-  vtkSMPTools::For(0, static_cast<vtkIdType>(edges.size()),
+  vtkSMPTools::For(0, edgeCount,
     [&](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType e = first; e < last; ++e)
       {
-        const Adjacency::Edge& edge = edges[e];
+        const unsigned char kind = kinds[e];
         unsigned char type = 0;
-        if (edge.Count == 1)
+        if (kind & ViewBoundary)
         {
-          type = boundaries ? BOUNDARY : 0;
+          type = boundary;
         }
-        else if (edge.Count > 2)
+        else if (kind & ViewNonManifold)
         {
-          type = nonManifold ? NON_MANIFOLD : 0;
+          type = nonManifold;
         }
         else
         {
-          if (creases && edge.Angle > featureAngle)
-          {
-            type |= CREASE;
-          }
+          type = creases ? creases[e] : 0;
           if (silhouettes)
           {
-            const double* n0 = normals + 3 * edge.Faces[0];
-            const double* n1 = normals + 3 * edge.Faces[1];
+            const double* n0 = normals + 3 * static_cast<size_t>(faces[2 * e]);
+            const double* n1 = normals + 3 * static_cast<size_t>(faces[2 * e + 1]);
             double f0, f1;
             if (parallel)
             {
@@ -469,12 +521,12 @@ int vtkNPRFeatureLines::RequestData(
             {
               // The same point of the edge for both faces: each term is exactly the side of
               // that face's plane the eye is on.
-              const double* p = coordinates + 3 * edge.A;
+              const double* p = coordinates + 3 * static_cast<size_t>(points[e]);
               const double toPoint[3] = { p[0] - eye[0], p[1] - eye[1], p[2] - eye[2] };
               f0 = Dot(n0, toPoint);
               f1 = Dot(n1, toPoint);
             }
-            if (edge.SameDirection)
+            if (kind & ViewSameDirection)
             {
               f1 = -f1;
             }
