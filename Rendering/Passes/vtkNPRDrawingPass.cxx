@@ -111,7 +111,10 @@ void vtkNPRDrawingPass::Render(const vtkRenderState* state)
     lines->SetNonManifoldEdges(this->EdgePass->GetCreases());
     lines->SetCreaseAngle(this->EdgePass->GetCreaseAngle());
     lines->SetHiddenLines(this->HiddenLines);
-    if (!lines->Update())
+    const bool updated = lines->Update();
+    // Not kept: the renderer holds this pass, so a reference back would be a cycle (a leak).
+    lines->SetRenderer(nullptr);
+    if (!updated)
     {
       return;
     }

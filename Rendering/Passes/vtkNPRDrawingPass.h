@@ -107,7 +107,8 @@ public:
 
   /**
    * The vtkNPRDrawingLines this pass computes its strokes with (its settings other than the
-   * renderer, size, line types, crease angle and hidden lines can be tuned).
+   * renderer, size, line types, crease angle and hidden lines can be tuned). Its renderer is set
+   * only while the pass updates the strokes: the renderer holds the pass.
    */
   vtkNPRDrawingLines* GetDrawingLines();
 
