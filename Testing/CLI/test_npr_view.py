@@ -171,12 +171,15 @@ def saved(*keys):
     try:
         path = lines.get(timeout=120)
     except queue.Empty:
+        viewer.kill()  # its stderr ends only when it does
         sys.exit("FAILED: no file saved after keys %s (stderr: %s)" % (keys, viewer.stderr.read()))
     check(os.path.isfile(path), "keys %s: saved %s" % (" ".join(keys), path))
     return path
 
 
-found = xdotool("search", "--sync", "--name", "^npr-view: bunny.ply$")
+# --onlyvisible: a window found before it is mapped cannot take the focus, and the keys sent
+# to it would be lost (seen under ASan on a loaded machine).
+found = xdotool("search", "--sync", "--onlyvisible", "--name", "^npr-view: bunny.ply$")
 window = found.stdout.split()[0] if found.returncode == 0 and found.stdout.split() else None
 check(window is not None, "the window 'npr-view: bunny.ply' appears (%s)" % found.stderr.strip())
 if window is None:
