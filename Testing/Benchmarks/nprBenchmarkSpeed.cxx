@@ -123,13 +123,10 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
   std::vector<SpeedMethod> methods = MakeMethods();
 
   // vtkPolyDataSilhouette for the current camera, drawn as lines over the surface.
-  vtkNew<vtkPolyDataSilhouette> silhouette;
-  silhouette->SetCamera(stage.Camera());
-  silhouette->SetProp3D(stage.MeshActor);
-  silhouette->SetDirectionToCameraOrigin();
-  silhouette->BorderEdgesOn();
+  // A new filter per scene: it keeps its edge table while the input is older than the table, so
+  // a scene loaded before the previous one was measured would be drawn from stale edges.
+  vtkSmartPointer<vtkPolyDataSilhouette> silhouette;
   vtkNew<vtkPolyDataMapper> silhouetteMapper;
-  silhouetteMapper->SetInputConnection(silhouette->GetOutputPort());
   silhouetteMapper->ScalarVisibilityOff();
   vtkNew<vtkActor> silhouetteActor;
   silhouetteActor->SetMapper(silhouetteMapper);
@@ -175,7 +172,13 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
   for (const nprBenchmarkScene& scene : scenes)
   {
     stage.SetMesh(scene.Mesh, scene.Raw);
+    silhouette = vtkSmartPointer<vtkPolyDataSilhouette>::New();
+    silhouette->SetCamera(stage.Camera());
+    silhouette->SetProp3D(stage.MeshActor);
+    silhouette->SetDirectionToCameraOrigin();
+    silhouette->BorderEdgesOn();
     silhouette->SetInputData(scene.Mesh);
+    silhouetteMapper->SetInputConnection(silhouette->GetOutputPort());
     FitSSAO(methods, nprModelSize(scene.Mesh));
     for (const auto& size : options.Sizes)
     {
