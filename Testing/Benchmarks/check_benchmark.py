@@ -1,10 +1,10 @@
 #!/usr/bin/python3
 # SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""Smoke test of npr-benchmark: runs it with --quick (alone, or with --stress, --coherence or
---drawing) and checks that the files are written and that every figure is sane (F1 in [0, 1], no NaN, positive times).
+"""Smoke test of npr-benchmark: runs it with --quick (alone, or with --stress, --coherence,
+--drawing or --speed) and checks that the files are written and that every figure is sane (F1 in [0, 1], no NaN, positive times).
 
-usage: check_benchmark.py --npr-benchmark EXE --data DIR --out DIR [--stress | --coherence | --drawing]"""
+usage: check_benchmark.py --npr-benchmark EXE --data DIR --out DIR [--stress | --coherence | --drawing | --speed]"""
 import argparse
 import csv
 import math
@@ -145,6 +145,30 @@ def check_drawing(out):
     check(os.path.isfile(md) and "| hidden lines |" in open(md).read(), "drawing.md has no table")
 
 
+SPEED_METHODS = (
+    "plain VTK frame", "vtkNPRPass edges", "vtkNPRPass toon+edges", "vtkNPRPass sketch",
+    "vtkNPRPass toon", "vtkNPRPass inked", "vtkNPRPass drawing",
+    "vtkNPRPass edges, unchanged frame drawn again", "vtkSobelGradientMagnitudePass",
+    "vtkOutlineGlowPass", "vtkSSAOPass", "vtkEDLShading",
+    "vtkPolyDataSilhouette re-extracted + surface",
+    "vtkNPRFeatureLines per camera change (SetCamera + Update)")
+
+
+def check_speed(out):
+    rows = read_csv(os.path.join(out, "speed.csv"))
+    methods = {row["method"] for row in rows}
+    for method in SPEED_METHODS:
+        check(method in methods, "speed.csv: %r missing" % method)
+    check({row["scene"] for row in rows} == {"box"}, "speed.csv: the box only with --quick")
+    for row in rows:
+        check(number(row, "median_ms") > 0.0, "time: %s" % row)
+    md = os.path.join(out, "speed.md")
+    text = open(md).read() if os.path.isfile(md) else ""
+    check("| method | median (ms) | ratio to plain |" in text, "speed.md has no table")
+    check(all(method in text for method in SPEED_METHODS), "speed.md lacks a method")
+    check("nan" not in text.lower(), "speed.md has a NaN")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--npr-benchmark", required=True)
@@ -154,6 +178,7 @@ def main():
     mode.add_argument("--stress", action="store_true")
     mode.add_argument("--coherence", action="store_true")
     mode.add_argument("--drawing", action="store_true")
+    mode.add_argument("--speed", action="store_true")
     args = parser.parse_args()
     shutil.rmtree(args.out, ignore_errors=True)
     command = [args.npr_benchmark, "--quick", "--data", args.data, "--out", args.out]
@@ -163,6 +188,8 @@ def main():
         command.append("--coherence")
     if args.drawing:
         command.append("--drawing")
+    if args.speed:
+        command.append("--speed")
     print(" ".join(command))
     result = subprocess.run(command)
     check(result.returncode == 0, "npr-benchmark exited with %d" % result.returncode)
@@ -172,6 +199,8 @@ def main():
         check_coherence(args.out)
     elif args.drawing:
         check_drawing(args.out)
+    elif args.speed:
+        check_speed(args.out)
     else:
         check_benchmark(args.out)
     print("FAILED (%d failed checks)" % len(failures) if failures else "PASSED")

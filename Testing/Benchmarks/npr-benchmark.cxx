@@ -9,6 +9,7 @@
 #include "nprBenchmarkOptions.h"
 #include "nprBenchmarkReport.h"
 #include "nprBenchmarkScenes.h"
+#include "nprBenchmarkSpeed.h"
 #include "nprBenchmarkStage.h"
 #include "nprBenchmarkStress.h"
 #include "nprEdgeMetrics.h"
@@ -196,6 +197,10 @@ int main(int argc, char* argv[])
       if (options.Drawing)
       {
         return nprRunBenchmarkDrawing(options);
+      }
+      if (options.Speed)
+      {
+        return nprRunBenchmarkSpeed(options);
       }
       return options.Stress ? nprRunBenchmarkStress(options) : RunBenchmark(options);
     });

@@ -16,6 +16,7 @@ const char* const Help = R"(usage: npr-benchmark --data DIR --out DIR [options]
        npr-benchmark --stress --data DIR --out DIR [options]
        npr-benchmark --coherence --data DIR --out DIR [options]
        npr-benchmark --drawing --data DIR --out DIR [options]
+       npr-benchmark --speed --data DIR --out DIR [options]
 
 Times every line method against the plain shaded frame and scores its line mask against the
 object-space reference mask (precision, recall and F1 at 1 and 2 px, mean symmetric distance).
@@ -30,6 +31,12 @@ With --drawing: each scene's technical drawing written as SVG and PDF by a new e
 size, strokes against feature edges, the files rasterised by rsvg-convert and pdftoppm against the
 reference mask), and the drawing style's frame times; writes OUT/drawing.csv and OUT/drawing.md
 (default scenes cad,rotor,bunny,isosurface,bunny1m, size 1920x1080).
+With --speed: the plain VTK frame, every style, an unchanged edges frame and VTK's own passes
+(vtkSobelGradientMagnitudePass, vtkOutlineGlowPass, vtkSSAOPass, vtkEDLShading, and
+vtkPolyDataSilhouette re-extracted every frame), interleaved frame by frame in one window while
+the camera turns 1 degree per frame, and vtkNPRFeatureLines per camera change; writes
+OUT/speed.csv and OUT/speed.md (default scenes bunny1m,box, sizes 1920x1080,1024x768, 30 frames,
+3 runs; --quick: box, 320x240, 2 frames, 1 run).
 
   --data DIR         folder of cad_part.vtp, rotor.ply and bunny.ply
   --out DIR          folder for the results (created)
@@ -37,9 +44,12 @@ reference mask), and the drawing style's frame times; writes OUT/drawing.csv and
                      with a warning when it is missing and --scenes does not name it)
   --frames N         timed frames per method and view (default 10; a warm-up frame first)
   --sizes LIST       WxH sizes, comma separated (default 1024x768,1920x1080)
-  --scenes LIST      of cad, rotor, bunny, isosurface, bunny1m (default all; --stress: cad,bunny)
+  --scenes LIST      of cad, rotor, bunny, isosurface, bunny1m, box (default all but box;
+                     --stress: cad,bunny)
   --methods LIST     method names, or the families edges, inked, objectlines (default all)
   --cameras N        the first N of the 3 cameras (default 3; --stress: 1)
+  --runs N           --speed: repeats of the whole measurement; the median of their medians
+                     is reported (default 3)
   --line-width PX    line width of every method (default 1.5)
   --quick            one small scene (cad), one camera, 320x240, 2 frames, every method
   --stress-cases LIST  --stress: only the cases whose name contains one of these (comma
@@ -63,7 +73,7 @@ void MakeFolder(const std::string& path)
 nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
 {
   nprBenchmarkOptions options;
-  bool framesGiven = false, sizesGiven = false, camerasGiven = false;
+  bool framesGiven = false, sizesGiven = false, camerasGiven = false, runsGiven = false;
   nprArgumentReader arguments(argc, argv, Help);
   while (arguments.Next())
   {
@@ -105,10 +115,11 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
       for (const std::string& scene : options.Scenes)
       {
         const auto& names = nprBenchmarkSceneNames();
-        if (std::find(names.begin(), names.end(), scene) == names.end())
+        // box (--speed's small scene) is not among the defaults.
+        if (scene != "box" && std::find(names.begin(), names.end(), scene) == names.end())
         {
           throw nprUsageError(
-            "unknown scene '" + scene + "' (cad, rotor, bunny, isosurface, bunny1m)");
+            "unknown scene '" + scene + "' (cad, rotor, bunny, isosurface, bunny1m, box)");
         }
       }
     }
@@ -121,6 +132,11 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
       options.Cameras =
         nprParseInteger(arg, arguments.Value(), 1, static_cast<int>(nprBenchmarkCameras().size()));
       camerasGiven = true;
+    }
+    else if (arg == "--runs")
+    {
+      options.Runs = nprParseInteger(arg, arguments.Value(), 1, 100);
+      runsGiven = true;
     }
     else if (arg == "--line-width")
     {
@@ -141,6 +157,10 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
     else if (arg == "--drawing")
     {
       options.Drawing = true;
+    }
+    else if (arg == "--speed")
+    {
+      options.Speed = true;
     }
     else if (arg == "--stress-cases")
     {
@@ -166,6 +186,27 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
   if (options.DenseMesh.empty())
   {
     options.DenseMesh = options.Data + "/bunny_1m.ply";
+  }
+  if (options.Speed)
+  {
+    if (!options.ScenesGiven)
+    {
+      options.Scenes = options.Quick ? std::vector<std::string>{ "box" }
+                                     : std::vector<std::string>{ "bunny1m", "box" };
+      options.ScenesGiven = true;
+    }
+    if (!sizesGiven && !options.Quick)
+    {
+      options.Sizes = { { 1920, 1080 }, { 1024, 768 } };
+    }
+    if (!framesGiven && !options.Quick)
+    {
+      options.Frames = 30;
+    }
+    if (!runsGiven && options.Quick)
+    {
+      options.Runs = 1;
+    }
   }
   if (options.Quick)
   {

@@ -24,6 +24,8 @@ struct nprBenchmarkOptions
   bool Stress = false;
   bool Coherence = false;
   bool Drawing = false;
+  bool Speed = false;
+  int Runs = 3;                         // --speed: the whole interleaved measurement repeated
   std::vector<std::string> StressCases; // name parts; empty: every case
   double MaxDrift = -1.0;               // < 0: report only
   bool SaveMasks = false;

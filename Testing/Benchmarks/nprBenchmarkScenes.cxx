@@ -19,6 +19,7 @@
 #include "vtkPolyData.h"
 #include "vtkRTAnalyticSource.h"
 #include "vtkRenderer.h"
+#include "vtkTessellatedBoxSource.h"
 #include "vtkTriangleFilter.h"
 
 #include <array>
@@ -129,6 +130,17 @@ nprBenchmarkScene nprLoadBenchmarkScene(
   {
     scene.Raw = Isosurface();
     scene.Description = "isosurface of vtkRTAnalyticSource, extent [-50,50]^3, value 200";
+  }
+  else if (name == "box")
+  {
+    // The small end of the scale: per-frame cost with next to no geometry.
+    vtkNew<vtkTessellatedBoxSource> box;
+    box->SetBounds(-0.5, 0.5, -0.4, 0.4, -0.3, 0.3);
+    box->SetLevel(2);
+    box->QuadsOff();
+    box->Update();
+    scene.Raw = Geometry(box->GetOutput());
+    scene.Description = "box (vtkTessellatedBoxSource, level 2, triangles)";
   }
   else if (name == "bunny1m")
   {

@@ -1,0 +1,327 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "nprBenchmarkSpeed.h"
+
+#include "nprBenchmarkOptions.h"
+#include "nprBenchmarkReport.h"
+#include "nprBenchmarkScenes.h"
+#include "nprBenchmarkStage.h"
+#include "nprPassSettings.h"
+#include "nprTiming.h"
+
+#include "vtkCamera.h"
+#include "vtkEDLShading.h"
+#include "vtkNPRPass.h"
+#include "vtkNPRRenderWindowFactory.h"
+#include "vtkOutlineGlowPass.h"
+#include "vtkPolyDataSilhouette.h"
+#include "vtkProperty.h"
+#include "vtkRenderPass.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkSSAOPass.h"
+#include "vtkSobelGradientMagnitudePass.h"
+
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace
+{
+const char* const FeatureLinesName = "vtkNPRFeatureLines per camera change (SetCamera + Update)";
+
+// How one method draws its frame.
+struct SpeedMethod
+{
+  std::string Name;
+  vtkSmartPointer<vtkRenderPass> Pass; // nullptr: VTK's own chain
+  bool Unchanged = false;              // time a second render of the same frame
+  bool Silhouette = false;             // vtkPolyDataSilhouette's lines over the plain surface
+};
+
+struct SpeedRow
+{
+  std::string Scene, Size, Method;
+  int Run = 0;
+  double MedianMs = 0.0;
+};
+
+std::string Fixed(double value, int decimals)
+{
+  std::ostringstream text;
+  text.setf(std::ios::fixed);
+  text.precision(decimals);
+  text << value;
+  return text.str();
+}
+
+vtkSmartPointer<vtkRenderPass> NPRStyle(const std::string& style)
+{
+  nprPassSettings settings;
+  settings.Style = style;
+  return nprMakePass(settings);
+}
+
+// Each of VTK's image passes over the ordinary render steps, as VTK's own examples use them.
+template <typename Pass>
+vtkSmartPointer<vtkRenderPass> OverRenderSteps()
+{
+  auto pass = vtkSmartPointer<Pass>::New();
+  vtkNew<vtkRenderStepsPass> steps;
+  pass->SetDelegatePass(steps);
+  return pass;
+}
+
+std::vector<SpeedMethod> MakeMethods()
+{
+  std::vector<SpeedMethod> methods;
+  methods.push_back({ "plain VTK frame", nullptr });
+  for (const char* style : { "edges", "toon+edges", "sketch", "toon", "inked", "drawing" })
+  {
+    methods.push_back({ std::string("vtkNPRPass ") + style, NPRStyle(style) });
+  }
+  // Its own pass, so that the edges method above draws every frame from scratch.
+  methods.push_back({ "vtkNPRPass edges, unchanged frame drawn again", NPRStyle("edges"), true });
+  methods.push_back(
+    { "vtkSobelGradientMagnitudePass", OverRenderSteps<vtkSobelGradientMagnitudePass>() });
+  methods.push_back({ "vtkOutlineGlowPass", OverRenderSteps<vtkOutlineGlowPass>() });
+  methods.push_back({ "vtkSSAOPass", OverRenderSteps<vtkSSAOPass>() });
+  methods.push_back({ "vtkEDLShading", OverRenderSteps<vtkEDLShading>() });
+  methods.push_back({ "vtkPolyDataSilhouette re-extracted + surface", nullptr, false, true });
+  return methods;
+}
+
+// SSAO's radius and bias follow the scene's size (as in VTK's SSAO example: a tenth and a
+// thousandth of it), so that the occlusion is sampled alike on both scenes.
+void FitSSAO(const std::vector<SpeedMethod>& methods, double sceneSize)
+{
+  for (const SpeedMethod& method : methods)
+  {
+    if (auto* ssao = vtkSSAOPass::SafeDownCast(method.Pass))
+    {
+      ssao->SetRadius(0.1 * sceneSize);
+      ssao->SetBias(0.001 * sceneSize);
+      ssao->SetKernelSize(128);
+      ssao->BlurOff();
+    }
+  }
+}
+}
+
+int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
+{
+  const nprClock::time_point runStart = nprClock::now();
+  nprMakeBenchmarkFolders(options);
+  const std::vector<nprBenchmarkScene> scenes =
+    nprLoadBenchmarkScenes(options.Scenes, options.Data, options.DenseMesh, options.ScenesGiven);
+  nprBenchmarkStage stage(options.LineWidth);
+  stage.Window->SetMultiSamples(0);
+  std::vector<SpeedMethod> methods = MakeMethods();
+
+  // vtkPolyDataSilhouette for the current camera, drawn as lines over the surface.
+  // A new filter per scene: it keeps its edge table while the input is older than the table, so
+  // a scene loaded before the previous one was measured would be drawn from stale edges.
+  vtkSmartPointer<vtkPolyDataSilhouette> silhouette;
+  vtkNew<vtkPolyDataMapper> silhouetteMapper;
+  silhouetteMapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> silhouetteActor;
+  silhouetteActor->SetMapper(silhouetteMapper);
+  silhouetteActor->GetProperty()->SetColor(0.0, 0.0, 0.0);
+  silhouetteActor->GetProperty()->SetLineWidth(static_cast<float>(options.LineWidth));
+  silhouetteActor->GetProperty()->LightingOff();
+  silhouetteActor->VisibilityOff();
+  stage.Renderer->AddActor(silhouetteActor);
+
+  auto activate = [&](const SpeedMethod& method)
+  {
+    stage.Activate(nullptr, false); // coincident-topology resolution as users get it
+    stage.Renderer->SetPass(method.Pass);
+    silhouetteActor->SetVisibility(method.Silhouette);
+    if (method.Silhouette)
+    {
+      // Lines on the surface win the depth test as they would in an application.
+      vtkMapper::SetResolveCoincidentTopology(VTK_RESOLVE_POLYGON_OFFSET);
+    }
+  };
+  auto timedFrame = [&](const SpeedMethod& method)
+  {
+    activate(method);
+    if (method.Unchanged)
+    {
+      nprTimeFrame(stage.Window, stage.Camera()); // this frame drawn once, untimed
+      const nprClock::time_point start = nprClock::now();
+      stage.Window->Render(); // nothing changed: what the pass reuses
+      stage.Window->WaitForCompletion();
+      return std::chrono::duration<double, std::milli>(nprClock::now() - start).count();
+    }
+    return nprTimeFrame(stage.Window, stage.Camera(),
+      [&]()
+      {
+        if (method.Silhouette)
+        {
+          silhouette->Modified(); // the extraction is part of every frame
+        }
+      });
+  };
+
+  std::vector<SpeedRow> rows;
+  for (const nprBenchmarkScene& scene : scenes)
+  {
+    stage.SetMesh(scene.Mesh, scene.Raw);
+    silhouette = vtkSmartPointer<vtkPolyDataSilhouette>::New();
+    silhouette->SetCamera(stage.Camera());
+    silhouette->SetProp3D(stage.MeshActor);
+    silhouette->SetDirectionToCameraOrigin();
+    silhouette->BorderEdgesOn();
+    silhouette->SetInputData(scene.Mesh);
+    silhouetteMapper->SetInputConnection(silhouette->GetOutputPort());
+    FitSSAO(methods, nprModelSize(scene.Mesh));
+    for (const auto& size : options.Sizes)
+    {
+      stage.Window->SetSize(size.first, size.second);
+      const std::string sizeName = std::to_string(size.first) + "x" + std::to_string(size.second);
+      for (int run = 0; run < options.Runs; ++run)
+      {
+        const nprClock::time_point viewStart = nprClock::now();
+        // The same camera path in every run; frame -1 warms every method up (shaders, buffers
+        // of this size, the silhouette's edge table).
+        stage.Activate(nullptr, false);
+        nprApplyBenchmarkCamera(stage.Renderer, nprBenchmarkCameras()[0]);
+        std::vector<std::vector<double>> times(methods.size());
+        for (int frame = -1; frame < options.Frames; ++frame)
+        {
+          if (frame >= 0)
+          {
+            stage.Camera()->Azimuth(1.0);
+            stage.Renderer->ResetCameraClippingRange();
+          }
+          for (size_t m = 0; m < methods.size(); ++m)
+          {
+            const double ms = timedFrame(methods[m]);
+            if (frame >= 0)
+            {
+              times[m].push_back(ms);
+            }
+          }
+        }
+        for (size_t m = 0; m < methods.size(); ++m)
+        {
+          rows.push_back({ scene.Name, sizeName, methods[m].Name, run + 1, nprMedian(times[m]) });
+        }
+        std::cerr << "npr-benchmark: " << scene.Name << " " << sizeName << " run " << run + 1
+                  << ": plain " << Fixed(nprMedian(times[0]), 1) << " ms, done in "
+                  << Fixed(nprSecondsSince(viewStart), 1) << " s\n";
+      }
+    }
+
+    // Object-space feature lines per camera change: the first update builds the adjacency.
+    activate(methods[0]);
+    nprApplyBenchmarkCamera(stage.Renderer, nprBenchmarkCameras()[0]);
+    stage.FeatureLines->SetCamera(stage.Camera());
+    stage.FeatureLines->Update();
+    for (int run = 0; run < options.Runs; ++run)
+    {
+      std::vector<double> times;
+      for (int frame = 0; frame < options.Frames; ++frame)
+      {
+        stage.Camera()->Azimuth(1.0);
+        const nprClock::time_point start = nprClock::now();
+        stage.FeatureLines->SetCamera(stage.Camera());
+        stage.FeatureLines->Update();
+        times.push_back(std::chrono::duration<double, std::milli>(nprClock::now() - start).count());
+      }
+      rows.push_back({ scene.Name, "any", FeatureLinesName, run + 1, nprMedian(times) });
+    }
+  }
+  for (const SpeedMethod& method : methods)
+  {
+    if (method.Pass)
+    {
+      method.Pass->ReleaseGraphicsResources(stage.Window);
+    }
+  }
+  stage.Renderer->SetPass(nullptr);
+
+  // ---- Reports: the median of the runs' medians; the ratio is taken within each run ----
+  std::ofstream csv(options.Out + "/speed.csv");
+  csv << "scene,size,method,run,median_ms\n";
+  std::string problems;
+  for (const SpeedRow& row : rows)
+  {
+    csv << row.Scene << "," << row.Size << ",\"" << row.Method << "\"," << row.Run << ","
+        << row.MedianMs << "\n";
+    if (!(row.MedianMs > 0.0))
+    {
+      problems += row.Scene + " " + row.Size + " " + row.Method + ": no positive time\n";
+    }
+  }
+  std::ostringstream md;
+  md << "Frame times (npr-benchmark --speed) on "
+     << vtkNPRRenderWindowFactory::GetGLRenderer(stage.Window) << ", no MSAA: median of "
+     << options.Frames << " frames (camera turned 1 degree per frame, the methods interleaved), "
+     << "median of " << options.Runs << " run" << (options.Runs > 1 ? "s" : "")
+     << "; the ratio is to the plain VTK frame of the same run.\n";
+  for (const nprBenchmarkScene& scene : scenes)
+  {
+    for (const auto& size : options.Sizes)
+    {
+      const std::string sizeName = std::to_string(size.first) + "x" + std::to_string(size.second);
+      std::map<int, double> plain;
+      for (const SpeedRow& row : rows)
+      {
+        if (row.Scene == scene.Name && row.Size == sizeName && row.Method == methods[0].Name)
+        {
+          plain[row.Run] = row.MedianMs;
+        }
+      }
+      md << "\n"
+         << scene.Name << " (" << scene.Triangles << " triangles), " << sizeName << ":\n\n"
+         << "| method | median (ms) | ratio to plain | over plain (ms) |\n|---|---|---|---|\n";
+      for (const SpeedMethod& method : methods)
+      {
+        std::vector<double> ms, ratios, extra;
+        for (const SpeedRow& row : rows)
+        {
+          if (row.Scene == scene.Name && row.Size == sizeName && row.Method == method.Name)
+          {
+            ms.push_back(row.MedianMs);
+            ratios.push_back(row.MedianMs / plain[row.Run]);
+            extra.push_back(row.MedianMs - plain[row.Run]);
+          }
+        }
+        md << "| " << method.Name << " | " << Fixed(nprMedian(ms), 1) << " | "
+           << Fixed(nprMedian(ratios), 2) << " | " << Fixed(nprMedian(extra), 1) << " |\n";
+      }
+    }
+    std::vector<double> lines;
+    for (const SpeedRow& row : rows)
+    {
+      if (row.Scene == scene.Name && row.Method == FeatureLinesName)
+      {
+        lines.push_back(row.MedianMs);
+      }
+    }
+    md << "\n"
+       << scene.Name << ": " << FeatureLinesName << ": " << Fixed(nprMedian(lines), 1)
+       << " ms (any size)\n";
+  }
+  std::ofstream markdown(options.Out + "/speed.md");
+  markdown << md.str();
+  std::cout << md.str();
+  if (!csv || !markdown)
+  {
+    throw std::runtime_error(options.Out + ": cannot write speed.csv or speed.md");
+  }
+  std::cerr << "npr-benchmark: wrote " << options.Out << "/speed.{csv,md} in "
+            << nprFormat(nprSecondsSince(runStart), 4) << " s\n";
+  if (!problems.empty())
+  {
+    std::cerr << "npr-benchmark: error:\n" << problems;
+    return 1;
+  }
+  return 0;
+}
