@@ -145,14 +145,8 @@ bool vtkNPRDrawingLines::Update()
     vtkErrorMacro("no renderer");
     return false;
   }
-  int width = this->Size[0], height = this->Size[1];
-  if (width <= 0 || height <= 0)
-  {
-    const int* size = this->Renderer->GetRenderWindow() ? this->Renderer->GetSize() : nullptr;
-    width = size ? size[0] : 0;
-    height = size ? size[1] : 0;
-  }
-  if (width <= 0 || height <= 0)
+  int width, height;
+  if (!vtkNPRImageSize(this->Renderer, this->Size, width, height))
   {
     vtkErrorMacro("no size: set Size or put the renderer in a window with a size");
     return false;

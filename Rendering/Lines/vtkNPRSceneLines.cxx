@@ -33,6 +33,19 @@ double Seconds(Clock::time_point start)
 }
 }
 
+bool vtkNPRImageSize(vtkRenderer* renderer, const int size[2], int& width, int& height)
+{
+  width = size[0];
+  height = size[1];
+  if (width <= 0 || height <= 0)
+  {
+    const int* own = renderer->GetRenderWindow() ? renderer->GetSize() : nullptr;
+    width = own ? own[0] : 0;
+    height = own ? own[1] : 0;
+  }
+  return width > 0 && height > 0;
+}
+
 void vtkNPRSceneView::Set(vtkCamera* camera, int width, int height)
 {
   this->Width = width;

@@ -21,6 +21,10 @@ class vtkNPRFeatureLines;
 class vtkPolyData;
 class vtkRenderer;
 
+// The image size of a renderer: `size` when both are positive, else the renderer's size in its
+// window. False when there is none.
+bool vtkNPRImageSize(vtkRenderer* renderer, const int size[2], int& width, int& height);
+
 // The camera of a frame as the image sees it.
 struct vtkNPRSceneView
 {

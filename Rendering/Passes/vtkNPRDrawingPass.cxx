@@ -7,6 +7,7 @@
 #include "vtkNPREdgePass.h"
 #include "vtkNPRFrameSignature.h"
 #include "vtkNPRGBufferPass.h"
+#include "vtkNPRNearestDepth.h"
 #include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkNPRQuadProgram.h"
@@ -146,6 +147,8 @@ void vtkNPRDrawingPass::Render(const vtkRenderState* state)
   {
     internal.CompositeSource = vtkNPRDrawingFS;
     vtkShaderProgram::Substitute(internal.CompositeSource, "//NPR::WindowDepth", vtkNPRWindowDepth);
+    vtkShaderProgram::Substitute(
+      internal.CompositeSource, "//NPR::NearestDepth", vtkNPRNearestDepth);
   }
   vtkShaderProgram* program =
     internal.Composite.Ready(window, internal.CompositeSource, defines.str());

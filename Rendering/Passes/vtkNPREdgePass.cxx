@@ -20,6 +20,7 @@
 #include "vtkNPREdgeCompositeFS.h"
 #include "vtkNPREdgeDetectFS.h"
 #include "vtkNPRLineColor.h"
+#include "vtkNPRNearestDepth.h"
 #include "vtkNPRWindowDepth.h"
 
 #include <algorithm>
@@ -305,6 +306,8 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
     internal.CompositeSource = vtkNPREdgeCompositeFS;
     vtkShaderProgram::Substitute(internal.CompositeSource, "//NPR::LineColor", vtkNPRLineColor);
     vtkShaderProgram::Substitute(internal.CompositeSource, "//NPR::WindowDepth", vtkNPRWindowDepth);
+    vtkShaderProgram::Substitute(
+      internal.CompositeSource, "//NPR::NearestDepth", vtkNPRNearestDepth);
   }
   vtkNPRQuadProgram& composite =
     output == OutputLineCoverage ? internal.Coverage : internal.Composite;

@@ -209,30 +209,9 @@ int DrawingCube(bool parallel)
 }
 
 // Distance from p to the outline (convex polygon edges) of the given points' hull.
-double DistanceToHull(const Image2& p, std::vector<Image2> points)
+double DistanceToHull(const Image2& p, const std::vector<Image2>& points)
 {
-  std::sort(points.begin(), points.end());
-  std::vector<Image2> hull(2 * points.size());
-  size_t k = 0;
-  auto cross = [](const Image2& o, const Image2& a, const Image2& b)
-  { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); };
-  for (size_t i = 0; i < points.size(); ++i)
-  {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0)
-    {
-      --k;
-    }
-    hull[k++] = points[i];
-  }
-  for (size_t i = points.size() - 1, t = k + 1; i > 0; --i)
-  {
-    while (k >= t && cross(hull[k - 2], hull[k - 1], points[i - 1]) <= 0)
-    {
-      --k;
-    }
-    hull[k++] = points[i - 1];
-  }
-  hull.resize(k - 1);
+  const std::vector<Image2> hull = ConvexHull(points);
   double best = 1e300;
   for (size_t i = 0; i < hull.size(); ++i)
   {

@@ -224,4 +224,32 @@ vtkSmartPointer<vtkPolyData> CubeSource(double size)
   cube->Update();
   return cube->GetOutput();
 }
+
+std::vector<std::array<double, 2>> ConvexHull(std::vector<std::array<double, 2>> points)
+{
+  std::sort(points.begin(), points.end());
+  std::vector<std::array<double, 2>> hull(2 * points.size());
+  size_t k = 0;
+  auto cross = [](const std::array<double, 2>& o, const std::array<double, 2>& a,
+                 const std::array<double, 2>& b)
+  { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); };
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0)
+    {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, t = k + 1; i > 0; --i)
+  {
+    while (k >= t && cross(hull[k - 2], hull[k - 1], points[i - 1]) <= 0)
+    {
+      --k;
+    }
+    hull[k++] = points[i - 1];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
 }

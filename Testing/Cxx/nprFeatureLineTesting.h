@@ -70,6 +70,9 @@ vtkSmartPointer<vtkPolyData> Triangulated(vtkPolyData* input);
 // vtkCubeSource's cube: 24 points, each face with its own four.
 vtkSmartPointer<vtkPolyData> CubeSource(double size = 1.0);
 
+// Andrew's monotone chain: the convex hull of 2D points, counter-clockwise.
+std::vector<std::array<double, 2>> ConvexHull(std::vector<std::array<double, 2>> points);
+
 // A window whose renderer the reference mask reads; nothing is rendered unless a test does.
 struct MaskScene
 {

@@ -10,22 +10,8 @@ uniform sampler2D depthTexture;
 uniform ivec2 viewportOrigin; // of the renderer in the window
 uniform vec3 faceColor;
 //NPR::WindowDepth
+//NPR::NearestDepth
 //VTK::Output::Dec
-
-// Strokes reaching past a surface onto the background belong to the nearest surface around.
-float nprNearestDepth(ivec2 p)
-{
-  ivec2 size = textureSize(depthTexture, 0);
-  float nearest = 1.0;
-  for (int r = 1; r <= NPR_RADIUS; ++r)
-  {
-    nearest = min(nearest, texelFetch(depthTexture, clamp(p + ivec2(r, 0), ivec2(0), size - 1), 0).r);
-    nearest = min(nearest, texelFetch(depthTexture, clamp(p - ivec2(r, 0), ivec2(0), size - 1), 0).r);
-    nearest = min(nearest, texelFetch(depthTexture, clamp(p + ivec2(0, r), ivec2(0), size - 1), 0).r);
-    nearest = min(nearest, texelFetch(depthTexture, clamp(p - ivec2(0, r), ivec2(0), size - 1), 0).r);
-  }
-  return nearest;
-}
 
 void main()
 {
