@@ -33,6 +33,8 @@
 #   NPR_CHROOT_BASE    folder of the chroots (default /var/cache/vtknpr)
 #   NPR_DEBIAN_MIRROR  Debian archive URI (default: from /etc/apt/sources.list{,.d})
 #   NPR_CHROOT_BUILD   a host folder mounted at /build in the chroot (optional)
+#   NPR_CHROOT_CCACHE  a host folder mounted at /ccache in the chroot, ccache's cache there
+#                      (optional; CCACHE_DIR points to it)
 set -Eeuo pipefail
 trap 'echo "debian-chroot: ${name:-}: failed at line $LINENO" >&2' ERR
 
@@ -48,7 +50,7 @@ elif [[ $action != setup && $action != run && $action != refresh && $action != b
   usage
 fi
 if ((EUID != 0)); then
-  exec sudo --preserve-env=NPR_CHROOT_BASE,NPR_DEBIAN_MIRROR,NPR_CHROOT_BUILD \
+  exec sudo --preserve-env=NPR_CHROOT_BASE,NPR_DEBIAN_MIRROR,NPR_CHROOT_BUILD,NPR_CHROOT_CCACHE \
     bash "${BASH_SOURCE[0]}" "$@"
 fi
 source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -57,8 +59,8 @@ base=${NPR_CHROOT_BASE:-/var/cache/vtknpr}
 # What every chroot needs to build and test: the toolchain, Mesa's EGL (software), Xvfb, Cairo
 # (the passes paint the drawing style's strokes with it); and to make Debian packages with CPack
 # (dpkg-shlibdeps, file).
-common=(cmake ninja-build g++ xvfb xauth libegl-mesa0 libgl1-mesa-dri libopengl-dev libcairo2-dev
-  dpkg-dev file)
+common=(cmake ninja-build g++ ccache xvfb xauth libegl-mesa0 libgl1-mesa-dri libopengl-dev
+  libcairo2-dev dpkg-dev file)
 # VTK and its Python bindings; EGL's development files for the module's own EGL window (VTK < 9.4);
 # xdotool to drive npr-view in its test; rsvg-convert and pdftoppm to rasterise the exported SVG and
 # PDF drawings in theirs. The ParaView plugin compiles the passes and lines only and needs none of
@@ -117,7 +119,8 @@ host_mirror() {
 in_chroot() {
   unshare --mount --fork --propagation private /bin/bash -c '
     set -e
-    root=$1 src=$2 command=$3 build=$4
+    root=$1 src=$2 command=$3 build=$4 ccache=$5
+    cache_environment=()
     mount -t proc proc "$root/proc"
     mount --rbind /sys "$root/sys"
     mount --rbind /dev "$root/dev"
@@ -127,12 +130,17 @@ in_chroot() {
       mkdir -p "$root/build"
       mount --bind "$build" "$root/build"
     fi
+    if [ -n "$ccache" ]; then
+      mkdir -p "$root/ccache" "$ccache"
+      mount --bind "$ccache" "$root/ccache"
+      cache_environment=(CCACHE_DIR=/ccache CCACHE_NOHASHDIR=1)
+    fi
     cp -L /etc/resolv.conf "$root/etc/resolv.conf" 2>/dev/null || true
     exec chroot "$root" /usr/bin/env -i HOME=/root LANG=C.UTF-8 TERM=dumb \
       PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
       DEBIAN_FRONTEND=noninteractive OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
-      /bin/bash -c "cd /src && $command"
-  ' in-chroot "$root" "$source_dir" "$1" "${NPR_CHROOT_BUILD:-}"
+      "${cache_environment[@]}" /bin/bash -c "cd /src && $command"
+  ' in-chroot "$root" "$source_dir" "$1" "${NPR_CHROOT_BUILD:-}" "${NPR_CHROOT_CCACHE:-}"
 }
 
 # The release's minimal system, $NPR_CHROOT_BASE/base-SUITE, made once with debootstrap (chroots

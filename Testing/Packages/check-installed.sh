@@ -77,16 +77,18 @@ check_vtk() {
 }
 
 check_paraview() {
+  # -noreset: pvbatch connects as pvpython, its parent, leaves; a resetting Xvfb would drop it.
+  local xvfb_args="-screen 0 1280x1024x24 -noreset"
   check packages-installed-paraview installed_version paraview-vtknpr
   local plugin
   plugin=$(dpkg -L paraview-vtknpr | grep '/NPRView\.so$' | head -n 1)
   echo "check-packages: the plugin is $plugin"
   # pvpython loads the installed plugin by its path, reports its version, renders the NPR view.
-  check pvpython-plugin xvfb-run -a -s "-screen 0 1280x1024x24" pvpython \
+  check pvpython-plugin xvfb-run -a -s "$xvfb_args" pvpython \
     /src/Testing/Packages/check_plugin.py "$plugin" "$upstream" "$work/plugin.png"
   # The documented way to load it at start-up: PV_PLUGIN_PATH, with the pvbatch snippet of
   # Documentation/paraview.md.
-  check pvbatch-plugin-path xvfb-run -a -s "-screen 0 1280x1024x24" pvpython \
+  check pvbatch-plugin-path xvfb-run -a -s "$xvfb_args" pvpython \
     /src/Plugin/Testing/Python/TestDocSnippet.py --pvbatch "$(command -v pvbatch)" \
     --plugin-dir "$(dirname "$plugin")" --page /src/Documentation/paraview.md \
     --output-dir "$work/doc-snippet"
