@@ -15,6 +15,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -71,6 +72,16 @@ double Dot(const double a[3], const double b[3])
 {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
+
+// The side of a face's plane the eye is on, per face and camera, from single-precision data:
+// decided where the value is farther from zero than its error bound, which the double-precision
+// test per edge (the reference) then cannot contradict; unsure faces take that test.
+constexpr unsigned SideFacing = 1; // the double-precision term is negative (else positive)
+constexpr unsigned SideUnsure = 2; // too close to zero to tell here, or not finite
+// Relative error allowed for the single-precision terms: over five times the worst case (the
+// normal's, the offset's and the eye's rounding to float, 2^-24 each, and the float products'
+// and sums' rounding).
+constexpr double FaceSideTolerance = 2e-6;
 }
 
 // The mesh's edges with their faces, built once per mesh.
@@ -97,20 +108,41 @@ struct vtkNPRFeatureLines::Adjacency
 
   std::vector<double> Coordinates; // of every input point, double
   std::vector<double> Normals;     // unit normal of every oriented face
+  // Per face, for the side-of-plane test of each camera (20 bytes instead of reading the
+  // normal and a point in double for each edge): the unit normal in float, its offset n.(q - c)
+  // for the face's first point q relative to the mesh's centre c, and the terms that bound the
+  // error of the test, FaceSideTolerance * (Bound + |eye - c|): |offset|, |q - c|, the face's
+  // size, and how far its other points lie from the plane through q (rounding, non-planarity).
+  struct FaceView
+  {
+    float Normal[3];
+    float Offset;
+    float Bound;
+  };
+  std::vector<FaceView> FaceViews; // while building
+  // The same in the faces' Z order, an array per member, for the viewpoint pass.
+  std::vector<float> FaceNormals[3], FaceOffsets, FaceBounds;
+  double Centre[3] = { 0.0, 0.0, 0.0 };
   std::vector<Edge> Edges;
   vtkIdType DegenerateFaces = 0;
-  // What the viewpoint pass reads, packed (13 bytes an edge instead of the Edge's 48: the pass is
-  // bound by memory traffic): each edge's two faces and first point, its kind (ViewKind bits),
-  // and whether it is a crease at CreaseAngle (computed again when the angle changes).
+  // What the viewpoint pass reads, packed (10 bytes an edge, 17 with those read only for a typed
+  // edge or an unsure face, instead of the Edge's 48: the pass is bound by memory traffic), in
+  // the order of the edges' first faces (Z order): each edge's index in Edges, its two faces and
+  // first point, its kind (ViewKind bits), and whether it is a crease at CreaseAngle (computed
+  // again when the angle changes).
+  std::vector<std::uint32_t> ViewEdges; // index in Edges
   std::vector<std::uint32_t> ViewFaces; // 2 an edge
   std::vector<std::uint32_t> ViewPoints;
   std::vector<unsigned char> ViewKinds;
   std::vector<unsigned char> Creases;
   double CreaseAngle = -1.0; // of Creases; < 0: none computed
-  // Scratch of the viewpoint pass, kept to save their allocation: each edge's type, each input
-  // point's output id (all -1 between updates).
-  std::vector<unsigned char> EdgeTypes;
+  // Scratch of the viewpoint pass, kept to save their allocation: per block of edges its typed
+  // edges (index in Edges) with their types, each input point's output id (all -1 between
+  // updates), each face's side (SideFacing, SideUnsure bits) for the last viewpoint.
+  std::vector<std::vector<std::pair<std::uint32_t, unsigned char>>> TypedEdges;
   std::vector<vtkIdType> OutputIds;
+  std::vector<unsigned char> FaceSides;
+  vtkIdType UnsureFaces = 0;
   vtkIdType NonFiniteFaces = 0;
 
   bool IsCurrent(vtkPolyData* input, bool merge) const
@@ -125,7 +157,56 @@ struct vtkNPRFeatureLines::Adjacency
   }
 
   void Build(vtkPolyData* input, bool merge, vtkNPRFeatureLines* self);
+  // FaceSides and UnsureFaces for an eye (perspective) or a direction of projection (parallel).
+  void ComputeFaceSides(bool parallel, const double view[3]);
 };
+
+void vtkNPRFeatureLines::Adjacency::ComputeFaceSides(bool parallel, const double view[3])
+{
+  const vtkIdType faceCount = static_cast<vtkIdType>(this->FaceOffsets.size());
+  this->FaceSides.resize(this->FaceOffsets.size());
+  const float* nx = this->FaceNormals[0].data();
+  const float* ny = this->FaceNormals[1].data();
+  const float* nz = this->FaceNormals[2].data();
+  const float* offsets = this->FaceOffsets.data();
+  const float* bounds = this->FaceBounds.data();
+  unsigned char* sides = this->FaceSides.data();
+  double toEye[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    toEye[k] = parallel ? view[k] : view[k] - this->Centre[k];
+  }
+  const float ex = static_cast<float>(toEye[0]), ey = static_cast<float>(toEye[1]),
+              ez = static_cast<float>(toEye[2]);
+  const float toEyeLength = static_cast<float>(std::sqrt(Dot(toEye, toEye)) * (1.0 + 1e-6));
+  const float tolerance = static_cast<float>(FaceSideTolerance);
+  vtkSMPThreadLocal<vtkIdType> unsure(0);
+  // In float, in a loop the compiler vectorises: FaceSideTolerance covers float arithmetic.
+  vtkSMPTools::For(0, faceCount,
+    [=, &unsure](vtkIdType first, vtkIdType last)
+    {
+      int unsureHere = 0;
+      for (vtkIdType f = first; f < last; ++f)
+      {
+        const float projected = nx[f] * ex + ny[f] * ey + nz[f] * ez;
+        // Perspective: n.(q - eye) = offset - n.(eye - c); parallel: n.direction.
+        const float value = parallel ? projected : offsets[f] - projected;
+        const float error =
+          parallel ? tolerance * toEyeLength : tolerance * (bounds[f] + toEyeLength);
+        const bool facing = value < -error;
+        const bool unsureFace = !facing && !(value > error);
+        sides[f] =
+          static_cast<unsigned char>((facing ? SideFacing : 0u) | (unsureFace ? SideUnsure : 0u));
+        unsureHere += unsureFace ? 1 : 0;
+      }
+      unsure.Local() += unsureHere;
+    });
+  this->UnsureFaces = 0;
+  for (vtkIdType count : unsure)
+  {
+    this->UnsureFaces += count;
+  }
+}
 
 void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPRFeatureLines* self)
 {
@@ -142,6 +223,12 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
   this->Merged = merge;
   this->Valid = true;
   this->Normals.clear();
+  this->FaceViews.clear();
+  for (auto* array : { &this->FaceNormals[0], &this->FaceNormals[1], &this->FaceNormals[2],
+         &this->FaceOffsets, &this->FaceBounds })
+  {
+    array->clear();
+  }
   this->Edges.clear();
   this->DegenerateFaces = 0;
   this->NonFiniteFaces = 0;
@@ -154,6 +241,22 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
     double* x = &this->Coordinates[3 * i];
     points->GetPoint(i, x);
     finite[i] = std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+  }
+  // The centre of the finite points' bounds: the face offsets are taken relative to it, so that
+  // a mesh far from the origin keeps its digits in float.
+  double lower[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double upper[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    for (int k = 0; finite[i] && k < 3; ++k)
+    {
+      lower[k] = std::min(lower[k], this->Coordinates[3 * i + k]);
+      upper[k] = std::max(upper[k], this->Coordinates[3 * i + k]);
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Centre[k] = lower[k] <= upper[k] ? lower[k] + 0.5 * (upper[k] - lower[k]) : 0.0;
   }
   if (numberOfPoints > static_cast<vtkIdType>(std::numeric_limits<std::uint32_t>::max()))
   {
@@ -206,6 +309,39 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
   faceOfUse.reserve(halfEdges.capacity());
   const double* coordinates = this->Coordinates.data();
 
+  // The single-precision copy of a face's plane for the side-of-plane test, and the bound of its
+  // error (FaceView).
+  const double* centre = this->Centre;
+  auto makeFaceView = [&](const double unit[3], vtkIdType size, const vtkIdType* ids)
+  {
+    FaceView view;
+    double single[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      view.Normal[k] = static_cast<float>(unit[k]);
+      single[k] = view.Normal[k];
+    }
+    const double* q = coordinates + 3 * ids[0];
+    const double fromCentre[3] = { q[0] - centre[0], q[1] - centre[1], q[2] - centre[2] };
+    const double offset = Dot(single, fromCentre);
+    view.Offset = static_cast<float>(offset);
+    double extent = 0.0, offPlane = 0.0;
+    for (vtkIdType i = 1; i < size; ++i)
+    {
+      const double* p = coordinates + 3 * ids[i];
+      const double d[3] = { p[0] - q[0], p[1] - q[1], p[2] - q[2] };
+      const double distance = std::sqrt(Dot(d, d));
+      extent = std::max(extent, distance);
+      offPlane = std::max(offPlane, std::abs(Dot(unit, d)) + 1e-15 * distance);
+    }
+    const double bound = std::abs(offset) + std::sqrt(Dot(fromCentre, fromCentre)) + extent +
+      offPlane / FaceSideTolerance;
+    view.Bound = static_cast<float>(bound * (1.0 + 1e-6)); // rounded up, or infinite
+    return view;
+  };
+
+  std::vector<vtkIdType> faceFirstPoints; // for the faces' Z order below
+
   // Adds one face (point ids in its winding order) to the table.
   auto addFace = [&](vtkIdType size, const vtkIdType* ids)
   {
@@ -252,10 +388,14 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
       return;
     }
     const vtkIdType face = static_cast<vtkIdType>(this->Normals.size() / 3);
+    double unit[3];
     for (int k = 0; k < 3; ++k)
     {
-      this->Normals.push_back(normal[k] / length);
+      unit[k] = normal[k] / length;
+      this->Normals.push_back(unit[k]);
     }
+    this->FaceViews.push_back(makeFaceView(unit, size, ids));
+    faceFirstPoints.push_back(ids[0]);
     for (vtkIdType i = 0; i < size; ++i)
     {
       vtkIdType a = representative[ids[i]];
@@ -357,8 +497,74 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
     edge.Angle = vtkMath::DegreesFromRadians(std::atan2(vtkMath::Norm(cross), Dot(n0, n1)));
   }
 
-  // The packed copy the viewpoint pass reads.
+  // The faces renumbered in the Z order of their first points, for the viewpoint pass: an
+  // edge's two faces are then near each other in its table of sides, whatever the input's order.
+  const size_t faceCount = this->FaceViews.size();
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> zOrder(faceCount);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(faceCount),
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType f = first; f < last; ++f)
+      {
+        const double* p = coordinates + 3 * faceFirstPoints[f];
+        std::uint64_t code = 0;
+        for (int k = 0; k < 3; ++k)
+        {
+          const double extent = upper[k] - lower[k];
+          const double t = extent > 0.0 ? (p[k] - lower[k]) / extent : 0.0;
+          const std::uint64_t cell =
+            static_cast<std::uint64_t>(std::min(std::max(t, 0.0), 1.0) * 2097151.0);
+          for (int bit = 0; bit < 21; ++bit)
+          {
+            code |= ((cell >> bit) & 1u) << (3 * bit + k);
+          }
+        }
+        zOrder[f] = { code, static_cast<std::uint32_t>(f) };
+      }
+    });
+  vtkSMPTools::Sort(zOrder.begin(), zOrder.end());
+  std::vector<std::uint32_t> renumbered(faceCount);
+  {
+    std::vector<double> normals(3 * faceCount);
+    for (auto* array : { &this->FaceNormals[0], &this->FaceNormals[1], &this->FaceNormals[2],
+           &this->FaceOffsets, &this->FaceBounds })
+    {
+      array->resize(faceCount);
+    }
+    for (size_t f = 0; f < faceCount; ++f)
+    {
+      const std::uint32_t old = zOrder[f].second;
+      renumbered[old] = static_cast<std::uint32_t>(f);
+      const FaceView& view = this->FaceViews[old];
+      for (int k = 0; k < 3; ++k)
+      {
+        this->FaceNormals[k][f] = view.Normal[k];
+      }
+      this->FaceOffsets[f] = view.Offset;
+      this->FaceBounds[f] = view.Bound;
+      std::copy_n(&this->Normals[3 * old], 3, &normals[3 * f]);
+    }
+    this->Normals.swap(normals);
+    std::vector<FaceView>().swap(this->FaceViews);
+  }
+  for (Edge& edge : this->Edges)
+  {
+    for (int i = 0; i < std::min(edge.Count, 2); ++i)
+    {
+      edge.Faces[i] = renumbered[edge.Faces[i]];
+    }
+  }
+
+  // The packed copy the viewpoint pass reads, its edges in the order of their first faces' new
+  // numbers (ViewEdges: each one's index in Edges), so that it reads the sides in order too.
   const size_t edgeCount = this->Edges.size();
+  std::vector<std::uint64_t> byFirstFace(edgeCount);
+  for (size_t e = 0; e < edgeCount; ++e)
+  {
+    byFirstFace[e] = (static_cast<std::uint64_t>(this->Edges[e].Faces[0]) << 32) | e;
+  }
+  vtkSMPTools::Sort(byFirstFace.begin(), byFirstFace.end());
+  this->ViewEdges.resize(edgeCount);
   this->ViewFaces.resize(2 * edgeCount);
   this->ViewPoints.resize(edgeCount);
   this->ViewKinds.resize(edgeCount);
@@ -366,7 +572,8 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
   this->CreaseAngle = -1.0;
   for (size_t e = 0; e < edgeCount; ++e)
   {
-    const Edge& edge = this->Edges[e];
+    this->ViewEdges[e] = static_cast<std::uint32_t>(byFirstFace[e] & 0xffffffffu);
+    const Edge& edge = this->Edges[this->ViewEdges[e]];
     this->ViewFaces[2 * e] = static_cast<std::uint32_t>(edge.Faces[0]);
     this->ViewFaces[2 * e + 1] = static_cast<std::uint32_t>(edge.Count >= 2 ? edge.Faces[1] : 0);
     this->ViewPoints[e] = static_cast<std::uint32_t>(edge.A);
@@ -405,6 +612,11 @@ vtkIdType vtkNPRFeatureLines::GetNumberOfDegenerateFaces() const
 vtkIdType vtkNPRFeatureLines::GetNumberOfNonFiniteFaces() const
 {
   return this->Internal->NonFiniteFaces;
+}
+
+vtkIdType vtkNPRFeatureLines::GetNumberOfUnsureFaces() const
+{
+  return this->Internal->UnsureFaces;
 }
 
 void vtkNPRFeatureLines::SetCamera(vtkCamera* camera, vtkMatrix4x4* modelMatrix)
@@ -456,8 +668,9 @@ int vtkNPRFeatureLines::RequestData(
     ++this->NumberOfAdjacencyBuilds;
   }
 
-  // One pass over the edges for this viewpoint, in parallel, on the packed arrays: each edge's
-  // type; then the typed edges in order (few: the output is small).
+  // For this viewpoint, in parallel on packed arrays: the side of each face's plane the eye is
+  // on, then each edge's type, in blocks that list their typed edges in order; then the output
+  // from those lists (few edges: the output is small).
   const double* coordinates = adjacency.Coordinates.data();
   const double* normals = adjacency.Normals.data();
   const std::vector<Adjacency::Edge>& edges = adjacency.Edges;
@@ -471,73 +684,105 @@ int vtkNPRFeatureLines::RequestData(
       {
         for (vtkIdType e = first; e < last; ++e)
         {
-          adjacency.Creases[e] = edges[e].Count == 2 && edges[e].Angle > angle ? CREASE : 0;
+          const Adjacency::Edge& edge = edges[adjacency.ViewEdges[e]];
+          adjacency.Creases[e] = edge.Count == 2 && edge.Angle > angle ? CREASE : 0;
         }
       });
     adjacency.CreaseAngle = this->FeatureAngle;
   }
-  std::vector<unsigned char>& edgeTypes = adjacency.EdgeTypes;
-  edgeTypes.resize(edges.size());
-  const std::uint32_t* faces = adjacency.ViewFaces.data();
-  const std::uint32_t* points = adjacency.ViewPoints.data();
-  const unsigned char* kinds = adjacency.ViewKinds.data();
-  const unsigned char* creases = this->Creases ? adjacency.Creases.data() : nullptr;
-  const unsigned char boundary = this->Boundaries ? BOUNDARY : 0;
-  const unsigned char nonManifold = this->NonManifoldEdges ? NON_MANIFOLD : 0;
   const bool silhouettes = this->Silhouettes;
   const bool parallel = this->ParallelProjection;
   const double eye[3] = { this->EyePosition[0], this->EyePosition[1], this->EyePosition[2] };
   const double direction[3] = { this->DirectionOfProjection[0], this->DirectionOfProjection[1],
     this->DirectionOfProjection[2] };
-  vtkSMPTools::For(0, edgeCount,
-    [&](vtkIdType first, vtkIdType last)
+  if (silhouettes)
+  {
+    adjacency.ComputeFaceSides(parallel, parallel ? direction : eye);
+  }
+  else
+  {
+    adjacency.UnsureFaces = 0;
+  }
+
+  // The edges in blocks of equal size, each listing its typed edges.
+  const vtkIdType blockSize = 16384;
+  const vtkIdType blockCount = (edgeCount + blockSize - 1) / blockSize;
+  auto& typedEdges = adjacency.TypedEdges;
+  typedEdges.resize(static_cast<size_t>(blockCount));
+  const std::uint32_t* viewEdges = adjacency.ViewEdges.data();
+  const std::uint32_t* faces = adjacency.ViewFaces.data();
+  const std::uint32_t* points = adjacency.ViewPoints.data();
+  const unsigned char* kinds = adjacency.ViewKinds.data();
+  const unsigned char* creases = this->Creases ? adjacency.Creases.data() : nullptr;
+  const unsigned char* sides = adjacency.FaceSides.data();
+  const unsigned char boundary = this->Boundaries ? BOUNDARY : 0;
+  const unsigned char nonManifold = this->NonManifoldEdges ? NON_MANIFOLD : 0;
+  // An edge of two faces is a silhouette where the eye is on the front side of exactly one of
+  // their planes (edge-on counting as the back), the second reversed where both faces traverse
+  // the edge the same way: from the faces' sides where both are decided, else by the reference
+  // test in double precision, at the edge's first point so that both terms are exact sides.
+  auto isSilhouette = [=](vtkIdType e, bool sameDirection)
+  {
+    const unsigned side0 = sides[faces[2 * e]];
+    const unsigned side1 = sides[faces[2 * e + 1]];
+    if (!((side0 | side1) & SideUnsure))
     {
-      for (vtkIdType e = first; e < last; ++e)
+      return ((side0 & SideFacing) != 0) != (((side1 & SideFacing) != 0) != sameDirection);
+    }
+    const double* n0 = normals + 3 * static_cast<size_t>(faces[2 * e]);
+    const double* n1 = normals + 3 * static_cast<size_t>(faces[2 * e + 1]);
+    double f0, f1;
+    if (parallel)
+    {
+      f0 = Dot(n0, direction);
+      f1 = Dot(n1, direction);
+    }
+    else
+    {
+      const double* p = coordinates + 3 * static_cast<size_t>(points[e]);
+      const double toPoint[3] = { p[0] - eye[0], p[1] - eye[1], p[2] - eye[2] };
+      f0 = Dot(n0, toPoint);
+      f1 = Dot(n1, toPoint);
+    }
+    if (sameDirection)
+    {
+      f1 = -f1;
+    }
+    return (f0 < 0.0) != (f1 < 0.0);
+  };
+  vtkSMPTools::For(0, blockCount,
+    [&](vtkIdType firstBlock, vtkIdType lastBlock)
+    {
+      for (vtkIdType block = firstBlock; block < lastBlock; ++block)
       {
-        const unsigned char kind = kinds[e];
-        unsigned char type = 0;
-        if (kind & ViewBoundary)
+        auto& listed = typedEdges[block];
+        listed.clear();
+        const vtkIdType last = std::min(edgeCount, (block + 1) * blockSize);
+        for (vtkIdType e = block * blockSize; e < last; ++e)
         {
-          type = boundary;
-        }
-        else if (kind & ViewNonManifold)
-        {
-          type = nonManifold;
-        }
-        else
-        {
-          type = creases ? creases[e] : 0;
-          if (silhouettes)
+          const unsigned char kind = kinds[e];
+          unsigned char type = 0;
+          if (kind & ViewBoundary)
           {
-            const double* n0 = normals + 3 * static_cast<size_t>(faces[2 * e]);
-            const double* n1 = normals + 3 * static_cast<size_t>(faces[2 * e + 1]);
-            double f0, f1;
-            if (parallel)
-            {
-              f0 = Dot(n0, direction);
-              f1 = Dot(n1, direction);
-            }
-            else
-            {
-              // The same point of the edge for both faces: each term is exactly the side of
-              // that face's plane the eye is on.
-              const double* p = coordinates + 3 * static_cast<size_t>(points[e]);
-              const double toPoint[3] = { p[0] - eye[0], p[1] - eye[1], p[2] - eye[2] };
-              f0 = Dot(n0, toPoint);
-              f1 = Dot(n1, toPoint);
-            }
-            if (kind & ViewSameDirection)
-            {
-              f1 = -f1;
-            }
-            // Facing the eye: a negative term; edge-on (0) counts as facing away.
-            if ((f0 < 0.0) != (f1 < 0.0))
+            type = boundary;
+          }
+          else if (kind & ViewNonManifold)
+          {
+            type = nonManifold;
+          }
+          else
+          {
+            type = creases ? creases[e] : 0;
+            if (silhouettes && isSilhouette(e, (kind & ViewSameDirection) != 0))
             {
               type |= SILHOUETTE;
             }
           }
+          if (type)
+          {
+            listed.emplace_back(viewEdges[e], type);
+          }
         }
-        edgeTypes[e] = type;
       }
     });
 
@@ -562,17 +807,21 @@ int vtkNPRFeatureLines::RequestData(
     }
     return outputId[id];
   };
-  for (size_t e = 0; e < edges.size(); ++e)
+  // The typed edges in the order of Edges (the order the faces first use them).
+  std::vector<std::pair<std::uint32_t, unsigned char>> typed;
+  for (const auto& listed : typedEdges)
   {
-    if (const unsigned char type = edgeTypes[e])
-    {
-      const Adjacency::Edge& edge = edges[e];
-      const vtkIdType ends[2] = { outputPoint(edge.A), outputPoint(edge.B) };
-      lines->InsertNextCell(2, ends);
-      types->InsertNextValue(type);
-      const vtkIdType ids[2] = { edge.A, edge.B };
-      inputIds->InsertNextTypedTuple(ids);
-    }
+    typed.insert(typed.end(), listed.begin(), listed.end());
+  }
+  std::sort(typed.begin(), typed.end());
+  for (const auto& edgeAndType : typed)
+  {
+    const Adjacency::Edge& edge = edges[edgeAndType.first];
+    const vtkIdType ends[2] = { outputPoint(edge.A), outputPoint(edge.B) };
+    lines->InsertNextCell(2, ends);
+    types->InsertNextValue(edgeAndType.second);
+    const vtkIdType ids[2] = { edge.A, edge.B };
+    inputIds->InsertNextTypedTuple(ids);
   }
   for (vtkIdType id : used)
   {
