@@ -103,15 +103,6 @@ struct CostRow
   std::string Scene, Size;
   double ScreenMs = 0, SurfaceMs = 0;
 };
-
-std::string Fixed(double value, int decimals)
-{
-  std::ostringstream text;
-  text.setf(std::ios::fixed);
-  text.precision(decimals);
-  text << value;
-  return text.str();
-}
 }
 
 int nprRunBenchmarkCoherence(const nprBenchmarkOptions& options)
@@ -158,7 +149,7 @@ int nprRunBenchmarkCoherence(const nprBenchmarkOptions& options)
             previous = std::move(next);
           }
           std::cerr << "npr-benchmark: " << scene.Name << " " << sizeName << " " << row.Path << " "
-                    << style.Name << ": landed " << Fixed(row.Landed, 3) << "\n";
+                    << style.Name << ": landed " << nprFixed(row.Landed, 3) << "\n";
           rows.push_back(row);
         }
       }
@@ -199,9 +190,9 @@ int nprRunBenchmarkCoherence(const nprBenchmarkOptions& options)
         << row.Landed << "," << row.LandedExactly << "," << row.Appeared << "," << row.Vanished
         << "," << row.PanIoU << "\n";
     md << "| " << row.Scene << " | " << row.Size << " | " << row.Path << " | " << row.Style << " | "
-       << Fixed(row.Landed, 3) << " | " << Fixed(row.LandedExactly, 3) << " | "
-       << Fixed(row.Appeared, 3) << " | " << Fixed(row.Vanished, 3) << " | "
-       << (row.PanIoU >= 0 ? Fixed(row.PanIoU, 3) : "") << " |\n";
+       << nprFixed(row.Landed, 3) << " | " << nprFixed(row.LandedExactly, 3) << " | "
+       << nprFixed(row.Appeared, 3) << " | " << nprFixed(row.Vanished, 3) << " | "
+       << (row.PanIoU >= 0 ? nprFixed(row.PanIoU, 3) : "") << " |\n";
     for (double value : { row.Landed, row.LandedExactly, row.Appeared, row.Vanished })
     {
       if (!(value >= 0.0 && value <= 1.0 + 1e-9))
@@ -216,8 +207,9 @@ int nprRunBenchmarkCoherence(const nprBenchmarkOptions& options)
   costCsv << "scene,size,sketch_screen_ms,sketch_surface_ms\n";
   for (const CostRow& cost : costs)
   {
-    md << "| " << cost.Scene << " | " << cost.Size << " | " << Fixed(cost.ScreenMs, 1) << " | "
-       << Fixed(cost.SurfaceMs, 1) << " | " << Fixed(cost.SurfaceMs / cost.ScreenMs, 3) << " |\n";
+    md << "| " << cost.Scene << " | " << cost.Size << " | " << nprFixed(cost.ScreenMs, 1) << " | "
+       << nprFixed(cost.SurfaceMs, 1) << " | " << nprFixed(cost.SurfaceMs / cost.ScreenMs, 3)
+       << " |\n";
     costCsv << cost.Scene << "," << cost.Size << "," << cost.ScreenMs << "," << cost.SurfaceMs
             << "\n";
     if (!(cost.ScreenMs > 0.0 && cost.SurfaceMs > 0.0))

@@ -48,15 +48,6 @@ struct StyleRow
   double FirstMs = 0.0, MovedMs = 0.0, StillMs = 0.0, ShadedMs = 0.0;
 };
 
-std::string Fixed(double value, int decimals)
-{
-  std::ostringstream text;
-  text.setf(std::ios::fixed);
-  text.precision(decimals);
-  text << value;
-  return text.str();
-}
-
 std::string Quoted(const std::string& path)
 {
   std::string quoted = "'";
@@ -193,9 +184,9 @@ int nprRunBenchmarkDrawing(const nprBenchmarkOptions& options)
               row.Recall = metrics.Recall(1.0);
             }
           }
-          std::cerr << "npr-benchmark: " << file << ": " << Fixed(row.Seconds, 3) << " s, "
+          std::cerr << "npr-benchmark: " << file << ": " << nprFixed(row.Seconds, 3) << " s, "
                     << row.Bytes << " bytes, " << row.Strokes << " strokes of " << row.FeatureEdges
-                    << " edges" << (row.F1 >= 0 ? ", F1@1 " + Fixed(row.F1, 4) : std::string())
+                    << " edges" << (row.F1 >= 0 ? ", F1@1 " + nprFixed(row.F1, 4) : std::string())
                     << "\n";
           if (row.Strokes <= 0 || row.Bytes <= 0 || (row.F1 >= 0 && !(row.F1 <= 1.0)))
           {
@@ -234,8 +225,8 @@ int nprRunBenchmarkDrawing(const nprBenchmarkOptions& options)
       styleRows.push_back(style);
       stage.Activate(nullptr, false);
       std::cerr << "npr-benchmark: drawing style " << scene.Name << " " << sizeName << ": first "
-                << Fixed(style.FirstMs, 1) << " ms, camera turned " << Fixed(style.MovedMs, 1)
-                << " ms, unchanged " << Fixed(style.StillMs, 1) << " ms\n";
+                << nprFixed(style.FirstMs, 1) << " ms, camera turned " << nprFixed(style.MovedMs, 1)
+                << " ms, unchanged " << nprFixed(style.StillMs, 1) << " ms\n";
     }
   }
 
@@ -256,11 +247,11 @@ int nprRunBenchmarkDrawing(const nprBenchmarkOptions& options)
         << row.Bytes << "," << row.Strokes << "," << row.FeatureEdges << "," << row.F1 << ","
         << row.Precision << "," << row.Recall << "\n";
     md << "| " << row.Scene << " | " << row.Size << " | " << row.Format << " | "
-       << (row.Hidden ? "yes" : "no") << " | " << Fixed(row.Seconds, 3) << " | "
-       << Fixed(row.LinesSeconds, 2) << ", " << Fixed(row.LocatorSeconds, 2) << ", "
-       << Fixed(row.VisibilitySeconds, 2) << " | " << Fixed(row.WriteSeconds, 3) << " | "
-       << Fixed(row.Bytes / 1024.0, 0) << " | " << row.Strokes << " | " << row.FeatureEdges << " | "
-       << (row.F1 >= 0 ? Fixed(row.F1, 4) : std::string("")) << " |\n";
+       << (row.Hidden ? "yes" : "no") << " | " << nprFixed(row.Seconds, 3) << " | "
+       << nprFixed(row.LinesSeconds, 2) << ", " << nprFixed(row.LocatorSeconds, 2) << ", "
+       << nprFixed(row.VisibilitySeconds, 2) << " | " << nprFixed(row.WriteSeconds, 3) << " | "
+       << nprFixed(row.Bytes / 1024.0, 0) << " | " << row.Strokes << " | " << row.FeatureEdges
+       << " | " << (row.F1 >= 0 ? nprFixed(row.F1, 4) : std::string("")) << " |\n";
   }
   md << "\n| scene | size | shaded frame (ms) | drawing, first frame (ms) | drawing, camera turned "
         "1 degree (ms) | drawing, unchanged (ms) |\n|---|---|---|---|---|---|\n";
@@ -268,9 +259,9 @@ int nprRunBenchmarkDrawing(const nprBenchmarkOptions& options)
   styleCsv << "scene,size,shaded_ms,first_ms,moved_ms,unchanged_ms\n";
   for (const StyleRow& row : styleRows)
   {
-    md << "| " << row.Scene << " | " << row.Size << " | " << Fixed(row.ShadedMs, 1) << " | "
-       << Fixed(row.FirstMs, 1) << " | " << Fixed(row.MovedMs, 1) << " | " << Fixed(row.StillMs, 1)
-       << " |\n";
+    md << "| " << row.Scene << " | " << row.Size << " | " << nprFixed(row.ShadedMs, 1) << " | "
+       << nprFixed(row.FirstMs, 1) << " | " << nprFixed(row.MovedMs, 1) << " | "
+       << nprFixed(row.StillMs, 1) << " |\n";
     styleCsv << row.Scene << "," << row.Size << "," << row.ShadedMs << "," << row.FirstMs << ","
              << row.MovedMs << "," << row.StillMs << "\n";
   }

@@ -29,6 +29,7 @@
 #include <fstream>
 #include <map>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 
 namespace
@@ -416,4 +417,13 @@ void nprWriteStressMarkdown(
          << row.StrayPixels << " | " << row.CoverageChanged << " | " << row.NonFinitePixels << " | "
          << row.BadDepthPixels << " | " << row.Note << " |\n";
   }
+}
+
+std::string nprFixed(double value, int decimals)
+{
+  std::ostringstream text;
+  text.setf(std::ios::fixed);
+  text.precision(decimals);
+  text << value;
+  return text.str();
 }

@@ -97,5 +97,7 @@ void nprWriteStressMarkdown(
 
 // A number for CSV and Markdown: %.*g, "nan" and "inf" spelt out.
 std::string nprFormat(double value, int digits = 4);
+// A number with a fixed count of decimals (the tables' milliseconds and ratios).
+std::string nprFixed(double value, int decimals);
 
 #endif

@@ -50,15 +50,6 @@ struct SpeedRow
   double MedianMs = 0.0;
 };
 
-std::string Fixed(double value, int decimals)
-{
-  std::ostringstream text;
-  text.setf(std::ios::fixed);
-  text.precision(decimals);
-  text << value;
-  return text.str();
-}
-
 vtkSmartPointer<vtkRenderPass> NPRStyle(const std::string& style)
 {
   nprPassSettings settings;
@@ -213,8 +204,8 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
           rows.push_back({ scene.Name, sizeName, methods[m].Name, run + 1, nprMedian(times[m]) });
         }
         std::cerr << "npr-benchmark: " << scene.Name << " " << sizeName << " run " << run + 1
-                  << ": plain " << Fixed(nprMedian(times[0]), 1) << " ms, done in "
-                  << Fixed(nprSecondsSince(viewStart), 1) << " s\n";
+                  << ": plain " << nprFixed(nprMedian(times[0]), 1) << " ms, done in "
+                  << nprFixed(nprSecondsSince(viewStart), 1) << " s\n";
       }
     }
 
@@ -293,8 +284,8 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
             extra.push_back(row.MedianMs - plain[row.Run]);
           }
         }
-        md << "| " << method.Name << " | " << Fixed(nprMedian(ms), 1) << " | "
-           << Fixed(nprMedian(ratios), 2) << " | " << Fixed(nprMedian(extra), 1) << " |\n";
+        md << "| " << method.Name << " | " << nprFixed(nprMedian(ms), 1) << " | "
+           << nprFixed(nprMedian(ratios), 2) << " | " << nprFixed(nprMedian(extra), 1) << " |\n";
       }
     }
     std::vector<double> lines;
@@ -306,7 +297,7 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
       }
     }
     md << "\n"
-       << scene.Name << ": " << FeatureLinesName << ": " << Fixed(nprMedian(lines), 1)
+       << scene.Name << ": " << FeatureLinesName << ": " << nprFixed(nprMedian(lines), 1)
        << " ms (any size)\n";
   }
   std::ofstream markdown(options.Out + "/speed.md");
