@@ -21,11 +21,18 @@
 #else
     vec3 nprNormal = vec3(0.0);
 #endif
+    // The view-space position, once for both uses below: interpolated where the mapper passes it
+    // (rebuilding it from gl_FragCoord costs llvmpipe about a quarter of this shader's time).
+#if NPR_HAVE_VERTEX_VC
+    vec3 nprPositionVC = vertexVCVSOutput.xyz / vertexVCVSOutput.w;
+#else
+    vec3 nprPositionVC = nprFragmentPositionVC();
+#endif
     // Unlit actors, lines, points and zero-length or NaN normals: the face normal from the
     // derivatives of the view-space position, turned towards the viewer.
     if (!(dot(nprNormal, nprNormal) > 1e-12))
     {
-      vec3 p = nprFragmentPositionVC();
+      vec3 p = nprPositionVC;
       nprNormal = cross(dFdx(p), dFdy(p));
       nprNormal = dot(nprNormal, nprNormal) > 1e-30 ? nprNormal * sign(dot(nprNormal, -p) + 1e-30)
                                                       : vec3(0.0, 0.0, 1.0);
@@ -36,7 +43,7 @@
     // winding disagrees with the normals, as for a needle triangle whose winding flips when its
     // points are rounded to 32-bit floats, that turns it away from the viewer: turn it back.
 #if NPR_PERSPECTIVE
-    vec3 nprToViewer = -nprFragmentPositionVC();
+    vec3 nprToViewer = -nprPositionVC;
 #else
     vec3 nprToViewer = vec3(0.0, 0.0, 1.0);
 #endif
