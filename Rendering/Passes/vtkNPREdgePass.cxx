@@ -15,7 +15,9 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkTexture.h"
 #include "vtkTextureObject.h"
+#include "vtkVersionMacros.h"
 
 #include "vtkNPREdgeCompositeFS.h"
 #include "vtkNPREdgeDetectFS.h"
@@ -115,6 +117,12 @@ struct vtkNPREdgePass::Internals
   bool LineImageValid = false;
   bool WarnedAboutEncoding = false;
   LineFilter Filter;
+  // The last composite, for frames in which nothing changed (KeepUnchangedComposite).
+  vtkNPRKeptImage Kept;
+  std::string CompositeKey; // what the last composite was drawn from; empty: not reusable
+  int FramesSinceUnchanged = KeepAfterUnchanged + 1;
+  // Keep a changed frame's composite while one of this many previous frames was unchanged.
+  static constexpr int KeepAfterUnchanged = 8;
 };
 
 vtkStandardNewMacro(vtkNPREdgePass);
@@ -348,10 +356,36 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
     program->SetUniform2f("nprDepthRemap", gbuffer->GetDepthRemap());
   }
 
-  vtkNPRCompositeState compositeState(glState);
-  compositeState.Apply(origin, width, height);
   // Outside the props' projected bounds there is only background: nothing to write there.
   const int* rect = gbuffer->GetContentRectangle();
+  const int windowRect[4] = { origin[0] + rect[0], origin[1] + rect[1], origin[0] + rect[2],
+    origin[1] + rect[3] };
+  const std::string compositeKey = output == OutputComposite
+    ? this->CompositeKey(renderer, defines.str(), windowRect)
+    : std::string();
+  const bool unchanged = !compositeKey.empty() && compositeKey == internal.CompositeKey;
+  internal.CompositeKey = compositeKey;
+  internal.FramesSinceUnchanged = unchanged ? 0 : internal.FramesSinceUnchanged + 1;
+  if (unchanged && internal.Kept.IsValid())
+  {
+    if (internal.Kept.Restore(window))
+    {
+      ++this->NumberOfKeptCompositeRestores;
+      color->Deactivate();
+      depth->Deactivate();
+      if (lines)
+      {
+        internal.LineTexture->Deactivate();
+      }
+      this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+      vtkOpenGLCheckErrorMacro("failed after vtkNPREdgePass::Render (kept composite)");
+      return;
+    }
+    internal.CompositeKey.clear();
+  }
+
+  vtkNPRCompositeState compositeState(glState);
+  compositeState.Apply(origin, width, height);
   if (output == OutputMask)
   {
     glState->vtkglDisable(GL_SCISSOR_TEST); // a mask is black everywhere else
@@ -370,6 +404,12 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
     glState->vtkglDisable(GL_BLEND);
   }
   composite.Render();
+  if (internal.CompositeKey.empty() ||
+    internal.FramesSinceUnchanged > Internals::KeepAfterUnchanged ||
+    !internal.Kept.Capture(window, windowRect))
+  {
+    internal.Kept.Invalidate();
+  }
 
   color->Deactivate();
   depth->Deactivate();
@@ -379,6 +419,49 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
   }
   this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
   vtkOpenGLCheckErrorMacro("failed after vtkNPREdgePass::Render");
+}
+
+std::string vtkNPREdgePass::CompositeKey(
+  vtkRenderer* renderer, const std::string& defines, const int windowRect[4])
+{
+  // Only where what lies under the composite is this renderer's own clear, which these settings
+  // describe: another layer below, a preserved colour or depth buffer could change on their own.
+  if (!this->KeepUnchangedComposite || renderer->Transparent() || !renderer->GetErase() ||
+    renderer->GetPreserveDepthBuffer())
+  {
+    return std::string();
+  }
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  unsigned int binding = 0, drawBuffer = 0;
+  window->GetState()->GetCurrentDrawFramebufferState(binding, drawBuffer);
+  std::ostringstream key;
+  key.precision(17);
+  key << defines << this->GBufferPass->GetContentVersion() << " " << this->NumberOfLineImageUpdates
+      << " " << this->Internal->LineImageSettings << " " << this->GetEffectiveLineWidth(renderer)
+      << " " << binding << " " << drawBuffer << " " << window->GetSize()[0] << " "
+      << window->GetSize()[1];
+  for (int i = 0; i < 4; ++i)
+  {
+    key << " " << windowRect[i];
+  }
+  for (const double* colorValue : { this->SilhouetteColor, this->CreaseColor, this->ContourColor })
+  {
+    key << " " << colorValue[0] << " " << colorValue[1] << " " << colorValue[2];
+  }
+  // The renderer's clear (vtkOpenGLRenderer::Clear); not its MTime, which capturing the window
+  // changes (vtkWindowToImageFilter).
+  for (const double* colorValue : { renderer->GetBackground(), renderer->GetBackground2() })
+  {
+    key << " " << colorValue[0] << " " << colorValue[1] << " " << colorValue[2];
+  }
+  vtkTexture* background = renderer->GetBackgroundTexture();
+  key << " " << renderer->GetBackgroundAlpha() << " " << renderer->GetGradientBackground() << " "
+      << renderer->GetTexturedBackground() << " " << background << " "
+      << (background ? background->GetMTime() : 0);
+#if VTK_MAJOR_VERSION > 9 || (VTK_MAJOR_VERSION == 9 && VTK_MINOR_VERSION >= 3)
+  key << " " << static_cast<int>(renderer->GetGradientMode());
+#endif
+  return key.str();
 }
 
 void vtkNPREdgePass::ReleaseGraphicsResources(vtkWindow* window)
@@ -400,6 +483,8 @@ void vtkNPREdgePass::ReleaseGraphicsResources(vtkWindow* window)
     internal.Framebuffer = nullptr;
   }
   internal.LineImageValid = false;
+  internal.Kept.ReleaseGraphicsResources(window);
+  internal.CompositeKey.clear();
 }
 
 void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
@@ -420,4 +505,6 @@ void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";
   os << indent << "CoverageOnly: " << this->CoverageOnly << "\n";
   os << indent << "NumberOfLineImageUpdates: " << this->NumberOfLineImageUpdates << "\n";
+  os << indent << "KeepUnchangedComposite: " << this->KeepUnchangedComposite << "\n";
+  os << indent << "NumberOfKeptCompositeRestores: " << this->NumberOfKeptCompositeRestores << "\n";
 }

@@ -44,6 +44,7 @@
 #include "vtkRenderingNPRModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
+#include <string> // for std::string
 
 class vtkNPRGBufferPass;
 class vtkRenderer;
@@ -204,6 +205,28 @@ public:
    */
   vtkGetMacro(NumberOfLineImageUpdates, int);
 
+  ///@{
+  /**
+   * Draw a frame in which nothing changed by copying back the last composited image instead of
+   * compositing again (on by default). Nothing changed means: the G-buffer kept its content
+   * (vtkNPRGBufferPass::ReuseUnchangedFrames), and the line settings, the renderer's background,
+   * the viewport and the framebuffer drawn into are those of the last frame. The copy (colour and
+   * depth of the props' rectangle, glBlitFramebuffer) is taken only while frames are being
+   * reused (one of the last 8 was unchanged), so a scene in motion pays nothing for it, and only
+   * where it comes back bit for bit: a renderer that clears its own colour and depth, into a
+   * framebuffer without multisampling, with 8-bit colour and a standard depth format. Lines only
+   * (CoverageOnly and RenderLineCoverage() always draw).
+   */
+  vtkSetMacro(KeepUnchangedComposite, bool);
+  vtkGetMacro(KeepUnchangedComposite, bool);
+  vtkBooleanMacro(KeepUnchangedComposite, bool);
+  ///@}
+
+  /**
+   * Number of frames drawn by copying back the kept composite (KeepUnchangedComposite).
+   */
+  vtkGetMacro(NumberOfKeptCompositeRestores, int);
+
 protected:
   vtkNPREdgePass();
   ~vtkNPREdgePass() override;
@@ -215,6 +238,9 @@ protected:
     OutputLineCoverage = 2 // RenderLineCoverage()
   };
   void Draw(const vtkRenderState* state, int output);
+  // What a composite into the current framebuffer depends on, or empty where it cannot be kept.
+  std::string CompositeKey(
+    vtkRenderer* renderer, const std::string& defines, const int windowRect[4]);
 
   vtkNPRGBufferPass* GBufferPass = nullptr;
   bool Silhouettes = true;
@@ -233,6 +259,8 @@ protected:
   bool AntiAliasing = true;
   bool CoverageOnly = false;
   int NumberOfLineImageUpdates = 0;
+  bool KeepUnchangedComposite = true;
+  int NumberOfKeptCompositeRestores = 0;
 
 private:
   vtkNPREdgePass(const vtkNPREdgePass&) = delete;

@@ -16,6 +16,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderbuffer.h"
 #include "vtkRenderer.h"
 #include "vtkShader.h"
 #include "vtkShaderProgram.h"
@@ -266,4 +267,190 @@ bool vtkNPRShaderCheck::KeepOrRevert(vtkObject* pass, vtkProp* prop, const char*
       << what << " does not compile with the shader of a " << name << ": it is drawn without it");
   }
   return false;
+}
+
+namespace
+{
+// What one attachment of the bound draw framebuffer holds.
+int nprAttachmentParameter(unsigned int attachment, unsigned int parameter)
+{
+  GLint value = 0;
+  glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, attachment, parameter, &value);
+  return value;
+}
+
+// The internal formats that blit exactly to and from the bound draw framebuffer's colour and
+// depth, or false.
+bool nprDrawFramebufferFormats(
+  vtkOpenGLState* state, unsigned int& colorFormat, unsigned int& depthFormat)
+{
+  unsigned int binding = 0, drawBuffer = 0;
+  state->GetCurrentDrawFramebufferState(binding, drawBuffer);
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  if (samples > 0)
+  {
+    return false;
+  }
+  unsigned int colorAttachment = drawBuffer, depthAttachment = GL_DEPTH_ATTACHMENT;
+  if (binding == 0)
+  {
+    colorAttachment = drawBuffer == GL_FRONT ? GL_FRONT_LEFT : GL_BACK_LEFT;
+    depthAttachment = GL_DEPTH;
+  }
+  if (nprAttachmentParameter(colorAttachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) == GL_NONE ||
+    nprAttachmentParameter(depthAttachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) == GL_NONE)
+  {
+    return false;
+  }
+  const int red = nprAttachmentParameter(colorAttachment, GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE);
+  const int green = nprAttachmentParameter(colorAttachment, GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE);
+  const int blue = nprAttachmentParameter(colorAttachment, GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE);
+  const int alpha = nprAttachmentParameter(colorAttachment, GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE);
+  const int colorType =
+    nprAttachmentParameter(colorAttachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE);
+  if (red != 8 || green != 8 || blue != 8 || (alpha != 8 && alpha != 0) ||
+    colorType != GL_UNSIGNED_NORMALIZED)
+  {
+    return false;
+  }
+  colorFormat = alpha == 8 ? GL_RGBA8 : GL_RGB8;
+  const int depth = nprAttachmentParameter(depthAttachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE);
+  const int stencil =
+    nprAttachmentParameter(depthAttachment, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE);
+  const int depthType =
+    nprAttachmentParameter(depthAttachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE);
+  if (depth == 32 && depthType == GL_FLOAT)
+  {
+    depthFormat = stencil == 8 ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F;
+  }
+  else if (depth == 32 && stencil == 0 && depthType == GL_UNSIGNED_NORMALIZED)
+  {
+    depthFormat = GL_DEPTH_COMPONENT32; // VTK's own render framebuffer
+  }
+  else if (depth == 24 && depthType == GL_UNSIGNED_NORMALIZED)
+  {
+    depthFormat = stencil == 8 ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT24;
+  }
+  else if (depth == 16 && stencil == 0 && depthType == GL_UNSIGNED_NORMALIZED)
+  {
+    depthFormat = GL_DEPTH_COMPONENT16;
+  }
+  else
+  {
+    return false;
+  }
+  return stencil == 0 || stencil == 8;
+}
+}
+
+vtkNPRKeptImage::~vtkNPRKeptImage()
+{
+  this->ReleaseGraphicsResources(nullptr);
+}
+
+bool vtkNPRKeptImage::Capture(vtkOpenGLRenderWindow* window, const int rect[4])
+{
+  this->Valid = false;
+  vtkOpenGLState* state = window->GetState();
+  unsigned int colorFormat = 0, depthFormat = 0;
+  if (rect[2] < rect[0] || rect[3] < rect[1] ||
+    !nprDrawFramebufferFormats(state, colorFormat, depthFormat))
+  {
+    return false;
+  }
+  unsigned int binding = 0, drawBuffer = 0;
+  state->GetCurrentDrawFramebufferState(binding, drawBuffer);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->PushFramebufferBindings();
+  const int width = rect[2] + 1, height = rect[3] + 1; // the copy stays at its place
+  if (!this->Framebuffer || colorFormat != this->ColorFormat || depthFormat != this->DepthFormat ||
+    width > this->Size[0] || height > this->Size[1])
+  {
+    this->ReleaseGraphicsResources(window);
+    this->Framebuffer = vtkOpenGLFramebufferObject::New();
+    this->Framebuffer->SetContext(window);
+    this->Color = vtkRenderbuffer::New();
+    this->Color->SetContext(window);
+    this->Depth = vtkRenderbuffer::New();
+    this->Depth->SetContext(window);
+    if (!this->Color->Create(colorFormat, width, height) ||
+      !this->Depth->Create(depthFormat, width, height))
+    {
+      this->ReleaseGraphicsResources(window);
+      state->PopFramebufferBindings();
+      return false;
+    }
+    this->Framebuffer->Bind();
+    this->Framebuffer->AddColorAttachment(0, this->Color);
+    this->Framebuffer->AddDepthAttachment(this->Depth);
+    this->ColorFormat = colorFormat;
+    this->DepthFormat = depthFormat;
+    this->Size[0] = width;
+    this->Size[1] = height;
+  }
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, binding);
+  state->vtkglReadBuffer(drawBuffer);
+  this->Framebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  this->Framebuffer->ActivateDrawBuffer(0);
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  state->vtkglBlitFramebuffer(rect[0], rect[1], rect[2] + 1, rect[3] + 1, rect[0], rect[1],
+    rect[2] + 1, rect[3] + 1, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  this->Valid = glGetError() == GL_NO_ERROR;
+  state->PopFramebufferBindings();
+  std::copy_n(rect, 4, this->Rect);
+  return this->Valid;
+}
+
+bool vtkNPRKeptImage::Restore(vtkOpenGLRenderWindow* window)
+{
+  if (!this->Valid)
+  {
+    return false;
+  }
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->PushReadFramebufferBinding();
+  this->Framebuffer->Bind(GL_READ_FRAMEBUFFER);
+  this->Framebuffer->ActivateReadBuffer(0);
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  const int* r = this->Rect;
+  state->vtkglBlitFramebuffer(r[0], r[1], r[2] + 1, r[3] + 1, r[0], r[1], r[2] + 1, r[3] + 1,
+    GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  this->Valid = glGetError() == GL_NO_ERROR;
+  state->PopReadFramebufferBinding();
+  return this->Valid;
+}
+
+void vtkNPRKeptImage::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Valid = false;
+  if (this->Framebuffer)
+  {
+    if (window)
+    {
+      this->Framebuffer->ReleaseGraphicsResources(window);
+    }
+    this->Framebuffer->Delete();
+    this->Framebuffer = nullptr;
+  }
+  for (vtkRenderbuffer** buffer : { &this->Color, &this->Depth })
+  {
+    if (*buffer)
+    {
+      if (window)
+      {
+        (*buffer)->ReleaseGraphicsResources(window);
+      }
+      (*buffer)->Delete();
+      *buffer = nullptr;
+    }
+  }
+  this->Size[0] = this->Size[1] = 0;
 }

@@ -13,11 +13,14 @@
 
 class vtkAbstractMapper;
 class vtkObject;
+class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkProp;
 class vtkRenderState;
+class vtkRenderbuffer;
 class vtkRenderer;
 class vtkTextureObject;
+class vtkWindow;
 
 // A new texture object of the window with these filters (vtkTextureObject::Nearest or Linear)
 // and wrap modes on every axis (ClampToEdge, Repeat, ...); the caller allocates and deletes it.
@@ -105,6 +108,39 @@ private:
   vtkOpenGLState::ScopedglDepthFunc DepthFunc;
   vtkOpenGLState::ScopedglDepthMask DepthMask;
   vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
+};
+
+// A rectangle of the framebuffer being drawn into (colour and depth), kept after a composite so
+// that a frame in which nothing changed gets it back by one copy instead of compositing again.
+// Both copies are glBlitFramebuffer calls between buffers of identical formats, so the pixels and
+// depths come back bit for bit; Capture() keeps nothing (returns false) where that cannot hold: a
+// multisampled framebuffer, colour other than 8-bit normalised, or a depth format it does not know.
+class vtkNPRKeptImage
+{
+public:
+  vtkNPRKeptImage() = default;
+  ~vtkNPRKeptImage();
+  vtkNPRKeptImage(const vtkNPRKeptImage&) = delete;
+  vtkNPRKeptImage& operator=(const vtkNPRKeptImage&) = delete;
+
+  // Copies `rect` (x0, y0, x1, y1, inclusive) of the current draw framebuffer.
+  bool Capture(vtkOpenGLRenderWindow* window, const int rect[4]);
+  // Copies the kept rectangle back to where it was taken from, in the current draw framebuffer
+  // (which must be the one it was taken from: the caller keys its reuse on that).
+  bool Restore(vtkOpenGLRenderWindow* window);
+  bool IsValid() const { return this->Valid; }
+  void Invalidate() { this->Valid = false; }
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
+  vtkRenderbuffer* Color = nullptr;
+  vtkRenderbuffer* Depth = nullptr;
+  unsigned int ColorFormat = 0;
+  unsigned int DepthFormat = 0;
+  int Size[2] = { 0, 0 };
+  int Rect[4] = { 0, 0, -1, -1 };
+  bool Valid = false;
 };
 
 #endif

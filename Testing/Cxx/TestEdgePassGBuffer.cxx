@@ -3,19 +3,22 @@
 // What the G-buffer pass (vtkNPRGBufferPass) draws and keeps for the edge pass: an unchanged
 // frame reuses the G-buffer and the line image, every kind of change redraws once, a line setting
 // recomputes the lines only; only the channels the lines need are written, and nothing for an
-// empty renderer or the shaded style.
+// empty renderer or the shaded style; an unchanged frame copies back the kept composite, bit for
+// bit, and only where that is safe.
 //
 // usage: TestEdgePassGBuffer CASE [DATA_DIR]   (CASE: see the table at the end of this file)
 #include "nprTesting.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLightCollection.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
 #include "vtkNew.h"
 #include "vtkProperty.h"
+#include "vtkRenderWindow.h"
 #include "vtkSphereSource.h"
 #include "vtkTextureObject.h"
 
@@ -23,6 +26,7 @@
 #include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace
 {
@@ -143,6 +147,135 @@ int Channels()
   NPR_CHECK(gbuffer->GetNumberOfGeometryDraws() == draws, "the shaded style drew a G-buffer");
   return nprTestResult();
 }
+
+// ---- An unchanged frame copies back the kept composite (KeepUnchangedComposite) ----
+std::vector<float> WindowDepths(Scene& scene)
+{
+  vtkNew<vtkFloatArray> depths;
+  scene.Window->GetZbufferData(0, 0, scene.Width - 1, scene.Height - 1, depths);
+  return std::vector<float>(
+    depths->GetPointer(0), depths->GetPointer(0) + scene.Width * scene.Height);
+}
+
+int KeptComposite()
+{
+  Scene scene(300, 200);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(32);
+  sphere->SetPhiResolution(16);
+  const double grey[3] = { 0.8, 0.8, 0.8 };
+  nprAddActor(scene.Renderer, sphere->GetOutputPort(), grey);
+  scene.Renderer->ResetCamera();
+  vtkNPREdgePass* edges = scene.Edges();
+  const nprImageTolerance exact = { 0, 0.0 };
+
+  auto first = scene.Render();
+  auto second = scene.Render(); // unchanged: composited again, and kept
+  const std::vector<float> composited = WindowDepths(scene);
+  NPR_CHECK(edges->GetNumberOfKeptCompositeRestores() == 0,
+    "the first unchanged frame had nothing kept to restore, yet restored");
+  auto third = scene.Render(); // copied back
+  NPR_CHECK(edges->GetNumberOfKeptCompositeRestores() == 1,
+    "the second unchanged frame was not copied back: " << edges->GetNumberOfKeptCompositeRestores()
+                                                       << " restores");
+  NPR_CHECK(nprCompareImages(third, first, exact).DifferingPixels == 0,
+    "the copied-back frame differs from the composited one");
+  const std::vector<float> restored = WindowDepths(scene);
+  long long onSurface = 0, differing = 0;
+  for (size_t i = 0; i < restored.size(); ++i)
+  {
+    onSurface += composited[i] < 1.0f ? 1 : 0;
+    differing += restored[i] != composited[i] ? 1 : 0;
+  }
+  NPR_CHECK(onSurface > 1000, "the sphere left no depth: " << onSurface << " pixels");
+  NPR_CHECK(differing == 0, differing << " depths differ after the copy back");
+
+  // A moving camera composites every frame; while frames are being reused it keeps each one.
+  scene.Camera()->Azimuth(20);
+  scene.Camera()->Elevation(10);
+  auto moved = scene.Render();
+  NPR_CHECK(edges->GetNumberOfKeptCompositeRestores() == 1, "a changed frame was copied back");
+  NPR_CHECK(nprCompareImages(moved, first, exact).DifferingPixels > 100, "the camera did not move");
+  auto movedAgain = scene.Render();
+  NPR_CHECK(edges->GetNumberOfKeptCompositeRestores() == 2,
+    "the frame after a change was not copied back from the changed frame's copy");
+  NPR_CHECK(nprCompareImages(movedAgain, moved, exact).DifferingPixels == 0,
+    "the copy of a changed frame differs from it");
+
+  // What the composite draws over, or with, changed: composited again, as if nothing were kept.
+  const std::pair<const char*, std::function<void()>> changes[] = {
+    { "background colour", [&] { scene.Renderer->SetBackground(0.2, 0.3, 0.4); } },
+    { "gradient background",
+      [&]
+      {
+        scene.Renderer->SetBackground2(0.9, 0.5, 0.1);
+        scene.Renderer->GradientBackgroundOn();
+      } },
+    { "silhouette colour", [&] { edges->SetSilhouetteColor(1.0, 0.0, 0.0); } },
+    { "line width", [&] { edges->SetLineWidth(3.0); } },
+  };
+  for (const auto& change : changes)
+  {
+    scene.Render(); // kept
+    const int restores = edges->GetNumberOfKeptCompositeRestores();
+    change.second();
+    auto changed = scene.Render();
+    NPR_CHECK(edges->GetNumberOfKeptCompositeRestores() == restores,
+      "a change of " << change.first << " was copied back from the frame before");
+    edges->KeepUnchangedCompositeOff();
+    auto reference = scene.Render();
+    edges->KeepUnchangedCompositeOn();
+    NPR_CHECK(nprCompareImages(changed, reference, exact).DifferingPixels == 0,
+      "after a change of " << change.first << " the frame differs from one drawn in full");
+  }
+  edges->KeepUnchangedCompositeOff();
+  const int restores = edges->GetNumberOfKeptCompositeRestores();
+  scene.Render();
+  scene.Render();
+  NPR_CHECK(edges->GetNumberOfKeptCompositeRestores() == restores,
+    "KeepUnchangedCompositeOff still copied back");
+  return nprTestResult();
+}
+
+// Where what lies under the composite is not the renderer's own clear, nothing is kept: a
+// renderer on a layer above another, and a multisampled window (blits resolve, never restore).
+int KeptCompositeUnsafe()
+{
+  const double grey[3] = { 0.8, 0.8, 0.8 };
+  {
+    Scene scene(240, 160);
+    vtkNew<vtkSphereSource> sphere;
+    nprAddActor(scene.Renderer, sphere->GetOutputPort(), grey);
+    scene.Renderer->ResetCamera();
+    vtkNew<vtkRenderer> below;
+    below->SetBackground(0.0, 0.0, 0.0);
+    scene.Window->SetNumberOfLayers(2);
+    scene.Window->AddRenderer(below);
+    scene.Renderer->SetLayer(1);
+    scene.Render();
+    below->SetBackground(0.0, 0.5, 0.0); // changes under the pass's renderer only
+    auto image = scene.Render();
+    scene.Render();
+    NPR_CHECK(scene.Edges()->GetNumberOfKeptCompositeRestores() == 0,
+      "a renderer on layer 1 copied back its kept composite");
+    NPR_CHECK(nprPixel(image, 2, 2, 1) > 100, "the layer below is not drawn");
+  }
+  {
+    Scene scene(240, 160);
+    scene.Window->SetMultiSamples(4);
+    vtkNew<vtkSphereSource> sphere;
+    nprAddActor(scene.Renderer, sphere->GetOutputPort(), grey);
+    scene.Renderer->ResetCamera();
+    auto first = scene.Render();
+    scene.Render();
+    auto third = scene.Render();
+    NPR_CHECK(scene.Edges()->GetNumberOfKeptCompositeRestores() == 0,
+      "a multisampled window copied back its kept composite");
+    NPR_CHECK(nprCompareImages(third, first, { 0, 0.0 }).DifferingPixels == 0,
+      "an unchanged multisampled frame differs");
+  }
+  return nprTestResult();
+}
 }
 
 int main(int argc, char* argv[])
@@ -150,6 +283,8 @@ int main(int argc, char* argv[])
   const std::map<std::string, std::function<int()>> cases = {
     { "reuse", Reuse },
     { "channels", Channels },
+    { "kept-composite", KeptComposite },
+    { "kept-composite-unsafe", KeptCompositeUnsafe },
   };
   return nprRunTestCase(argc, argv, cases);
 }
