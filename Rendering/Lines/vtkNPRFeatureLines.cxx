@@ -125,21 +125,28 @@ struct vtkNPRFeatureLines::Adjacency
   double Centre[3] = { 0.0, 0.0, 0.0 };
   std::vector<Edge> Edges;
   vtkIdType DegenerateFaces = 0;
-  // What the viewpoint pass reads, packed (10 bytes an edge, 17 with those read only for a typed
+  // What the viewpoint pass reads, packed (10 bytes an edge, 21 with those read only for a typed
   // edge or an unsure face, instead of the Edge's 48: the pass is bound by memory traffic), in
   // the order of the edges' first faces (Z order): each edge's index in Edges, its two faces and
-  // first point, its kind (ViewKind bits), and whether it is a crease at CreaseAngle (computed
-  // again when the angle changes).
-  std::vector<std::uint32_t> ViewEdges; // index in Edges
-  std::vector<std::uint32_t> ViewFaces; // 2 an edge
-  std::vector<std::uint32_t> ViewPoints;
+  // two points (A, B), its kind (ViewKind bits), and whether it is a crease at CreaseAngle
+  // (computed again when the angle changes).
+  std::vector<std::uint32_t> ViewEdges;  // index in Edges
+  std::vector<std::uint32_t> ViewFaces;  // 2 an edge
+  std::vector<std::uint32_t> ViewPoints; // 2 an edge
   std::vector<unsigned char> ViewKinds;
   std::vector<unsigned char> Creases;
   double CreaseAngle = -1.0; // of Creases; < 0: none computed
   // Scratch of the viewpoint pass, kept to save their allocation: per block of edges its typed
-  // edges (index in Edges) with their types, each input point's output id (all -1 between
-  // updates), each face's side (SideFacing, SideUnsure bits) for the last viewpoint.
-  std::vector<std::vector<std::pair<std::uint32_t, unsigned char>>> TypedEdges;
+  // edges (index in Edges, points, type; the serial output then never reads the large Edges),
+  // each input point's output id (all -1 between updates), each face's side (SideFacing,
+  // SideUnsure bits) for the last viewpoint.
+  struct TypedEdge
+  {
+    std::uint32_t Edge, A, B;
+    unsigned char Type;
+    bool operator<(const TypedEdge& other) const { return this->Edge < other.Edge; }
+  };
+  std::vector<std::vector<TypedEdge>> TypedEdges;
   std::vector<vtkIdType> OutputIds;
   std::vector<unsigned char> FaceSides;
   vtkIdType UnsureFaces = 0;
@@ -566,7 +573,7 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
   vtkSMPTools::Sort(byFirstFace.begin(), byFirstFace.end());
   this->ViewEdges.resize(edgeCount);
   this->ViewFaces.resize(2 * edgeCount);
-  this->ViewPoints.resize(edgeCount);
+  this->ViewPoints.resize(2 * edgeCount);
   this->ViewKinds.resize(edgeCount);
   this->Creases.clear();
   this->CreaseAngle = -1.0;
@@ -576,7 +583,8 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
     const Edge& edge = this->Edges[this->ViewEdges[e]];
     this->ViewFaces[2 * e] = static_cast<std::uint32_t>(edge.Faces[0]);
     this->ViewFaces[2 * e + 1] = static_cast<std::uint32_t>(edge.Count >= 2 ? edge.Faces[1] : 0);
-    this->ViewPoints[e] = static_cast<std::uint32_t>(edge.A);
+    this->ViewPoints[2 * e] = static_cast<std::uint32_t>(edge.A);
+    this->ViewPoints[2 * e + 1] = static_cast<std::uint32_t>(edge.B);
     this->ViewKinds[e] = static_cast<unsigned char>(edge.Count == 1
         ? ViewBoundary
         : (edge.Count > 2 ? ViewNonManifold
@@ -739,7 +747,7 @@ int vtkNPRFeatureLines::RequestData(
     }
     else
     {
-      const double* p = coordinates + 3 * static_cast<size_t>(points[e]);
+      const double* p = coordinates + 3 * static_cast<size_t>(points[2 * e]);
       const double toPoint[3] = { p[0] - eye[0], p[1] - eye[1], p[2] - eye[2] };
       f0 = Dot(n0, toPoint);
       f1 = Dot(n1, toPoint);
@@ -780,7 +788,7 @@ int vtkNPRFeatureLines::RequestData(
           }
           if (type)
           {
-            listed.emplace_back(viewEdges[e], type);
+            listed.push_back({ viewEdges[e], points[2 * e], points[2 * e + 1], type });
           }
         }
       }
@@ -808,20 +816,24 @@ int vtkNPRFeatureLines::RequestData(
     return outputId[id];
   };
   // The typed edges in the order of Edges (the order the faces first use them).
-  std::vector<std::pair<std::uint32_t, unsigned char>> typed;
+  std::vector<Adjacency::TypedEdge> typed;
   for (const auto& listed : typedEdges)
   {
     typed.insert(typed.end(), listed.begin(), listed.end());
   }
   std::sort(typed.begin(), typed.end());
-  for (const auto& edgeAndType : typed)
+  const vtkIdType typedCount = static_cast<vtkIdType>(typed.size());
+  lines->AllocateExact(typedCount, 2 * typedCount);
+  types->SetNumberOfValues(typedCount);
+  inputIds->SetNumberOfTuples(typedCount);
+  for (vtkIdType i = 0; i < typedCount; ++i)
   {
-    const Adjacency::Edge& edge = edges[edgeAndType.first];
+    const Adjacency::TypedEdge& edge = typed[i];
     const vtkIdType ends[2] = { outputPoint(edge.A), outputPoint(edge.B) };
     lines->InsertNextCell(2, ends);
-    types->InsertNextValue(edgeAndType.second);
-    const vtkIdType ids[2] = { edge.A, edge.B };
-    inputIds->InsertNextTypedTuple(ids);
+    types->SetValue(i, edge.Type);
+    inputIds->SetValue(2 * i, edge.A);
+    inputIds->SetValue(2 * i + 1, edge.B);
   }
   for (vtkIdType id : used)
   {
