@@ -11,6 +11,8 @@
 
 #include "vtkCamera.h"
 #include "vtkEDLShading.h"
+#include "vtkNPREdgePass.h"
+#include "vtkNPRInkPass.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRRenderWindowFactory.h"
 #include "vtkOutlineGlowPass.h"
@@ -37,6 +39,7 @@ const char* const FeatureLinesName = "vtkNPRFeatureLines per camera change (SetC
 // How one method draws its frame.
 struct SpeedMethod
 {
+  std::string Key; // its name in --methods
   std::string Name;
   vtkSmartPointer<vtkRenderPass> Pass; // nullptr: VTK's own chain
   bool Unchanged = false;              // time a second render of the same frame
@@ -70,19 +73,70 @@ vtkSmartPointer<vtkRenderPass> OverRenderSteps()
 std::vector<SpeedMethod> MakeMethods()
 {
   std::vector<SpeedMethod> methods;
-  methods.push_back({ "plain VTK frame", nullptr });
+  methods.push_back({ "plain", "plain VTK frame", nullptr });
   for (const char* style : { "edges", "toon+edges", "sketch", "toon", "inked", "drawing" })
   {
-    methods.push_back({ std::string("vtkNPRPass ") + style, NPRStyle(style) });
+    methods.push_back({ style, std::string("vtkNPRPass ") + style, NPRStyle(style) });
   }
+  // What bounds two of them, measured beside them: the edge pass with every line type off (the
+  // G-buffer capture and the depth-sprite copy back, no line taps) and with silhouettes only (no
+  // normals written or compared), and the inking pass with a one-pixel wireframe (no wide lines:
+  // its two geometry draws alone).
+  auto edgesWith = [](bool silhouettes)
+  {
+    auto pass = NPRStyle("edges");
+    vtkNPREdgePass* edges = vtkNPRPass::SafeDownCast(pass)->GetEdgePass();
+    edges->SetSilhouettes(silhouettes);
+    edges->CreasesOff();
+    edges->ContoursOff();
+    return pass;
+  };
+  methods.push_back({ "edges-silhouettes", "vtkNPRPass edges, silhouettes only", edgesWith(true) });
+  methods.push_back({ "edges-floor", "vtkNPRPass edges, every line type off", edgesWith(false) });
+  auto thin = NPRStyle("inked");
+  vtkNPRPass::SafeDownCast(thin)->GetInkPass()->SetLineWidth(0.5);
+  methods.push_back({ "inked-thin", "vtkNPRPass inked, 1 px wireframe", thin });
   // Its own pass, so that the edges method above draws every frame from scratch.
-  methods.push_back({ "vtkNPRPass edges, unchanged frame drawn again", NPRStyle("edges"), true });
   methods.push_back(
-    { "vtkSobelGradientMagnitudePass", OverRenderSteps<vtkSobelGradientMagnitudePass>() });
-  methods.push_back({ "vtkOutlineGlowPass", OverRenderSteps<vtkOutlineGlowPass>() });
-  methods.push_back({ "vtkSSAOPass", OverRenderSteps<vtkSSAOPass>() });
-  methods.push_back({ "vtkEDLShading", OverRenderSteps<vtkEDLShading>() });
-  methods.push_back({ "vtkPolyDataSilhouette re-extracted + surface", nullptr, false, true });
+    { "unchanged", "vtkNPRPass edges, unchanged frame drawn again", NPRStyle("edges"), true });
+  methods.push_back(
+    { "sobel", "vtkSobelGradientMagnitudePass", OverRenderSteps<vtkSobelGradientMagnitudePass>() });
+  methods.push_back({ "glow", "vtkOutlineGlowPass", OverRenderSteps<vtkOutlineGlowPass>() });
+  methods.push_back({ "ssao", "vtkSSAOPass", OverRenderSteps<vtkSSAOPass>() });
+  methods.push_back({ "edl", "vtkEDLShading", OverRenderSteps<vtkEDLShading>() });
+  methods.push_back(
+    { "silhouette", "vtkPolyDataSilhouette re-extracted + surface", nullptr, false, true });
+  return methods;
+}
+
+// --methods: the plain frame always (the reference of every ratio), then the methods named.
+std::vector<SpeedMethod> SelectMethods(const std::vector<std::string>& keys)
+{
+  std::vector<SpeedMethod> all = MakeMethods();
+  if (keys.empty())
+  {
+    return all;
+  }
+  std::vector<SpeedMethod> methods = { all.front() };
+  for (const std::string& key : keys)
+  {
+    auto found = std::find_if(
+      all.begin(), all.end(), [&](const SpeedMethod& method) { return method.Key == key; });
+    if (found == all.end() && key != "featurelines")
+    {
+      std::string known;
+      for (const SpeedMethod& method : all)
+      {
+        known += " " + method.Key;
+      }
+      throw std::runtime_error(
+        "--speed --methods: unknown method '" + key + "' (known:" + known + " featurelines)");
+    }
+    if (found != all.end() && found != all.begin())
+    {
+      methods.push_back(*found);
+    }
+  }
   return methods;
 }
 
@@ -111,7 +165,10 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
     nprLoadBenchmarkScenes(options.Scenes, options.Data, options.DenseMesh, options.ScenesGiven);
   nprBenchmarkStage stage(options.LineWidth);
   stage.Window->SetMultiSamples(0);
-  std::vector<SpeedMethod> methods = MakeMethods();
+  std::vector<SpeedMethod> methods = SelectMethods(options.Methods);
+  const bool featureLines = options.Methods.empty() ||
+    std::find(options.Methods.begin(), options.Methods.end(), "featurelines") !=
+      options.Methods.end();
 
   // vtkPolyDataSilhouette for the current camera, drawn as lines over the surface.
   // A new filter per scene: it keeps its edge table while the input is older than the table, so
@@ -210,6 +267,10 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
     }
 
     // Object-space feature lines per camera change: the first update builds the adjacency.
+    if (!featureLines)
+    {
+      continue;
+    }
     activate(methods[0]);
     nprApplyBenchmarkCamera(stage.Renderer, nprBenchmarkCameras()[0]);
     stage.FeatureLines->SetCamera(stage.Camera());
@@ -295,6 +356,10 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
       {
         lines.push_back(row.MedianMs);
       }
+    }
+    if (!featureLines)
+    {
+      continue;
     }
     md << "\n"
        << scene.Name << ": " << FeatureLinesName << ": " << nprFixed(nprMedian(lines), 1)
