@@ -148,6 +148,8 @@ def check_drawing(out):
 SPEED_METHODS = (
     "plain VTK frame", "vtkNPRPass edges", "vtkNPRPass toon+edges", "vtkNPRPass sketch",
     "vtkNPRPass toon", "vtkNPRPass inked", "vtkNPRPass drawing",
+    "vtkNPRPass edges, silhouettes only", "vtkNPRPass edges, every line type off",
+    "vtkNPRPass inked, 1 px wireframe",
     "vtkNPRPass edges, unchanged frame drawn again", "vtkSobelGradientMagnitudePass",
     "vtkOutlineGlowPass", "vtkSSAOPass", "vtkEDLShading",
     "vtkPolyDataSilhouette re-extracted + surface",
@@ -167,6 +169,23 @@ def check_speed(out):
     check("| method | median (ms) | ratio to plain |" in text, "speed.md has no table")
     check(all(method in text for method in SPEED_METHODS), "speed.md lacks a method")
     check("nan" not in text.lower(), "speed.md has a NaN")
+
+
+def check_speed_methods(args):
+    """--methods picks methods (the plain frame always comes first); an unknown name is an error."""
+    out = args.out + "-methods"
+    shutil.rmtree(out, ignore_errors=True)
+    command = [args.npr_benchmark, "--quick", "--speed", "--data", args.data, "--out", out,
+               "--methods", "edges,unchanged"]
+    print(" ".join(command))
+    check(subprocess.run(command).returncode == 0, "--speed --methods edges,unchanged failed")
+    methods = [row["method"] for row in read_csv(os.path.join(out, "speed.csv"))]
+    check(methods == ["plain VTK frame", "vtkNPRPass edges",
+                      "vtkNPRPass edges, unchanged frame drawn again"],
+          "--methods edges,unchanged gave %s" % methods)
+    result = subprocess.run(command[:-1] + ["edges,nonsense"], stderr=subprocess.PIPE, text=True)
+    check(result.returncode != 0 and "unknown method 'nonsense'" in result.stderr,
+          "an unknown --speed method was accepted: %d %s" % (result.returncode, result.stderr))
 
 
 def main():
@@ -201,6 +220,7 @@ def main():
         check_drawing(args.out)
     elif args.speed:
         check_speed(args.out)
+        check_speed_methods(args)
     else:
         check_benchmark(args.out)
     print("FAILED (%d failed checks)" % len(failures) if failures else "PASSED")
