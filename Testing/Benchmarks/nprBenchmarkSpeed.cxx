@@ -15,6 +15,7 @@
 #include "vtkNPRInkPass.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRRenderWindowFactory.h"
+#include "vtkOpenGLRenderTimer.h"
 #include "vtkOutlineGlowPass.h"
 #include "vtkPolyDataSilhouette.h"
 #include "vtkProperty.h"
@@ -30,6 +31,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace
@@ -51,6 +53,58 @@ struct SpeedRow
   std::string Scene, Size, Method;
   int Run = 0;
   double MedianMs = 0.0;
+  double GPUMedianMs = -1.0; // < 0: no timer query
+};
+
+// The GPU time of what a frame submits (VTK's vtkOpenGLRenderTimer: timestamp queries around
+// Render(), read once the frame has finished): on a GPU, what the frame costs the device apart
+// from the CPU's work. Not every OpenGL has them; on llvmpipe they are Mesa's own clock.
+class GPUTimer
+{
+public:
+  explicit GPUTimer(vtkRenderWindow* window)
+    : Window(window)
+  {
+  }
+  ~GPUTimer()
+  {
+    this->Window->MakeCurrent();
+    this->Timer.ReleaseGraphicsResources();
+  }
+  GPUTimer(const GPUTimer&) = delete;
+  GPUTimer& operator=(const GPUTimer&) = delete;
+  void Begin()
+  {
+    this->Window->MakeCurrent();
+    this->Supported = this->Supported && vtkOpenGLRenderTimer::IsSupported();
+    if (this->Supported)
+    {
+      this->Timer.Reset();
+      this->Timer.Start();
+    }
+  }
+  // Milliseconds, or -1 without timer queries.
+  double End()
+  {
+    if (!this->Supported)
+    {
+      return -1.0;
+    }
+    this->Window->MakeCurrent();
+    this->Timer.Stop();
+    this->Window->WaitForCompletion();
+    for (int tries = 0; tries < 1000 && !this->Timer.Ready(); ++tries)
+    {
+      std::this_thread::sleep_for(std::chrono::microseconds(100));
+    }
+    return this->Timer.Ready() ? 1e-6 * static_cast<double>(this->Timer.GetElapsedNanoseconds())
+                               : -1.0;
+  }
+
+private:
+  vtkRenderWindow* Window;
+  vtkOpenGLRenderTimer Timer;
+  bool Supported = true;
 };
 
 vtkSmartPointer<vtkRenderPass> NPRStyle(const std::string& style)
@@ -195,6 +249,8 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
       vtkMapper::SetResolveCoincidentTopology(VTK_RESOLVE_POLYGON_OFFSET);
     }
   };
+  GPUTimer gpuTimer(stage.Window);
+  double gpuMs = -1.0; // of the last timed frame
   auto timedFrame = [&](const SpeedMethod& method)
   {
     activate(method);
@@ -202,11 +258,15 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
     {
       nprTimeFrame(stage.Window, stage.Camera()); // this frame drawn once, untimed
       const nprClock::time_point start = nprClock::now();
+      gpuTimer.Begin();
       stage.Window->Render(); // nothing changed: what the pass reuses
       stage.Window->WaitForCompletion();
-      return std::chrono::duration<double, std::milli>(nprClock::now() - start).count();
+      const double ms = std::chrono::duration<double, std::milli>(nprClock::now() - start).count();
+      gpuMs = gpuTimer.End();
+      return ms;
     }
-    return nprTimeFrame(stage.Window, stage.Camera(),
+    gpuTimer.Begin();
+    const double ms = nprTimeFrame(stage.Window, stage.Camera(),
       [&]()
       {
         if (method.Silhouette)
@@ -214,6 +274,8 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
           silhouette->Modified(); // the extraction is part of every frame
         }
       });
+    gpuMs = gpuTimer.End();
+    return ms;
   };
 
   std::vector<SpeedRow> rows;
@@ -239,7 +301,7 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
         // of this size, the silhouette's edge table).
         stage.Activate(nullptr, false);
         nprApplyBenchmarkCamera(stage.Renderer, nprBenchmarkCameras()[0]);
-        std::vector<std::vector<double>> times(methods.size());
+        std::vector<std::vector<double>> times(methods.size()), gpuTimes(methods.size());
         for (int frame = -1; frame < options.Frames; ++frame)
         {
           if (frame >= 0)
@@ -253,12 +315,14 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
             if (frame >= 0)
             {
               times[m].push_back(ms);
+              gpuTimes[m].push_back(gpuMs);
             }
           }
         }
         for (size_t m = 0; m < methods.size(); ++m)
         {
-          rows.push_back({ scene.Name, sizeName, methods[m].Name, run + 1, nprMedian(times[m]) });
+          rows.push_back({ scene.Name, sizeName, methods[m].Name, run + 1, nprMedian(times[m]),
+            nprMedian(gpuTimes[m]) });
         }
         std::cerr << "npr-benchmark: " << scene.Name << " " << sizeName << " run " << run + 1
                   << ": plain " << nprFixed(nprMedian(times[0]), 1) << " ms, done in "
@@ -300,12 +364,12 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
 
   // ---- Reports: the median of the runs' medians; the ratio is taken within each run ----
   std::ofstream csv(options.Out + "/speed.csv");
-  csv << "scene,size,method,run,median_ms\n";
+  csv << "scene,size,method,run,median_ms,gpu_median_ms\n";
   std::string problems;
   for (const SpeedRow& row : rows)
   {
     csv << row.Scene << "," << row.Size << ",\"" << row.Method << "\"," << row.Run << ","
-        << row.MedianMs << "\n";
+        << row.MedianMs << "," << row.GPUMedianMs << "\n";
     if (!(row.MedianMs > 0.0))
     {
       problems += row.Scene + " " + row.Size + " " + row.Method + ": no positive time\n";
@@ -316,26 +380,30 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
      << vtkNPRRenderWindowFactory::GetGLRenderer(stage.Window) << ", no MSAA: median of "
      << options.Frames << " frames (camera turned 1 degree per frame, the methods interleaved), "
      << "median of " << options.Runs << " run" << (options.Runs > 1 ? "s" : "")
-     << "; the ratio is to the plain VTK frame of the same run.\n";
+     << "; the ratio is to the plain VTK frame of the same run. GPU: the frame's GL_TIME_ELAPSED "
+     << "(timestamp queries around Render(): median, and over the plain frame's), n/a without "
+        "them.\n";
   for (const nprBenchmarkScene& scene : scenes)
   {
     for (const auto& size : options.Sizes)
     {
       const std::string sizeName = std::to_string(size.first) + "x" + std::to_string(size.second);
-      std::map<int, double> plain;
+      std::map<int, double> plain, plainGPU;
       for (const SpeedRow& row : rows)
       {
         if (row.Scene == scene.Name && row.Size == sizeName && row.Method == methods[0].Name)
         {
           plain[row.Run] = row.MedianMs;
+          plainGPU[row.Run] = row.GPUMedianMs;
         }
       }
       md << "\n"
          << scene.Name << " (" << scene.Triangles << " triangles), " << sizeName << ":\n\n"
-         << "| method | median (ms) | ratio to plain | over plain (ms) |\n|---|---|---|---|\n";
+         << "| method | median (ms) | ratio to plain | over plain (ms) | GPU (ms) | GPU over plain "
+            "(ms) |\n|---|---|---|---|---|---|\n";
       for (const SpeedMethod& method : methods)
       {
-        std::vector<double> ms, ratios, extra;
+        std::vector<double> ms, ratios, extra, gpu, gpuExtra;
         for (const SpeedRow& row : rows)
         {
           if (row.Scene == scene.Name && row.Size == sizeName && row.Method == method.Name)
@@ -343,10 +411,17 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
             ms.push_back(row.MedianMs);
             ratios.push_back(row.MedianMs / plain[row.Run]);
             extra.push_back(row.MedianMs - plain[row.Run]);
+            if (row.GPUMedianMs >= 0.0 && plainGPU[row.Run] >= 0.0)
+            {
+              gpu.push_back(row.GPUMedianMs);
+              gpuExtra.push_back(row.GPUMedianMs - plainGPU[row.Run]);
+            }
           }
         }
         md << "| " << method.Name << " | " << nprFixed(nprMedian(ms), 1) << " | "
-           << nprFixed(nprMedian(ratios), 2) << " | " << nprFixed(nprMedian(extra), 1) << " |\n";
+           << nprFixed(nprMedian(ratios), 2) << " | " << nprFixed(nprMedian(extra), 1) << " | "
+           << (gpu.empty() ? std::string("n/a") : nprFixed(nprMedian(gpu), 3)) << " | "
+           << (gpuExtra.empty() ? std::string("n/a") : nprFixed(nprMedian(gpuExtra), 3)) << " |\n";
       }
     }
     std::vector<double> lines;
