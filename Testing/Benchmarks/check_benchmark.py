@@ -167,6 +167,9 @@ def check_speed(out):
     md = os.path.join(out, "speed.md")
     text = open(md).read() if os.path.isfile(md) else ""
     check("| method | median (ms) | ratio to plain |" in text, "speed.md has no table")
+    check("| GPU (ms) | GPU over plain (ms) |" in text, "speed.md has no GPU-time columns")
+    check(all(row.get("gpu_median_ms") not in (None, "") for row in rows),
+          "speed.csv lacks gpu_median_ms")
     check(all(method in text for method in SPEED_METHODS), "speed.md lacks a method")
     check("nan" not in text.lower(), "speed.md has a NaN")
 
