@@ -309,6 +309,30 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
           << "\n#define NPR_RADIUS " << internal.Filter.Radius + 1 << "\n#define NPR_ANTIALIAS "
           << (this->AntiAliasing ? 1 : 0) << "\n#define NPR_OUTPUT " << output
           << "\n#define NPR_REMAPPED_DEPTH " << (gbuffer->GetDepthRemapped() ? 1 : 0) << "\n";
+  int origin[2] = { 0, 0 };
+  if (output != OutputLineCoverage)
+  {
+    vtkNPRViewportOrigin(state, origin);
+  }
+  // Outside the props' projected bounds there is only background: nothing to write there.
+  const int* rect = gbuffer->GetContentRectangle();
+  const int windowRect[4] = { origin[0] + rect[0], origin[1] + rect[1], origin[0] + rect[2],
+    origin[1] + rect[3] };
+  // An unchanged frame: the kept composite copied back, before any of the composite's setup.
+  const std::string compositeKey = output == OutputComposite
+    ? this->CompositeKey(renderer, defines.str(), windowRect)
+    : std::string();
+  const bool unchanged = !compositeKey.empty() && compositeKey == internal.CompositeKey;
+  internal.CompositeKey = compositeKey;
+  internal.FramesSinceUnchanged = unchanged ? 0 : internal.FramesSinceUnchanged + 1;
+  if (unchanged && internal.Kept.Restore(window))
+  {
+    ++this->NumberOfKeptCompositeRestores;
+    this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+    vtkOpenGLCheckErrorMacro("failed after vtkNPREdgePass::Render (kept composite)");
+    return;
+  }
+
   if (internal.CompositeSource.empty())
   {
     internal.CompositeSource = vtkNPREdgeCompositeFS;
@@ -345,43 +369,10 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
     program->SetUniform3f("creaseColor", this->CreaseColor);
     program->SetUniform3f("contourColor", this->ContourColor);
   }
-  int origin[2] = { 0, 0 };
-  if (output != OutputLineCoverage)
-  {
-    vtkNPRViewportOrigin(state, origin);
-  }
   program->SetUniform2i("viewportOrigin", origin);
   if (gbuffer->GetDepthRemapped())
   {
     program->SetUniform2f("nprDepthRemap", gbuffer->GetDepthRemap());
-  }
-
-  // Outside the props' projected bounds there is only background: nothing to write there.
-  const int* rect = gbuffer->GetContentRectangle();
-  const int windowRect[4] = { origin[0] + rect[0], origin[1] + rect[1], origin[0] + rect[2],
-    origin[1] + rect[3] };
-  const std::string compositeKey = output == OutputComposite
-    ? this->CompositeKey(renderer, defines.str(), windowRect)
-    : std::string();
-  const bool unchanged = !compositeKey.empty() && compositeKey == internal.CompositeKey;
-  internal.CompositeKey = compositeKey;
-  internal.FramesSinceUnchanged = unchanged ? 0 : internal.FramesSinceUnchanged + 1;
-  if (unchanged && internal.Kept.IsValid())
-  {
-    if (internal.Kept.Restore(window))
-    {
-      ++this->NumberOfKeptCompositeRestores;
-      color->Deactivate();
-      depth->Deactivate();
-      if (lines)
-      {
-        internal.LineTexture->Deactivate();
-      }
-      this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
-      vtkOpenGLCheckErrorMacro("failed after vtkNPREdgePass::Render (kept composite)");
-      return;
-    }
-    internal.CompositeKey.clear();
   }
 
   vtkNPRCompositeState compositeState(glState);
@@ -394,7 +385,7 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
   {
     glState->vtkglEnable(GL_SCISSOR_TEST);
     glState->vtkglScissor(
-      origin[0] + rect[0], origin[1] + rect[1], rect[2] - rect[0] + 1, rect[3] - rect[1] + 1);
+      windowRect[0], windowRect[1], rect[2] - rect[0] + 1, rect[3] - rect[1] + 1);
   }
   if (output == OutputLineCoverage)
   {

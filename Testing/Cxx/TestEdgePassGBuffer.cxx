@@ -31,16 +31,23 @@
 namespace
 {
 using Scene = nprPassScene;
+const double Grey[3] = { 0.8, 0.8, 0.8 };
+
+// The sphere the cases draw (kept by the caller, which may change it).
+vtkSmartPointer<vtkSphereSource> NewSphere()
+{
+  auto sphere = vtkSmartPointer<vtkSphereSource>::New();
+  sphere->SetThetaResolution(32);
+  sphere->SetPhiResolution(16);
+  return sphere;
+}
 
 // ---- Unchanged frames reuse the G-buffer and line image; every kind of change redraws ----
 int Reuse()
 {
   Scene scene(300, 200);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(32);
-  sphere->SetPhiResolution(16);
-  const double grey[3] = { 0.8, 0.8, 0.8 };
-  vtkSmartPointer<vtkActor> actor = nprAddActor(scene.Renderer, sphere->GetOutputPort(), grey);
+  vtkSmartPointer<vtkSphereSource> sphere = NewSphere();
+  vtkSmartPointer<vtkActor> actor = nprAddActor(scene.Renderer, sphere->GetOutputPort(), Grey);
   vtkNPRGBufferPass* gbuffer = scene.GBuffer();
   auto first = scene.Render();
   NPR_CHECK(gbuffer->GetNumberOfGeometryDraws() == 1, "first frame: one draw");
@@ -58,7 +65,7 @@ int Reuse()
     { "actor position", [&] { actor->SetPosition(0.1, 0, 0); } },
     { "source", [&] { sphere->SetRadius(0.4); } },
     { "visibility of a new actor",
-      [&] { nprAddActor(scene.Renderer, sphere->GetOutputPort(), grey)->SetPosition(1, 0, 0); } },
+      [&] { nprAddActor(scene.Renderer, sphere->GetOutputPort(), Grey)->SetPosition(1, 0, 0); } },
     { "light", [&] { scene.Renderer->GetLights()->GetItemAsObject(0)->Modified(); } },
     { "size", [&] { scene.Window->SetSize(320, 200); } },
     { "line types", [&] { scene.Edges()->CreasesOff(); } },
@@ -101,8 +108,7 @@ int Channels()
   NPR_CHECK(nprPixel(empty, 100, 75, 0) == 255, "the empty renderer's background is not white");
 
   const double origin[3] = { 0, 0, 0 }, beside[3] = { 1.5, 0, 0 };
-  const double grey[3] = { 0.8, 0.8, 0.8 };
-  nprAddCube(scene.Renderer, origin, 1.0, grey);
+  nprAddCube(scene.Renderer, origin, 1.0, Grey);
   scene.Renderer->ResetCamera();
   struct Case
   {
@@ -123,7 +129,7 @@ int Channels()
   {
     if (c.TwoProps && !second)
     {
-      second = nprAddCube(scene.Renderer, beside, 1.0, grey);
+      second = nprAddCube(scene.Renderer, beside, 1.0, Grey);
       scene.Renderer->ResetCamera();
     }
     scene.Edges()->SetCreases(c.Creases);
@@ -160,11 +166,8 @@ std::vector<float> WindowDepths(Scene& scene)
 int KeptComposite()
 {
   Scene scene(300, 200);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(32);
-  sphere->SetPhiResolution(16);
-  const double grey[3] = { 0.8, 0.8, 0.8 };
-  nprAddActor(scene.Renderer, sphere->GetOutputPort(), grey);
+  vtkSmartPointer<vtkSphereSource> sphere = NewSphere();
+  nprAddActor(scene.Renderer, sphere->GetOutputPort(), Grey);
   scene.Renderer->ResetCamera();
   vtkNPREdgePass* edges = scene.Edges();
   const nprImageTolerance exact = { 0, 0.0 };
@@ -241,11 +244,10 @@ int KeptComposite()
 // renderer on a layer above another, and a multisampled window (blits resolve, never restore).
 int KeptCompositeUnsafe()
 {
-  const double grey[3] = { 0.8, 0.8, 0.8 };
   {
     Scene scene(240, 160);
-    vtkNew<vtkSphereSource> sphere;
-    nprAddActor(scene.Renderer, sphere->GetOutputPort(), grey);
+    vtkSmartPointer<vtkSphereSource> sphere = NewSphere();
+    nprAddActor(scene.Renderer, sphere->GetOutputPort(), Grey);
     scene.Renderer->ResetCamera();
     vtkNew<vtkRenderer> below;
     below->SetBackground(0.0, 0.0, 0.0);
@@ -263,8 +265,8 @@ int KeptCompositeUnsafe()
   {
     Scene scene(240, 160);
     scene.Window->SetMultiSamples(4);
-    vtkNew<vtkSphereSource> sphere;
-    nprAddActor(scene.Renderer, sphere->GetOutputPort(), grey);
+    vtkSmartPointer<vtkSphereSource> sphere = NewSphere();
+    nprAddActor(scene.Renderer, sphere->GetOutputPort(), Grey);
     scene.Renderer->ResetCamera();
     auto first = scene.Render();
     scene.Render();
