@@ -19,6 +19,10 @@ void nprApplyPassSettings(vtkNPRPass* pass, const nprPassSettings& settings)
   pass->SetStyle(vtkNPRPass::GetStyleFromName(settings.Style.c_str()));
   vtkNPREdgePass* edges = pass->GetEdgePass();
   edges->SetSilhouettes(settings.Silhouettes);
+  edges->SetSmoothSilhouettes(settings.SmoothSilhouettes);
+  edges->SetSmoothSilhouetteReach(settings.SmoothSilhouetteReach);
+  edges->SetSuggestiveContours(settings.SuggestiveContours);
+  edges->SetSuggestiveContourThreshold(settings.SuggestiveContourThreshold);
   edges->SetCreases(settings.Creases);
   edges->SetContours(settings.Contours);
   edges->SetSilhouetteThreshold(settings.SilhouetteThreshold);

@@ -22,6 +22,10 @@ struct nprPassSettings
   bool Creases = true;
   bool Contours = true;
   double SilhouetteThreshold = 0.005;
+  bool SmoothSilhouettes = true;
+  double SmoothSilhouetteReach = 1.0;
+  bool SuggestiveContours = false;
+  double SuggestiveContourThreshold = 0.01;
   double CreaseAngle = 30.0;
   int ContourSide = vtkNPREdgePass::INSIDE;
   double LineWidth = 1.5;

@@ -218,18 +218,28 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
     internal.WarnedAboutEncoding = true;
   }
   const bool packed = encoding == PACKED8 || encoding == PACKED16;
+  // n.v at each tap, for the smooth silhouettes and the suggestive contours.
+  const bool facing = !packed && gbuffer->GetWritesNormals() &&
+    ((this->Silhouettes && this->SmoothSilhouettes) || this->SuggestiveContours);
   std::ostringstream detectDefines;
   detectDefines << "#define NPR_ENCODING " << encoding << "\n#define NPR_PACKED_BLUR "
                 << (packed && this->PackedBlur ? 1 : 0) << "\n#define NPR_PERSPECTIVE "
                 << (gbuffer->GetPerspective() ? 1 : 0) << "\n#define NPR_SILHOUETTES "
                 << (this->Silhouettes ? 1 : 0) << "\n#define NPR_CREASES "
                 << (this->Creases && gbuffer->GetWritesNormals() ? 1 : 0)
+                << "\n#define NPR_FACING " << (facing ? 1 : 0)
+                << "\n#define NPR_SMOOTH_SILHOUETTES "
+                << (facing && this->Silhouettes && this->SmoothSilhouettes ? 1 : 0)
+                << "\n#define NPR_SUGGESTIVE " << (facing && this->SuggestiveContours ? 1 : 0)
                 << "\n#define NPR_CONTOURS " << (this->Contours ? 1 : 0)
                 << "\n#define NPR_HAVE_OBJECT_IDS " << (gbuffer->GetWritesObjectIds() ? 1 : 0)
+                << "\n#define NPR_HAVE_FACE_NORMALS "
+                << (this->FaceCreases && gbuffer->GetWritesFaceNormals() ? 1 : 0)
                 << "\n#define NPR_CONTOUR_SIDE " << this->ContourSide << "\n";
   std::ostringstream detectSettings;
   detectSettings << detectDefines.str() << this->SilhouetteThreshold << " " << this->CreaseAngle
-                 << " " << this->PackedThreshold;
+                 << " " << this->PackedThreshold << " " << this->SmoothSilhouetteReach << " "
+                 << this->SuggestiveContourThreshold;
   if (lines &&
     (!internal.LineImageValid || internal.LineImageVersion != gbuffer->GetContentVersion() ||
       internal.LineImageSettings != detectSettings.str()))
@@ -259,6 +269,14 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
       const double radians = vtkMath::RadiansFromDegrees(this->CreaseAngle);
       program->SetUniformf("creaseAngle", static_cast<float>(radians));
       program->SetUniformf("creaseRamp", static_cast<float>(std::min(0.0175, 0.25 * radians)));
+      program->SetUniformf("smoothSilhouetteReach", static_cast<float>(this->SmoothSilhouetteReach));
+      program->SetUniformf(
+        "suggestiveThreshold", static_cast<float>(this->SuggestiveContourThreshold));
+      float rayOrigin[3], rayPerPixelX[3], rayPerPixelY[3];
+      gbuffer->GetViewRay(rayOrigin, rayPerPixelX, rayPerPixelY);
+      program->SetUniform3f("viewRayOrigin", rayOrigin);
+      program->SetUniform3f("viewRayPerPixelX", rayPerPixelX);
+      program->SetUniform3f("viewRayPerPixelY", rayPerPixelY);
     }
     else
     {
@@ -368,6 +386,7 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
     program->SetUniform3f("silhouetteColor", this->SilhouetteColor);
     program->SetUniform3f("creaseColor", this->CreaseColor);
     program->SetUniform3f("contourColor", this->ContourColor);
+    program->SetUniform3f("suggestiveColor", this->SuggestiveContourColor);
   }
   program->SetUniform2i("viewportOrigin", origin);
   if (gbuffer->GetDepthRemapped())
@@ -435,7 +454,8 @@ std::string vtkNPREdgePass::CompositeKey(
   {
     key << " " << windowRect[i];
   }
-  for (const double* colorValue : { this->SilhouetteColor, this->CreaseColor, this->ContourColor })
+  for (const double* colorValue : { this->SilhouetteColor, this->CreaseColor, this->ContourColor,
+         this->SuggestiveContourColor })
   {
     key << " " << colorValue[0] << " " << colorValue[1] << " " << colorValue[2];
   }
@@ -485,8 +505,14 @@ void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Silhouettes: " << this->Silhouettes << " threshold " << this->SilhouetteThreshold
      << " color " << this->SilhouetteColor[0] << " " << this->SilhouetteColor[1] << " "
      << this->SilhouetteColor[2] << "\n";
+  os << indent << "SmoothSilhouettes: " << this->SmoothSilhouettes << " reach "
+     << this->SmoothSilhouetteReach << "\n";
+  os << indent << "SuggestiveContours: " << this->SuggestiveContours << " threshold "
+     << this->SuggestiveContourThreshold << " color " << this->SuggestiveContourColor[0] << " "
+     << this->SuggestiveContourColor[1] << " " << this->SuggestiveContourColor[2] << "\n";
   os << indent << "Creases: " << this->Creases << " angle " << this->CreaseAngle << " color "
      << this->CreaseColor[0] << " " << this->CreaseColor[1] << " " << this->CreaseColor[2] << "\n";
+  os << indent << "FaceCreases: " << this->FaceCreases << "\n";
   os << indent << "Contours: " << this->Contours << " side " << this->ContourSide << " color "
      << this->ContourColor[0] << " " << this->ContourColor[1] << " " << this->ContourColor[2]
      << "\n";

@@ -14,8 +14,31 @@
  *   perspective and z for parallel cameras, relative to the pixel's depth: it vanishes on planes
  *   at any slant, so grazing faces draw no line. SilhouetteThreshold is the relative depth step
  *   that starts a line (0.005: a step of 0.5 % of the distance). Lines lie on the nearer side.
+ *   With SmoothSilhouettes (on by default, FLOAT and HALF encodings), silhouettes also follow
+ *   the contour of the smooth surface that the normals describe, where the depth step fades out
+ *   (an interior contour towards its end, where a fold of the surface flattens): n.v, the
+ *   interpolated normal against the direction to the eye (the pixel's own for perspective
+ *   cameras), changes sign between two pixels of an object (the line lies on the pixel nearer
+ *   the zero), or falls towards zero at a pixel where the surface ends (a neighbour of another
+ *   object, of the background, or of another sheet of the surface whose n.v does not continue
+ *   the fall) and, extrapolated from the opposite neighbour, reaches zero within
+ *   SmoothSilhouetteReach pixels. Front-facing smooth regions, where n.v stays positive, draw
+ *   nothing.
  * - Creases: the angle between the normals of neighbouring pixels of one object exceeds
- *   CreaseAngle (degrees). Lines lie on the side facing the viewer more.
+ *   CreaseAngle (degrees). Lines lie on the side facing the viewer more. With FaceCreases (on by
+ *   default, FLOAT encoding) the normals compared are the faces' own (the G-buffer's face
+ *   normals), so that creases are those of the mesh: shading normals averaged across an edge
+ *   sharper than the angle (where vtkPolyDataNormals leaves a vertex unsplit because the chain
+ *   of sharp edges through it is broken, as along a crease whose angle wavers about the
+ *   threshold) would hide part of it.
+ * - Suggestive contours (DeCarlo et al. 2003; off by default, FLOAT and HALF encodings): where
+ *   n.v, positive, has a minimum along the direction in which the surface recedes (the image
+ *   gradient of depth, the view direction projected onto the surface): its first derivative
+ *   there vanishes within half a pixel and its second derivative, per pixel squared, exceeds
+ *   SuggestiveContourThreshold. They are found in image space from the same five taps as the
+ *   other lines (no extra texel fetch): in object space they need the curvature tensor and its
+ *   derivative at every vertex, recomputed per mesh, and the lines' visibility. They suggest the
+ *   folds that a slightly different view would show as contours: valleys seen from the side.
  * - Contours: the object id changes (props are objects; with one prop, coverage changes).
  *   ContourSide finds the one-pixel line on the nearer object's pixels (INSIDE), on the farther
  *   object's or the background's (OUTSIDE) or on both (BOTH, twice as wide).
@@ -83,6 +106,47 @@ public:
 
   ///@{
   /**
+   * Silhouettes of the smooth surface (on by default; see the class description): a contour
+   * that n.v, extrapolated across the last pixel of a surface, reaches within
+   * SmoothSilhouetteReach pixels (default 1, clamped to [0, 1]; 0 keeps only sign changes of
+   * n.v between pixels) is drawn on that pixel. The G-buffer then holds normals. No effect with
+   * the packed encodings.
+   */
+  vtkSetMacro(SmoothSilhouettes, bool);
+  vtkGetMacro(SmoothSilhouettes, bool);
+  vtkBooleanMacro(SmoothSilhouettes, bool);
+  vtkSetClampMacro(SmoothSilhouetteReach, double, 0.0, 1.0);
+  vtkGetMacro(SmoothSilhouetteReach, double);
+  ///@}
+
+  ///@{
+  /**
+   * Suggestive contours: off by default, black. The threshold is the second derivative of n.v
+   * along the receding direction, per pixel squared (default 0.01, clamped to [1e-4, 1]): a
+   * valley of n.v whose value rises by half of it one pixel to each side. No effect with the
+   * packed encodings.
+   */
+  vtkSetMacro(SuggestiveContours, bool);
+  vtkGetMacro(SuggestiveContours, bool);
+  vtkBooleanMacro(SuggestiveContours, bool);
+  vtkSetClampMacro(SuggestiveContourThreshold, double, 1e-4, 1.0);
+  vtkGetMacro(SuggestiveContourThreshold, double);
+  vtkSetVector3Macro(SuggestiveContourColor, double);
+  vtkGetVector3Macro(SuggestiveContourColor, double);
+  ///@}
+
+  /**
+   * True when the G-buffer must hold normals for the line types that are on (creases, smooth
+   * silhouettes, suggestive contours).
+   */
+  bool GetNeedsNormals() const
+  {
+    return this->Creases || (this->Silhouettes && this->SmoothSilhouettes) ||
+      this->SuggestiveContours;
+  }
+
+  ///@{
+  /**
    * Creases (normal discontinuities): on by default, black, 30 degrees, clamped to [1, 179].
    */
   vtkSetMacro(Creases, bool);
@@ -92,6 +156,18 @@ public:
   vtkGetMacro(CreaseAngle, double);
   vtkSetVector3Macro(CreaseColor, double);
   vtkGetVector3Macro(CreaseColor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Creases between the faces' own normals (on by default; FLOAT encoding only, where the
+   * G-buffer then stores a face normal per pixel beside the shading normal) instead of between
+   * the shading normals (off: an edge whose shading normals are averaged draws no crease, as on
+   * a coarse mesh shaded smooth on purpose).
+   */
+  vtkSetMacro(FaceCreases, bool);
+  vtkGetMacro(FaceCreases, bool);
+  vtkBooleanMacro(FaceCreases, bool);
   ///@}
 
   enum ContourSides
@@ -197,7 +273,10 @@ public:
   /**
    * True when some line type is on.
    */
-  bool GetDrawsLines() const { return this->Silhouettes || this->Creases || this->Contours; }
+  bool GetDrawsLines() const
+  {
+    return this->Silhouettes || this->Creases || this->Contours || this->SuggestiveContours;
+  }
 
   /**
    * Number of times the line image was computed from the G-buffer (it is reused while the
@@ -246,9 +325,15 @@ protected:
   bool Silhouettes = true;
   double SilhouetteThreshold = 0.005;
   double SilhouetteColor[3] = { 0.0, 0.0, 0.0 };
+  bool SmoothSilhouettes = true;
+  double SmoothSilhouetteReach = 1.0;
+  bool SuggestiveContours = false;
+  double SuggestiveContourThreshold = 0.01;
+  double SuggestiveContourColor[3] = { 0.0, 0.0, 0.0 };
   bool Creases = true;
   double CreaseAngle = 30.0;
   double CreaseColor[3] = { 0.0, 0.0, 0.0 };
+  bool FaceCreases = true;
   bool Contours = true;
   int ContourSide = INSIDE;
   double ContourColor[3] = { 0.0, 0.0, 0.0 };

@@ -219,10 +219,12 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   const bool packed = encoding == PACKED8 || encoding == PACKED16;
   const bool normals = this->NormalsRequested;
   const bool ids = this->ObjectIdsRequested && opaqueProps > 1 && !packed;
+  const bool faceNormals = normals && this->FaceNormalsRequested && encoding == FLOAT;
   if (normals != this->WritesNormals || ids != this->WritesObjectIds ||
-    encoding != this->WrittenEncoding)
+    faceNormals != this->WritesFaceNormals || encoding != this->WrittenEncoding)
   {
     this->WritesNormals = normals;
+    this->WritesFaceNormals = faceNormals;
     this->WritesObjectIds = ids;
     this->WrittenEncoding = encoding;
     this->ShaderStageTime.Modified(); // the mappers rebuild their shaders with the new outputs
@@ -241,7 +243,7 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
     return;
   }
 
-  const int components = ids ? 4 : (normals ? 2 : 1);
+  const int components = ids || faceNormals ? 4 : (normals ? 2 : 1);
   this->AllocateBuffers(window, width, height, components, encoding);
   this->Viewport[0] = 0.0f;
   this->Viewport[1] = 0.0f;
@@ -333,10 +335,12 @@ void vtkNPRGBufferPass::RenderDepthOnly(const vtkRenderState* state, int width, 
   }
   vtkRenderer* renderer = state->GetRenderer();
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  if (this->WritesNormals != true || this->WritesObjectIds || this->WrittenEncoding != FLOAT)
+  if (this->WritesNormals != true || this->WritesObjectIds || this->WritesFaceNormals ||
+    this->WrittenEncoding != FLOAT)
   {
     this->WritesNormals = true;
     this->WritesObjectIds = false;
+    this->WritesFaceNormals = false; // the rebuilt normals are face normals
     this->WrittenEncoding = FLOAT;
     this->ShaderStageTime.Modified();
   }
@@ -475,7 +479,8 @@ bool vtkNPRGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
   const bool vertexVC = fragmentShader.find("in vec4 vertexVCVSOutput;") != std::string::npos;
   std::string defines = std::string("#define NPR_WRITE_NORMALS ") +
     (this->WritesNormals ? "1" : "0") + "\n#define NPR_WRITE_OBJECT_IDS " +
-    (this->WritesObjectIds ? "1" : "0") + "\n#define NPR_HAVE_MAPPER_NORMAL " +
+    (this->WritesObjectIds ? "1" : "0") + "\n#define NPR_WRITE_FACE_NORMALS " +
+    (this->WritesFaceNormals ? "1" : "0") + "\n#define NPR_HAVE_MAPPER_NORMAL " +
     (mapperNormal ? "1" : "0") + "\n#define NPR_HAVE_VERTEX_VC " + (vertexVC ? "1" : "0") +
     "\n#define NPR_ENCODING " + std::to_string(this->WrittenEncoding) +
     "\n#define NPR_REMAPPED_DEPTH " + (this->DepthRemapped ? "1" : "0") +
@@ -567,16 +572,58 @@ void vtkNPRGBufferPass::ReleaseGraphicsResources(vtkWindow* window)
   this->Internal->Valid = false;
 }
 
+void vtkNPRGBufferPass::GetViewRay(float origin[3], float perPixelX[3], float perPixelY[3]) const
+{
+  // The inverse projection is kept in GLSL's layout: element (i, j) multiplies component i.
+  auto unproject = [this](double x, double y, double z, double point[3])
+  {
+    double h[4];
+    for (int j = 0; j < 4; ++j)
+    {
+      h[j] = this->InverseProjection->GetElement(0, j) * x +
+        this->InverseProjection->GetElement(1, j) * y +
+        this->InverseProjection->GetElement(2, j) * z + this->InverseProjection->GetElement(3, j);
+    }
+    for (int j = 0; j < 3; ++j)
+    {
+      point[j] = h[j] / h[3];
+    }
+  };
+  // The ray at the centres of pixels (0, 0), (1, 0) and (0, 1): it is affine in the pixel.
+  double rays[3][3];
+  const double centres[3][2] = { { 0.5, 0.5 }, { 1.5, 0.5 }, { 0.5, 1.5 } };
+  for (int c = 0; c < 3; ++c)
+  {
+    const double x = 2.0 * centres[c][0] * this->Viewport[2] - 1.0;
+    const double y = 2.0 * centres[c][1] * this->Viewport[3] - 1.0;
+    double nearPoint[3], farPoint[3];
+    unproject(x, y, -1.0, nearPoint);
+    unproject(x, y, 1.0, farPoint);
+    for (int j = 0; j < 3; ++j)
+    {
+      rays[c][j] = this->Perspective ? nearPoint[j] : farPoint[j] - nearPoint[j];
+    }
+  }
+  for (int j = 0; j < 3; ++j)
+  {
+    origin[j] = static_cast<float>(rays[0][j]);
+    perPixelX[j] = static_cast<float>(rays[1][j] - rays[0][j]);
+    perPixelY[j] = static_cast<float>(rays[2][j] - rays[0][j]);
+  }
+}
+
 void vtkNPRGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";
   os << indent << "NormalsRequested: " << this->NormalsRequested << "\n";
   os << indent << "ObjectIdsRequested: " << this->ObjectIdsRequested << "\n";
+  os << indent << "FaceNormalsRequested: " << this->FaceNormalsRequested << "\n";
   os << indent << "GeometryEncoding: " << this->GeometryEncoding << "\n";
   os << indent << "DepthOnly: " << this->DepthOnly << "\n";
   os << indent << "ReuseUnchangedFrames: " << this->ReuseUnchangedFrames << "\n";
   os << indent << "WritesNormals: " << this->WritesNormals << "\n";
+  os << indent << "WritesFaceNormals: " << this->WritesFaceNormals << "\n";
   os << indent << "WritesObjectIds: " << this->WritesObjectIds << "\n";
   os << indent << "NumberOfGeometryDraws: " << this->NumberOfGeometryDraws << "\n";
 }

@@ -17,7 +17,8 @@
  *
  * GeometryEncoding chooses how the geometry attachment stores this (for measuring what
  * precision the lines need; vtkNPREdgePass reads each):
- * - FLOAT (default): as above, 32-bit float.
+ * - FLOAT (default): as above, 32-bit float; with FaceNormalsRequested, a = the face normal,
+ *   packed as the shading normal (RGBA32F).
  * - HALF: 16-bit float; r = view depth, g and b = the octahedral normal's two coordinates,
  *   a = id (exact up to 2048 props): R16F with depth only, RGBA16F otherwise.
  * - PACKED8 / PACKED16: the 1990s packed depth+normal buffer, one unsigned normalised channel
@@ -105,6 +106,18 @@ public:
   vtkBooleanMacro(ObjectIdsRequested, bool);
   ///@}
 
+  ///@{
+  /**
+   * Also write each fragment's face normal, from the derivatives of its view-space position, beside
+   * the shading normal (off by default; FLOAT encoding with normals only, in the alpha channel):
+   * vtkNPREdgePass finds creases between faces from it, as the mesh has them, where the shading
+   * normals may be averaged across a sharp edge.
+   */
+  vtkSetMacro(FaceNormalsRequested, bool);
+  vtkGetMacro(FaceNormalsRequested, bool);
+  vtkBooleanMacro(FaceNormalsRequested, bool);
+  ///@}
+
   enum GeometryEncodings
   {
     FLOAT = 0,
@@ -147,6 +160,7 @@ public:
   bool GetHasContent() const { return this->HasContent; }
   bool GetWritesNormals() const { return this->WritesNormals; }
   bool GetWritesObjectIds() const { return this->WritesObjectIds; }
+  bool GetWritesFaceNormals() const { return this->WritesFaceNormals; }
   int GetWrittenEncoding() const { return this->WrittenEncoding; }
   vtkTextureObject* GetColorTexture() const
   {
@@ -172,6 +186,13 @@ public:
    * The camera's projection was perspective in the last frame.
    */
   bool GetPerspective() const { return this->Perspective; }
+
+  /**
+   * The view-space ray through the centre of pixel (i, j) of the last frame's G-buffer is
+   * origin + i perPixelX + j perPixelY: from the eye through the pixel for a perspective view
+   * (not of unit length), the direction of projection for a parallel one.
+   */
+  void GetViewRay(float origin[3], float perPixelX[3], float perPixelY[3]) const;
 
   /**
    * The view depths that the packed encodings map onto 0..1 in the last frame (the camera's
@@ -235,6 +256,7 @@ protected:
   vtkRenderPass* DelegatePass = nullptr;
   bool NormalsRequested = false;
   bool ObjectIdsRequested = false;
+  bool FaceNormalsRequested = false;
   bool ReuseUnchangedFrames = true;
   bool DepthOnly = false;
   int GeometryEncoding = FLOAT;
@@ -248,6 +270,7 @@ protected:
   bool HasContent = false;
   bool WritesNormals = false;
   bool WritesObjectIds = false;
+  bool WritesFaceNormals = false;
   int WrittenEncoding = FLOAT;
   float PackedDepthRange[2] = { 0, 1 };
   bool DepthRemapped = false;

@@ -150,7 +150,9 @@ void vtkNPRPass::Render(const vtkRenderState* state)
   vtkRenderer* renderer = state->GetRenderer();
   // The drawing's lines come from the meshes: its G-buffer needs depth only.
   const bool imageLines = this->Style != DRAWING;
-  this->GBufferPass->SetNormalsRequested(imageLines && this->EdgePass->GetCreases());
+  this->GBufferPass->SetNormalsRequested(imageLines && this->EdgePass->GetNeedsNormals());
+  this->GBufferPass->SetFaceNormalsRequested(
+    imageLines && this->EdgePass->GetCreases() && this->EdgePass->GetFaceCreases());
   this->GBufferPass->SetObjectIdsRequested(imageLines && this->EdgePass->GetContours());
   this->GBufferPass->SetGeometryEncoding(this->EdgePass->GetEncoding());
   switch (this->Style)

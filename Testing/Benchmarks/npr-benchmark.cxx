@@ -4,6 +4,7 @@
 // against the object-space reference mask. Documentation/benchmarks.md describes the scenes,
 // methods and figures; `npr-benchmark --help` the flags.
 #include "nprBenchmarkCoherence.h"
+#include "nprBenchmarkContours.h"
 #include "nprBenchmarkDrawing.h"
 #include "nprBenchmarkMethods.h"
 #include "nprBenchmarkOptions.h"
@@ -197,6 +198,10 @@ int main(int argc, char* argv[])
       if (options.Drawing)
       {
         return nprRunBenchmarkDrawing(options);
+      }
+      if (options.Contours)
+      {
+        return nprRunBenchmarkContours(options);
       }
       if (options.Speed)
       {

@@ -17,6 +17,7 @@ const char* const Help = R"(usage: npr-benchmark --data DIR --out DIR [options]
        npr-benchmark --coherence --data DIR --out DIR [options]
        npr-benchmark --drawing --data DIR --out DIR [options]
        npr-benchmark --speed --data DIR --out DIR [options]
+       npr-benchmark --contours --data DIR --out DIR [options]
 
 Times every line method against the plain shaded frame and scores its line mask against the
 object-space reference mask (precision, recall and F1 at 1 and 2 px, mean symmetric distance).
@@ -37,6 +38,11 @@ vtkPolyDataSilhouette re-extracted every frame), interleaved frame by frame in o
 the camera turns 1 degree per frame, and vtkNPRFeatureLines per camera change; writes
 OUT/speed.csv and OUT/speed.md (default scenes bunny1m,box, sizes 1920x1080,1024x768, 30 frames,
 3 runs; --quick: box, 320x240, 2 frames, 1 run).
+With --contours: the edge pass on smooth and scanned surfaces and on CAD parts, every line type and
+silhouettes alone, with and without its smooth silhouettes, against two truths: the mesh's
+silhouette edges and the smooth surface's contour (with the same creases and borders); writes
+OUT/contours.csv and OUT/contours.md (default scenes cad,rotor,bunny,isosurface,blobs,knot, size
+1024x768; --quick: knot).
 
   --data DIR         folder of cad_part.vtp, rotor.ply and bunny.ply
   --out DIR          folder for the results (created)
@@ -44,8 +50,8 @@ OUT/speed.csv and OUT/speed.md (default scenes bunny1m,box, sizes 1920x1080,1024
                      with a warning when it is missing and --scenes does not name it)
   --frames N         timed frames per method and view (default 10; a warm-up frame first)
   --sizes LIST       WxH sizes, comma separated (default 1024x768,1920x1080)
-  --scenes LIST      of cad, rotor, bunny, isosurface, bunny1m, box (default all but box;
-                     --stress: cad,bunny)
+  --scenes LIST      of cad, rotor, bunny, isosurface, blobs, knot, bunny1m, box (default all
+                     but box; --stress: cad,bunny)
   --methods LIST     method names, or the families edges, inked, objectlines (default all)
   --cameras N        the first N of the 3 cameras (default 3; --stress: 1)
   --runs N           --speed: repeats of the whole measurement; the median of their medians
@@ -119,7 +125,7 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
         if (scene != "box" && std::find(names.begin(), names.end(), scene) == names.end())
         {
           throw nprUsageError(
-            "unknown scene '" + scene + "' (cad, rotor, bunny, isosurface, bunny1m, box)");
+            "unknown scene '" + scene + "' (cad, rotor, bunny, isosurface, blobs, knot, bunny1m, box)");
         }
       }
     }
@@ -161,6 +167,10 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
     else if (arg == "--speed")
     {
       options.Speed = true;
+    }
+    else if (arg == "--contours")
+    {
+      options.Contours = true;
     }
     else if (arg == "--stress-cases")
     {
@@ -232,6 +242,20 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
     if (!sizesGiven && !options.Quick)
     {
       options.Sizes = { { 640, 480 }, { 1920, 1080 } };
+    }
+  }
+  if (options.Contours)
+  {
+    if (!options.ScenesGiven)
+    {
+      options.Scenes = options.Quick ? std::vector<std::string>{ "knot" }
+                                     : std::vector<std::string>{ "cad", "rotor", "bunny",
+                                         "isosurface", "blobs", "knot" };
+      options.ScenesGiven = true;
+    }
+    if (!sizesGiven && !options.Quick)
+    {
+      options.Sizes = { { 1024, 768 } };
     }
   }
   if (options.Drawing && !sizesGiven && !options.Quick)

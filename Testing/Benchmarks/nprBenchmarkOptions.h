@@ -25,6 +25,7 @@ struct nprBenchmarkOptions
   bool Coherence = false;
   bool Drawing = false;
   bool Speed = false;
+  bool Contours = false;
   int Runs = 3;                         // --speed: the whole interleaved measurement repeated
   std::vector<std::string> StressCases; // name parts; empty: every case
   double MaxDrift = -1.0;               // < 0: report only

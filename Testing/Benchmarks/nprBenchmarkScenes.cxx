@@ -12,6 +12,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkFlyingEdges3D.h"
+#include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -81,6 +82,112 @@ vtkSmartPointer<vtkPolyData> Isosurface()
   return Geometry(contour->GetOutput());
 }
 
+// A creature of blended blobs (a body, a head, four legs, a tail; metaballs) with a fine ripple:
+// the isosurface at 0.5 of a sum of Gaussians sampled on 128^3 points, smooth and closed, with
+// folds whose contours end inside the outline.
+vtkSmartPointer<vtkPolyData> Blobs()
+{
+  struct Blob
+  {
+    double Centre[3];
+    double Radius;
+  };
+  const Blob blobs[] = { { { 0.0, 0.0, 0.0 }, 0.62 }, { { 1.05, 0.45, 0.0 }, 0.42 },
+    { { 0.55, -0.7, 0.42 }, 0.24 }, { { 0.55, -0.7, -0.42 }, 0.24 },
+    { { -0.55, -0.7, 0.42 }, 0.24 }, { { -0.55, -0.7, -0.42 }, 0.24 },
+    { { -1.15, 0.25, 0.0 }, 0.22 }, { { -1.6, 0.55, 0.0 }, 0.16 } };
+  const int n = 128;
+  const double low = -2.2, spacing = 4.4 / (n - 1);
+  vtkNew<vtkImageData> field;
+  field->SetDimensions(n, n, n);
+  field->SetOrigin(low, low, low);
+  field->SetSpacing(spacing, spacing, spacing);
+  vtkNew<vtkDoubleArray> values;
+  values->SetNumberOfValues(static_cast<vtkIdType>(n) * n * n);
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const double x[3] = { low + i * spacing, low + j * spacing, low + k * spacing };
+        double value = 0.06 * std::sin(6.0 * x[0]) * std::sin(6.0 * x[1]) * std::sin(6.0 * x[2]);
+        for (const Blob& blob : blobs)
+        {
+          const double d2 = vtkMath::Distance2BetweenPoints(x, blob.Centre);
+          value += std::exp(-d2 / (2.0 * blob.Radius * blob.Radius));
+        }
+        values->SetValue((static_cast<vtkIdType>(k) * n + j) * n + i, value);
+      }
+    }
+  }
+  field->GetPointData()->SetScalars(values);
+  vtkNew<vtkFlyingEdges3D> contour;
+  contour->SetInputData(field);
+  contour->SetValue(0, 0.5);
+  contour->ComputeNormalsOff();
+  contour->ComputeScalarsOff();
+  contour->Update();
+  return Geometry(contour->GetOutput());
+}
+
+// A trefoil knot as a closed tube whose radius swells and narrows along it (a streamtube): the
+// tube passes in front of itself, so interior contours end where it dips behind. 600 x 48
+// quads along its Frenet frame, as triangles.
+vtkSmartPointer<vtkPolyData> Knot()
+{
+  const int along = 600, around = 48;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (int i = 0; i < along; ++i)
+  {
+    const double t = 2.0 * vtkMath::Pi() * i / along;
+    const double c[3] = { std::sin(t) + 2.0 * std::sin(2.0 * t),
+      std::cos(t) - 2.0 * std::cos(2.0 * t), -std::sin(3.0 * t) };
+    double tangent[3] = { std::cos(t) + 4.0 * std::cos(2.0 * t),
+      -std::sin(t) + 4.0 * std::sin(2.0 * t), -3.0 * std::cos(3.0 * t) };
+    double normal[3] = { -std::sin(t) - 8.0 * std::sin(2.0 * t),
+      -std::cos(t) + 8.0 * std::cos(2.0 * t), 9.0 * std::sin(3.0 * t) };
+    vtkMath::Normalize(tangent);
+    const double along2 = vtkMath::Dot(normal, tangent);
+    for (int j = 0; j < 3; ++j)
+    {
+      normal[j] -= along2 * tangent[j];
+    }
+    if (vtkMath::Normalize(normal) < 1e-6)
+    {
+      throw std::runtime_error("knot: no Frenet frame"); // never for this curve
+    }
+    double binormal[3];
+    vtkMath::Cross(tangent, normal, binormal);
+    const double radius = 0.4 * (1.0 + 0.25 * std::sin(5.0 * t));
+    for (int j = 0; j < around; ++j)
+    {
+      const double s = 2.0 * vtkMath::Pi() * j / around;
+      double p[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = c[k] + radius * (std::cos(s) * normal[k] + std::sin(s) * binormal[k]);
+      }
+      points->InsertNextPoint(p);
+    }
+  }
+  vtkNew<vtkCellArray> polys;
+  for (int i = 0; i < along; ++i)
+  {
+    for (int j = 0; j < around; ++j)
+    {
+      const vtkIdType a = i * around + j, b = i * around + (j + 1) % around,
+                      c = ((i + 1) % along) * around + j,
+                      d = ((i + 1) % along) * around + (j + 1) % around;
+      const vtkIdType first[3] = { a, c, d }, second[3] = { a, d, b };
+      polys->InsertNextCell(3, first);
+      polys->InsertNextCell(3, second);
+    }
+  }
+  return MakeMesh(points, polys);
+}
+
 // Copies a mesh with each point moved by move(double p[3]) (same cells, double precision).
 template <typename Move>
 vtkSmartPointer<vtkPolyData> WithMovedPoints(vtkPolyData* raw, Move move)
@@ -102,7 +209,7 @@ vtkSmartPointer<vtkPolyData> WithMovedPoints(vtkPolyData* raw, Move move)
 const std::vector<std::string>& nprBenchmarkSceneNames()
 {
   static const std::vector<std::string> names = { "cad", "rotor", "bunny", "isosurface",
-    "bunny1m" };
+    "blobs", "knot", "bunny1m" };
   return names;
 }
 
@@ -130,6 +237,17 @@ nprBenchmarkScene nprLoadBenchmarkScene(
   {
     scene.Raw = Isosurface();
     scene.Description = "isosurface of vtkRTAnalyticSource, extent [-50,50]^3, value 200";
+  }
+  else if (name == "blobs")
+  {
+    scene.Raw = Blobs();
+    scene.Description = "creature of eight blended blobs with a ripple (metaball isosurface, "
+                        "128^3 samples)";
+  }
+  else if (name == "knot")
+  {
+    scene.Raw = Knot();
+    scene.Description = "trefoil knot as a swelling tube (600 x 48 quads as triangles)";
   }
   else if (name == "box")
   {

@@ -22,7 +22,7 @@ struct nprBenchmarkScene
   long long Triangles = 0;
 };
 
-// The scene names, in the default order: cad, rotor, bunny, isosurface, bunny1m. The scene
+// The scene names, in the default order: cad, rotor, bunny, isosurface, blobs, knot, bunny1m. The scene
 // "box" (108 triangles, for --speed) loads too but is not among them.
 const std::vector<std::string>& nprBenchmarkSceneNames();
 

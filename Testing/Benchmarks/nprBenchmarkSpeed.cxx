@@ -147,6 +147,16 @@ std::vector<SpeedMethod> MakeMethods()
   };
   methods.push_back({ "edges-silhouettes", "vtkNPRPass edges, silhouettes only", edgesWith(true) });
   methods.push_back({ "edges-floor", "vtkNPRPass edges, every line type off", edgesWith(false) });
+  // The line set before smooth silhouettes and face-normal creases, and with suggestive contours:
+  // what each costs.
+  auto previous = NPRStyle("edges");
+  vtkNPRPass::SafeDownCast(previous)->GetEdgePass()->SmoothSilhouettesOff();
+  vtkNPRPass::SafeDownCast(previous)->GetEdgePass()->FaceCreasesOff();
+  methods.push_back({ "edges-previous",
+    "vtkNPRPass edges, no smooth silhouettes, creases from shading normals", previous });
+  auto suggestive = NPRStyle("edges");
+  vtkNPRPass::SafeDownCast(suggestive)->GetEdgePass()->SuggestiveContoursOn();
+  methods.push_back({ "edges-suggestive", "vtkNPRPass edges, suggestive contours on", suggestive });
   auto thin = NPRStyle("inked");
   vtkNPRPass::SafeDownCast(thin)->GetInkPass()->SetLineWidth(0.5);
   methods.push_back({ "inked-thin", "vtkNPRPass inked, 1 px wireframe", thin });

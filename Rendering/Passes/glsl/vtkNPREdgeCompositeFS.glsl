@@ -4,7 +4,7 @@
 // vtkNPREdgePass, step 2: widens and anti-aliases the line image, composites it over the shaded
 // G-buffer colour and writes the depth sprite (gl_FragDepth).
 //
-// The line image is filtered with a separable Gaussian (NPR_TAPS bilinear taps). Across a straight
+// The line image (r silhouettes, g creases, b contours, a suggestive contours) is filtered with a separable Gaussian (NPR_TAPS bilinear taps). Across a straight
 // one-pixel line the filtered value falls off as P(d) = g(d); the pixel's coverage of a line of
 // width w is then 0.5 + (P - P(w/2)) / |P'(w/2)|, which is clamp(w/2 + 0.5 - d, 0, 1) near the
 // line's border: a line of the requested width with one pixel of anti-aliasing, and no staircase
@@ -29,7 +29,7 @@ uniform float coverageSlope;    // |P'(w/2)|
 
 void main()
 {
-  vec3 coverage = vec3(0.0);
+  vec4 coverage = vec4(0.0);
 #if !NPR_LINES
   if (texCoord.x < -1.0)
   {
@@ -37,25 +37,28 @@ void main()
   }
 #endif
 #if NPR_LINES
-  vec3 lines = vec3(0.0);
+  vec4 lines = vec4(0.0);
   for (int i = 0; i < NPR_TAPS; ++i)
   {
-    lines += taps[i].z * texture(lineTexture, texCoord + taps[i].xy * texelSize).rgb;
+    lines += taps[i].z * texture(lineTexture, texCoord + taps[i].xy * texelSize);
   }
 #if NPR_ANTIALIAS
   coverage = clamp(0.5 + (lines - coverageLevel) / coverageSlope, 0.0, 1.0);
 #else
-  coverage = step(vec3(coverageLevel), lines);
+  coverage = step(vec4(coverageLevel), lines);
 #endif
 #endif
   ivec2 p = ivec2(gl_FragCoord.xy) - viewportOrigin;
   float depth = texelFetch(depthTexture, p, 0).r;
-  bool onLine = max(coverage.r, max(coverage.g, coverage.b)) > 0.0;
+  float anyLine = max(max(coverage.r, coverage.g), max(coverage.b, coverage.a));
+  bool onLine = anyLine > 0.0;
 #if NPR_OUTPUT == 1
-  gl_FragData[0] = vec4(vec3(max(coverage.r, max(coverage.g, coverage.b))), 1.0);
+  gl_FragData[0] = vec4(vec3(anyLine), 1.0);
   gl_FragDepth = nprWindowDepth(depth);
 #elif NPR_OUTPUT == 2
-  gl_FragData[0] = vec4(coverage, depth < 1.0 || !onLine ? depth : nprNearestDepth(p));
+  // Suggestive contours go with the silhouettes: the sketch has three line types.
+  gl_FragData[0] = vec4(max(coverage.r, coverage.a), coverage.gb,
+    depth < 1.0 || !onLine ? depth : nprNearestDepth(p));
 #else
   if (depth < 1.0)
   {

@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
 // vtkNPREdgePass, step 1: line pixels from the G-buffer's geometry attachment.
-// Output: r = silhouette, g = crease, b = object contour strength (0..1) on the pixels the line
-// belongs to. One texel fetch per tap, five taps (a cross): fetches are the cost on llvmpipe.
+// Output: r = silhouette, g = crease, b = object contour, a = suggestive contour strength (0..1)
+// on the pixels the line belongs to. One texel fetch per tap, five taps (a cross): fetches are the cost on llvmpipe.
 // NPR_ENCODING says how the G-buffer stores the geometry (vtkNPRGBufferPass::GeometryEncoding):
-// 0 float (depth, 12-bit octahedral normal packed in one float, id), 1 half (depth / far,
+// 0 float (depth, 12-bit octahedral normal packed in one float, id, face normal likewise), 1 half (depth / far,
 // octahedral normal in two channels, id), 2 and 3 the packed 8- and 16-bit depth+normal value.
 //NPR::Defines
 in vec2 texCoord;
@@ -15,6 +15,11 @@ uniform float creaseAngle;         // radians
 uniform float creaseRamp;          // radians: soft ramp around the threshold
 uniform float packedThreshold;     // packed: Laplacian, in units of one component's range
 uniform float packedUnit;          // packed: a texel value in units of one component's range
+uniform float smoothSilhouetteReach; // px: how far past a pixel an extrapolated contour may lie
+uniform float suggestiveThreshold; // second difference of n.v over one pixel
+uniform vec3 viewRayOrigin; // view space: the ray through pixel (0, 0)'s centre (the direction of
+uniform vec3 viewRayPerPixelX; // projection for a parallel view), and its change per pixel
+uniform vec3 viewRayPerPixelY;
 //VTK::Output::Dec
 
 #if NPR_ENCODING >= 2
@@ -71,9 +76,15 @@ void main()
 
 #if NPR_ENCODING == 1
 #define NPR_NORMAL(g) nprUnpackOctahedral(g.yz)
+#define NPR_FACE_NORMAL(g) nprUnpackOctahedral(g.yz) // half: the interpolated normal only
 #define NPR_ID(g) g.w
 #else
 #define NPR_NORMAL(g) nprUnpackNormal(g.y)
+#if NPR_HAVE_FACE_NORMALS
+#define NPR_FACE_NORMAL(g) nprUnpackNormal(g.w)
+#else
+#define NPR_FACE_NORMAL(g) nprUnpackNormal(g.y)
+#endif
 #define NPR_ID(g) g.z
 #endif
 
@@ -85,6 +96,12 @@ vec3 nprUnpackOctahedral(vec2 e)
     n.xy = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
   }
   return normalize(n);
+}
+
+// The view-space direction from the eye through pixel q's centre (parallel: of projection).
+vec3 nprViewRay(ivec2 q)
+{
+  return viewRayOrigin + float(q.x) * viewRayPerPixelX + float(q.y) * viewRayPerPixelY;
 }
 
 vec3 nprUnpackNormal(float code)
@@ -139,11 +156,94 @@ void main()
   silhouette = smoothstep(silhouetteThreshold, 2.0 * silhouetteThreshold, step2);
 #endif
 
+#if NPR_FACING
+  // n.v, the cosine between the interpolated normal and the direction to the eye, at the five
+  // taps. Its zero set is the contour of the smooth surface the normals describe; its minima
+  // along the view direction are the suggestive contours.
+  const ivec2 offsets[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
+  vec3 normal0 = NPR_NORMAL(g0);
+  float facing0 = covered0 ? dot(normal0, -normalize(nprViewRay(p))) : 0.0;
+  vec3 normals[4];
+  float facing[4];
+  bool sameObject[4]; // covered, of this pixel's object
+  for (int k = 0; k < 4; ++k)
+  {
+    normals[k] = NPR_NORMAL(g[k]);
+    facing[k] = dot(normals[k], -normalize(nprViewRay(p + offsets[k])));
+    sameObject[k] = covered0 && g[k].x > 0.0;
+#if NPR_HAVE_OBJECT_IDS
+    sameObject[k] = sameObject[k] && NPR_ID(g[k]) == NPR_ID(g0);
+#endif
+  }
+  // The taps clamped at the image border repeat this pixel: they are no neighbours.
+  bool inside[4] = bool[4](p.x < size.x - 1, p.x > 0, p.y < size.y - 1, p.y > 0);
+#endif
+
+#if NPR_SMOOTH_SILHOUETTES
+  if (covered0)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      int opposite = k + 1 - 2 * (k % 2); // 0 <-> 1, 2 <-> 3
+      bool line = false;
+      if (sameObject[k] && inside[k] && (facing0 > 0.0) != (facing[k] > 0.0))
+      {
+        // n.v changes sign between this pixel and its neighbour: the contour runs between
+        // them. Drawn on the pixel nearer the zero (ties: the front-facing one).
+        float t = facing0 / (facing0 - facing[k]);
+        line = facing0 > 0.0 ? t <= 0.5 : t < 0.5;
+      }
+      else if (facing0 > 0.0 && inside[k] && inside[opposite] && sameObject[opposite] &&
+        facing[opposite] > facing0 && dot(normals[opposite], normal0) > cos(creaseAngle))
+      {
+        // Towards k the surface ends (background, another object, or another sheet of it
+        // behind a fold) while n.v falls towards zero: the contour continues beyond the last
+        // pixel, where the depth step fades out near the contour's end. Extrapolated linearly
+        // from the opposite neighbour, if the surface is smooth there (no crease, and not across
+        // a depth step from the far side).
+        bool farSide = step2 < -silhouetteThreshold &&
+          g[opposite].x < g0.x * (1.0 - 4.0 * silhouetteThreshold);
+        float t = facing0 / (facing[opposite] - facing0);
+        // With t <= 1 a smooth continuation would have n.v <= 0 at k; it has n.v > 0 there, so
+        // the surface does not continue smoothly: the contour lies at its end.
+        line = !farSide && t <= smoothSilhouetteReach;
+      }
+      silhouette = line ? 1.0 : silhouette;
+    }
+  }
+#endif
+  float suggestive = 0.0;
+#if NPR_SUGGESTIVE
+  // Suggestive contours (DeCarlo et al. 2003): where n.v, positive, has a minimum along the view
+  // direction projected onto the surface. In the image that direction is the one in which the
+  // surface recedes: the gradient of depth. The second derivative of n.v along it must exceed the
+  // threshold (its strength) and the first derivative vanish within half a pixel.
+  if (covered0 && facing0 > 0.0 && sameObject[0] && sameObject[1] && sameObject[2] &&
+    sameObject[3] && inside[0] && inside[1] && inside[2] && inside[3] && abs(step2) <= silhouetteThreshold)
+  {
+    vec2 recede = vec2(g[0].x - g[1].x, g[2].x - g[3].x);
+    float recedeLength = length(recede);
+    if (recedeLength > 0.0)
+    {
+      vec2 w = recede / recedeLength;
+      float first = 0.5 * (w.x * (facing[0] - facing[1]) + w.y * (facing[2] - facing[3]));
+      float second = w.x * w.x * (facing[0] + facing[1] - 2.0 * facing0) +
+        w.y * w.y * (facing[2] + facing[3] - 2.0 * facing0);
+      if (second > 0.0 && abs(first) <= 0.5 * second)
+      {
+        suggestive = smoothstep(suggestiveThreshold, 2.0 * suggestiveThreshold, second);
+      }
+    }
+  }
+#endif
+
   float crease = 0.0;
 #if NPR_CREASES
   if (covered0)
   {
-    vec3 n0 = NPR_NORMAL(g0);
+    // Between the faces' own normals (float encoding): the mesh's creases, also where the
+    // shading normals are averaged across an edge sharper than the angle.
+    vec3 n0 = NPR_FACE_NORMAL(g0);
     for (int k = 0; k < 4; ++k)
     {
       // Not across a depth step from the far side: that line is the nearer surface's silhouette.
@@ -155,7 +255,7 @@ void main()
 #endif
       if (sameObject)
       {
-        vec3 nk = NPR_NORMAL(g[k]);
+        vec3 nk = NPR_FACE_NORMAL(g[k]);
         // One pixel per crease: the side that faces the viewer more (ties: right and up).
         if (n0.z > nk.z || (n0.z == nk.z && (k == 0 || k == 2)))
         {
@@ -201,6 +301,6 @@ void main()
     }
   }
 #endif
-  gl_FragData[0] = vec4(silhouette, crease, contour, 0.0);
+  gl_FragData[0] = vec4(silhouette, crease, contour, suggestive);
 }
 #endif

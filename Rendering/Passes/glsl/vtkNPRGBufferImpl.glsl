@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 // SPDX-License-Identifier: BSD-3-Clause
-  // vtkNPRGBufferPass: geometry attachment = (view depth, packed normal, object id, 1), or
+  // vtkNPRGBufferPass: geometry attachment = (view depth, packed normal, object id, packed face
+  // normal), or
   // another encoding of them (vtkNPRGBufferPass::GeometryEncoding).
   {
 #if NPR_HAVE_VERTEX_VC
@@ -18,6 +19,15 @@
 #if NPR_WRITE_NORMALS
 #if NPR_HAVE_MAPPER_NORMAL
     vec3 nprNormal = normalVCVSOutput;
+    // VTK turns the normal of a back-facing fragment around (two-sided lighting): turn it back,
+    // so that n.v keeps its sign where the interpolated normals face away (the contour of the
+    // smooth surface runs there). Where the winding disagrees with the normals, as for a needle
+    // triangle whose winding flips when its points are rounded to 32-bit floats, this also
+    // restores the normal the mesh gave.
+    if (!gl_FrontFacing)
+    {
+      nprNormal = -nprNormal;
+    }
 #else
     vec3 nprNormal = vec3(0.0);
 #endif
@@ -28,34 +38,27 @@
 #else
     vec3 nprPositionVC = nprFragmentPositionVC();
 #endif
-    // Unlit actors, lines, points and zero-length or NaN normals: the face normal from the
-    // derivatives of the view-space position, turned towards the viewer.
+    // The face normal, from the derivatives of the view-space position (exact within a
+    // triangle), turned towards the viewer.
+    vec3 nprFaceNormal = cross(dFdx(nprPositionVC), dFdy(nprPositionVC));
+    nprFaceNormal = dot(nprFaceNormal, nprFaceNormal) > 1e-30
+      ? nprFaceNormal * sign(dot(nprFaceNormal, -nprPositionVC) + 1e-30)
+      : vec3(0.0, 0.0, 1.0);
+    // Unlit actors, lines, points and zero-length or NaN normals: the face normal.
     if (!(dot(nprNormal, nprNormal) > 1e-12))
     {
-      vec3 p = nprPositionVC;
-      nprNormal = cross(dFdx(p), dFdy(p));
-      nprNormal = dot(nprNormal, nprNormal) > 1e-30 ? nprNormal * sign(dot(nprNormal, -p) + 1e-30)
-                                                      : vec3(0.0, 0.0, 1.0);
+      nprNormal = nprFaceNormal;
     }
     nprNormal = normalize(nprNormal);
-#if NPR_HAVE_MAPPER_NORMAL
-    // VTK turns the normal of a back-facing fragment around (two-sided lighting). Where the
-    // winding disagrees with the normals, as for a needle triangle whose winding flips when its
-    // points are rounded to 32-bit floats, that turns it away from the viewer: turn it back.
-#if NPR_PERSPECTIVE
-    vec3 nprToViewer = -nprPositionVC;
-#else
-    vec3 nprToViewer = vec3(0.0, 0.0, 1.0);
-#endif
-    if (!gl_FrontFacing && dot(nprNormal, nprToViewer) < 0.0)
-    {
-      nprNormal = -nprNormal;
-    }
-#endif
 #if NPR_ENCODING == 1
     nprGeometry.yz = nprOctahedral(nprNormal);
 #else
     nprGeometry.y = nprPackNormal(nprNormal);
+#endif
+#if NPR_WRITE_FACE_NORMALS
+    // The face normal too, on the side of the interpolated one: creases are angles between faces,
+    // as in the mesh, whatever the shading normals average across (vtkNPREdgePass).
+    nprGeometry.w = nprPackNormal(normalize(nprFaceNormal) * sign(dot(nprFaceNormal, nprNormal) + 1e-30));
 #endif
 #endif
 #if NPR_WRITE_OBJECT_IDS

@@ -1,0 +1,236 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "nprBenchmarkContours.h"
+
+#include "nprBenchmarkOptions.h"
+#include "nprBenchmarkReport.h"
+#include "nprBenchmarkScenes.h"
+#include "nprBenchmarkStage.h"
+#include "nprEdgeMetrics.h"
+#include "nprTiming.h"
+
+#include "vtkNPREdgePass.h"
+#include "vtkNPRPass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct ContourRow
+{
+  std::string Scene, Kind, Camera, Method, Truth;
+  double Precision = 0.0, Recall = 0.0, F1 = 0.0;
+  long long MethodPixels = 0, TruthPixels = 0;
+};
+
+// The CAD parts; the other scenes are smooth or scanned surfaces.
+bool IsCad(const std::string& scene)
+{
+  return scene == "cad" || scene == "rotor";
+}
+
+struct Variant
+{
+  const char* Name;
+  bool AllTypes;          // every line type; else silhouettes only
+  bool SmoothSilhouettes; // the edge pass's smooth silhouettes
+};
+
+const Variant Variants[] = { { "lines", true, true }, { "lines-depth-only", true, false },
+  { "outline", false, true }, { "outline-depth-only", false, false } };
+
+struct Truth
+{
+  const char* Name;
+  bool AllTypes; // creases too; else contours (silhouettes) and borders only
+  bool Smooth;   // the smooth surface's contour instead of the mesh's silhouette edges
+};
+
+const Truth Truths[] = { { "mesh", true, false }, { "smooth", true, true },
+  { "mesh", false, false }, { "smooth", false, true } };
+
+void WriteCSV(const std::string& path, const std::vector<ContourRow>& rows)
+{
+  std::ofstream out(path);
+  out << "scene,kind,camera,method,truth,precision_1px,recall_1px,f1_1px,method_pixels,"
+         "truth_pixels\n";
+  for (const ContourRow& row : rows)
+  {
+    out << row.Scene << "," << row.Kind << "," << row.Camera << "," << row.Method << ","
+        << row.Truth << "," << nprFormat(row.Precision) << "," << nprFormat(row.Recall) << ","
+        << nprFormat(row.F1) << "," << row.MethodPixels << "," << row.TruthPixels << "\n";
+  }
+  if (!out)
+  {
+    throw std::runtime_error("cannot write " + path);
+  }
+}
+
+// Per scene, method and truth: the mean precision, recall and F1@1 over the views, and the
+// worst view's F1@1.
+void WriteMarkdown(const std::string& path, const std::vector<ContourRow>& rows,
+  const std::string& header, double seconds)
+{
+  struct Summary
+  {
+    double Precision = 0.0, Recall = 0.0, F1 = 0.0, WorstF1 = 1.0;
+    std::string WorstView;
+    int Views = 0;
+  };
+  std::vector<std::string> order;
+  std::map<std::string, Summary> summaries;
+  for (const ContourRow& row : rows)
+  {
+    const std::string key = row.Scene + " | " + row.Kind + " | " + row.Method + " | " + row.Truth;
+    if (!summaries.count(key))
+    {
+      order.push_back(key);
+    }
+    Summary& summary = summaries[key];
+    summary.Precision += row.Precision;
+    summary.Recall += row.Recall;
+    summary.F1 += row.F1;
+    if (row.F1 < summary.WorstF1 || summary.Views == 0)
+    {
+      summary.WorstF1 = row.F1;
+      summary.WorstView = row.Camera;
+    }
+    ++summary.Views;
+  }
+  std::ofstream out(path);
+  out << "# Lines on smooth surfaces and CAD parts (npr-benchmark --contours)\n\n" << header;
+  out << "\nMeans over the views; the worst view's F1@1 and its camera.\n\n";
+  out << "| scene | kind | method | truth | precision@1 | recall@1 | F1@1 | worst F1@1 |\n";
+  out << "|---|---|---|---|---|---|---|---|\n";
+  for (const std::string& key : order)
+  {
+    const Summary& s = summaries[key];
+    out << "| " << key << " | " << nprFormat(s.Precision / s.Views, 3) << " | "
+        << nprFormat(s.Recall / s.Views, 3) << " | " << nprFormat(s.F1 / s.Views, 3) << " | "
+        << nprFormat(s.WorstF1, 3) << " (" << s.WorstView << ") |\n";
+  }
+  out << "\nRun time: " << nprFormat(seconds, 3) << " s\n";
+  if (!out)
+  {
+    throw std::runtime_error("cannot write " + path);
+  }
+}
+}
+
+int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
+{
+  const nprClock::time_point start = nprClock::now();
+  nprMakeBenchmarkFolders(options);
+  const std::vector<nprBenchmarkScene> scenes =
+    nprLoadBenchmarkScenes(options.Scenes, options.Data, options.DenseMesh, options.ScenesGiven);
+  nprBenchmarkStage stage(options.LineWidth);
+
+  std::vector<nprBenchmarkMethod> methods;
+  std::vector<vtkSmartPointer<vtkNPRPass>> passes;
+  for (const Variant& variant : Variants)
+  {
+    nprBenchmarkMethod method;
+    method.Name = variant.Name;
+    method.Pass.Creases = variant.AllTypes;
+    method.Pass.Contours = variant.AllTypes;
+    method.Pass.SmoothSilhouettes = variant.SmoothSilhouettes;
+    methods.push_back(method);
+    passes.push_back(stage.MakePass(method));
+  }
+
+  std::vector<ContourRow> rows;
+  for (const nprBenchmarkScene& scene : scenes)
+  {
+    stage.SetMesh(scene.Mesh, scene.Raw);
+    for (const auto& size : options.Sizes)
+    {
+      stage.Window->SetSize(size.first, size.second);
+      for (int c = 0; c < options.Cameras; ++c)
+      {
+        const nprBenchmarkCamera& camera = nprBenchmarkCameras()[c];
+        stage.Activate(nullptr, false);
+        nprApplyBenchmarkCamera(stage.Renderer, camera);
+        stage.Window->Render(); // the camera as drawn, before the references read it
+        const std::string prefix = options.Out + "/masks/" + scene.Name + "_" + camera.Name + "_" +
+          std::to_string(size.first) + "x" + std::to_string(size.second) + "_";
+        std::vector<nprMask> truths;
+        for (const Truth& truth : Truths)
+        {
+          vtkNPRReferenceMask* reference = stage.Reference;
+          reference->SetCreases(truth.AllTypes);
+          // MERGE reference->SetSmoothContours(truth.Smooth);
+          truths.push_back(stage.ReferenceMask());
+          if (options.SaveMasks)
+          {
+            nprWriteMaskPNG(truths.back(),
+              prefix + "truth-" + truth.Name + (truth.AllTypes ? "-lines" : "-outline") + ".png");
+          }
+        }
+        stage.Reference->SetCreases(true);
+        // MERGE stage.Reference->SetSmoothContours(false);
+        for (size_t m = 0; m < methods.size(); ++m)
+        {
+          const nprMask mask = stage.MethodMask(methods[m], passes[m]);
+          if (options.SaveMasks)
+          {
+            nprWriteMaskPNG(mask, prefix + methods[m].Name + ".png");
+          }
+          for (size_t t = 0; t < truths.size(); ++t)
+          {
+            if (Truths[t].AllTypes != Variants[m].AllTypes)
+            {
+              continue;
+            }
+            nprEdgeMetrics metrics;
+            metrics.Compute(mask.Pixels.data(), truths[t].Pixels.data(), mask.Width, mask.Height);
+            ContourRow row;
+            row.Scene = scene.Name;
+            row.Kind = IsCad(scene.Name) ? "cad" : "smooth";
+            row.Camera = camera.Name;
+            row.Method = methods[m].Name;
+            row.Truth = Truths[t].Name;
+            row.Precision = metrics.Precision(1.0);
+            row.Recall = metrics.Recall(1.0);
+            row.F1 = metrics.F1(1.0);
+            row.MethodPixels = metrics.GetMethodPixels();
+            row.TruthPixels = metrics.GetReferencePixels();
+            rows.push_back(row);
+          }
+        }
+        std::cerr << "npr-benchmark: " << scene.Name << " " << camera.Name << " " << size.first
+                  << "x" << size.second << ": outline F1@1 against the smooth truth "
+                  << nprFormat(rows[rows.size() - 3].F1, 3) << " (depth only "
+                  << nprFormat(rows.back().F1, 3) << ")\n";
+      }
+    }
+  }
+
+  bool sane = true;
+  for (const ContourRow& row : rows)
+  {
+    for (double value : { row.Precision, row.Recall, row.F1 })
+    {
+      sane = sane && std::isfinite(value) && value >= 0.0 && value <= 1.0;
+    }
+  }
+  std::string header = "Scenes:\n" + nprBenchmarkSceneLines(scenes) + "\nCameras: " +
+    nprBenchmarkCameraLine(options.Cameras) + "; sizes " + nprBenchmarkSizesLine(options) +
+    "; lines " + nprFormat(options.LineWidth, 3) +
+    " px wide.\n\nMethods (vtkNPREdgePass, default settings otherwise):\n"
+    "- lines: every line type; lines-depth-only: the same without SmoothSilhouettes\n"
+    "- outline: silhouettes alone; outline-depth-only: the same without SmoothSilhouettes\n\n"
+    "Truths (vtkNPRReferenceMask): mesh: silhouette edges; smooth: the zero set of the "
+    "interpolated n.v (SmoothContours); both with borders and non-manifold edges, and for the "
+    "lines with creases above 30 degrees.\n";
+  WriteCSV(options.Out + "/contours.csv", rows);
+  WriteMarkdown(options.Out + "/contours.md", rows, header, nprSecondsSince(start));
+  std::cerr << "npr-benchmark: wrote " << options.Out << "/contours.{csv,md}\n";
+  return sane ? 0 : 1;
+}
