@@ -99,8 +99,9 @@
  * GetNumberOfSkippedContourTriangles() counts them; triangles with a repeated point are left
  * out. Without point normals the option changes nothing: the mapper then shades facets, whose
  * outline is the mesh silhouette. Cost: one parallel pass over the points and one over the
- * triangles per update (the triangles and unit normals are kept per mesh); see
- * Documentation/feature-lines.md for the times measured.
+ * triangles per update (the triangles and unit normals are kept per mesh): on 1.2M triangles
+ * and 2 cores about 35 ms per camera against about 21 ms for the mesh silhouettes
+ * (Documentation/feature-lines.md).
  *
  * @sa vtkNPRReferenceMask vtkFeatureEdges
  */
