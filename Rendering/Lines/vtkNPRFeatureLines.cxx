@@ -6,6 +6,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -13,6 +14,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPThreadLocal.h"
@@ -24,6 +26,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -152,6 +155,25 @@ struct vtkNPRFeatureLines::Adjacency
   vtkIdType UnsureFaces = 0;
   vtkIdType NonFiniteFaces = 0;
 
+  // Smooth contours, made only when asked for: the triangles (fans of the polygons, the strips'
+  // triangles in their winding, none with a repeated or out-of-range point) and the unit point
+  // normals (NaN where zero or not finite), both kept per mesh; each point's facing term for
+  // the last viewpoint; per block of triangles, the segments found: the triangle and its edges
+  // (0: points 0-1, 1: 1-2, 2: 2-0) where g turns from negative to positive (Rise) and back.
+  std::vector<std::uint32_t> Triangles;
+  bool TrianglesValid = false;
+  vtkDataArray* NormalsArray = nullptr;
+  vtkMTimeType NormalsTime = 0;
+  std::vector<double> UnitNormals;
+  std::vector<double> Facing;
+  struct ContourSegment
+  {
+    std::uint32_t Triangle;
+    unsigned char Rise, Fall;
+  };
+  std::vector<std::vector<ContourSegment>> ContourSegments;
+  vtkIdType SkippedContourTriangles = 0;
+
   bool IsCurrent(vtkPolyData* input, bool merge) const
   {
     vtkPoints* points = input->GetPoints();
@@ -164,6 +186,12 @@ struct vtkNPRFeatureLines::Adjacency
   }
 
   void Build(vtkPolyData* input, bool merge, vtkNPRFeatureLines* self);
+  // The point normals a smooth contour can use: 3 components, one per point; else nullptr.
+  static vtkDataArray* ContourNormals(vtkPolyData* input);
+  // Facing, ContourSegments and SkippedContourTriangles for an eye (perspective) or a direction
+  // of projection (parallel), from the input's point normals (ContourNormals).
+  void ComputeContours(
+    vtkPolyData* input, vtkDataArray* normals, bool parallel, const double view[3]);
   // FaceSides and UnsureFaces for an eye (perspective) or a direction of projection (parallel).
   void ComputeFaceSides(bool parallel, const double view[3]);
 };
@@ -215,6 +243,157 @@ void vtkNPRFeatureLines::Adjacency::ComputeFaceSides(bool parallel, const double
   }
 }
 
+vtkDataArray* vtkNPRFeatureLines::Adjacency::ContourNormals(vtkPolyData* input)
+{
+  vtkDataArray* normals = input->GetPointData()->GetNormals();
+  const vtkIdType points = input->GetPoints() ? input->GetPoints()->GetNumberOfPoints() : 0;
+  return normals && normals->GetNumberOfComponents() == 3 &&
+      normals->GetNumberOfTuples() == points && points > 0 &&
+      points <= static_cast<vtkIdType>(std::numeric_limits<std::uint32_t>::max())
+    ? normals
+    : nullptr;
+}
+
+void vtkNPRFeatureLines::Adjacency::ComputeContours(
+  vtkPolyData* input, vtkDataArray* normals, bool parallel, const double view[3])
+{
+  const vtkIdType pointCount = static_cast<vtkIdType>(this->Coordinates.size() / 3);
+  if (!this->TrianglesValid)
+  {
+    this->Triangles.clear();
+    auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c)
+    {
+      for (vtkIdType id : { a, b, c })
+      {
+        if (id < 0 || id >= pointCount)
+        {
+          return;
+        }
+      }
+      // A repeated point (strips repeat points to turn): no area, and a zero-length segment.
+      if (a != b && b != c && c != a)
+      {
+        this->Triangles.insert(this->Triangles.end(),
+          { static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b),
+            static_cast<std::uint32_t>(c) });
+      }
+    };
+    auto iterator = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+    {
+      vtkIdType size;
+      const vtkIdType* ids;
+      iterator->GetCurrentCell(size, ids);
+      for (vtkIdType k = 1; k + 1 < size; ++k)
+      {
+        addTriangle(ids[0], ids[k], ids[k + 1]);
+      }
+    }
+    iterator = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
+    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+    {
+      vtkIdType size;
+      const vtkIdType* ids;
+      iterator->GetCurrentCell(size, ids);
+      for (vtkIdType k = 0; k + 2 < size; ++k)
+      {
+        addTriangle(ids[k + (k & 1)], ids[k + 1 - (k & 1)], ids[k + 2]);
+      }
+    }
+    this->TrianglesValid = true;
+  }
+  if (this->NormalsArray != normals || this->NormalsTime != normals->GetMTime())
+  {
+    this->UnitNormals.resize(3 * pointCount);
+    double* unit = this->UnitNormals.data();
+    vtkSMPTools::For(0, pointCount,
+      [=](vtkIdType first, vtkIdType last)
+      {
+        for (vtkIdType i = first; i < last; ++i)
+        {
+          double n[3];
+          normals->GetTuple(i, n);
+          const double length = std::sqrt(Dot(n, n));
+          const bool usable = length > 0.0 && std::isfinite(length);
+          for (int k = 0; k < 3; ++k)
+          {
+            unit[3 * i + k] = usable ? n[k] / length : std::numeric_limits<double>::quiet_NaN();
+          }
+        }
+      });
+    this->NormalsArray = normals;
+    this->NormalsTime = normals->GetMTime();
+  }
+
+  // g per point: not finite where the normal or the point is unusable.
+  this->Facing.resize(pointCount);
+  const double* coordinates = this->Coordinates.data();
+  const double* unit = this->UnitNormals.data();
+  double* facing = this->Facing.data();
+  vtkSMPTools::For(0, pointCount,
+    [=](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        const double* n = unit + 3 * i;
+        const double* p = coordinates + 3 * i;
+        const double toPoint[3] = { p[0] - view[0], p[1] - view[1], p[2] - view[2] };
+        facing[i] = parallel ? Dot(n, view) : Dot(n, toPoint);
+      }
+    });
+
+  // The triangles where g changes sign, in blocks that list them in order.
+  const vtkIdType triangleCount = static_cast<vtkIdType>(this->Triangles.size() / 3);
+  const vtkIdType blockSize = 16384;
+  const vtkIdType blockCount = (triangleCount + blockSize - 1) / blockSize;
+  this->ContourSegments.resize(static_cast<size_t>(blockCount));
+  const std::uint32_t* triangles = this->Triangles.data();
+  vtkSMPThreadLocal<vtkIdType> skipped(0);
+  vtkSMPTools::For(0, blockCount,
+    [&](vtkIdType firstBlock, vtkIdType lastBlock)
+    {
+      vtkIdType skippedHere = 0;
+      for (vtkIdType block = firstBlock; block < lastBlock; ++block)
+      {
+        auto& listed = this->ContourSegments[block];
+        listed.clear();
+        const vtkIdType last = std::min(triangleCount, (block + 1) * blockSize);
+        for (vtkIdType t = block * blockSize; t < last; ++t)
+        {
+          const std::uint32_t* ids = triangles + 3 * t;
+          const double g[3] = { facing[ids[0]], facing[ids[1]], facing[ids[2]] };
+          if (!(std::isfinite(g[0]) && std::isfinite(g[1]) && std::isfinite(g[2])))
+          {
+            ++skippedHere;
+            continue;
+          }
+          // g == 0 counts as positive, so that each edge is decided one way for all its faces.
+          const bool positive[3] = { g[0] >= 0.0, g[1] >= 0.0, g[2] >= 0.0 };
+          if (positive[0] == positive[1] && positive[1] == positive[2])
+          {
+            continue;
+          }
+          ContourSegment segment{ static_cast<std::uint32_t>(t), 0, 0 };
+          for (unsigned char k = 0; k < 3; ++k)
+          {
+            const bool next = positive[(k + 1) % 3];
+            if (positive[k] != next)
+            {
+              (next ? segment.Rise : segment.Fall) = k;
+            }
+          }
+          listed.push_back(segment);
+        }
+      }
+      skipped.Local() += skippedHere;
+    });
+  this->SkippedContourTriangles = 0;
+  for (vtkIdType count : skipped)
+  {
+    this->SkippedContourTriangles += count;
+  }
+}
+
 void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPRFeatureLines* self)
 {
   vtkPoints* points = input->GetPoints();
@@ -239,6 +418,9 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
   this->Edges.clear();
   this->DegenerateFaces = 0;
   this->NonFiniteFaces = 0;
+  this->Triangles.clear();
+  this->TrianglesValid = false;
+  this->NormalsArray = nullptr;
 
   const vtkIdType numberOfPoints = points ? points->GetNumberOfPoints() : 0;
   this->Coordinates.resize(3 * numberOfPoints);
@@ -627,6 +809,11 @@ vtkIdType vtkNPRFeatureLines::GetNumberOfUnsureFaces() const
   return this->Internal->UnsureFaces;
 }
 
+vtkIdType vtkNPRFeatureLines::GetNumberOfSkippedContourTriangles() const
+{
+  return this->Internal->SkippedContourTriangles;
+}
+
 void vtkNPRFeatureLines::SetCamera(vtkCamera* camera, vtkMatrix4x4* modelMatrix)
 {
   if (!camera)
@@ -698,11 +885,20 @@ int vtkNPRFeatureLines::RequestData(
       });
     adjacency.CreaseAngle = this->FeatureAngle;
   }
-  const bool silhouettes = this->Silhouettes;
   const bool parallel = this->ParallelProjection;
   const double eye[3] = { this->EyePosition[0], this->EyePosition[1], this->EyePosition[2] };
   const double direction[3] = { this->DirectionOfProjection[0], this->DirectionOfProjection[1],
     this->DirectionOfProjection[2] };
+  // Smooth contours replace the mesh silhouettes only where the input has point normals.
+  vtkDataArray* contourNormals =
+    this->Silhouettes && this->SmoothContours ? Adjacency::ContourNormals(input) : nullptr;
+  const bool smooth = contourNormals && adjacency.Edges.size() > 0;
+  const bool silhouettes = this->Silhouettes && !smooth;
+  adjacency.SkippedContourTriangles = 0;
+  if (smooth)
+  {
+    adjacency.ComputeContours(input, contourNormals, parallel, parallel ? direction : eye);
+  }
   if (silhouettes)
   {
     adjacency.ComputeFaceSides(parallel, parallel ? direction : eye);
@@ -839,10 +1035,66 @@ int vtkNPRFeatureLines::RequestData(
   {
     outputId[id] = -1;
   }
+
+  // The smooth contours after the mesh edges: one output point per crossed edge, so that the
+  // segments chain; each edge's zero point interpolated from its smaller id to its larger.
+  vtkNew<vtkIdTypeArray> contourTriangles;
+  if (smooth)
+  {
+    const double* facing = adjacency.Facing.data();
+    const std::uint32_t* triangles = adjacency.Triangles.data();
+    std::unordered_map<std::uint64_t, vtkIdType> edgePoints;
+    auto zeroPoint = [&](std::uint32_t a, std::uint32_t b)
+    {
+      if (b < a)
+      {
+        std::swap(a, b);
+      }
+      const std::uint64_t key = (static_cast<std::uint64_t>(a) << 32) | b;
+      auto found = edgePoints.find(key);
+      if (found != edgePoints.end())
+      {
+        return found->second;
+      }
+      const double t = facing[a] / (facing[a] - facing[b]); // the signs differ: in [0, 1]
+      const double* pa = coordinates + 3 * static_cast<size_t>(a);
+      const double* pb = coordinates + 3 * static_cast<size_t>(b);
+      const double x[3] = { pa[0] + t * (pb[0] - pa[0]), pa[1] + t * (pb[1] - pa[1]),
+        pa[2] + t * (pb[2] - pa[2]) };
+      const vtkIdType id = outputPoints->InsertNextPoint(x);
+      edgePoints.emplace(key, id);
+      return id;
+    };
+    contourTriangles->SetName("ContourTriangle");
+    contourTriangles->SetNumberOfComponents(3);
+    contourTriangles->SetNumberOfTuples(typedCount);
+    contourTriangles->Fill(-1);
+    const unsigned char type = SILHOUETTE | SMOOTH_CONTOUR;
+    for (const auto& listed : adjacency.ContourSegments)
+    {
+      for (const Adjacency::ContourSegment& segment : listed)
+      {
+        const std::uint32_t* ids = triangles + 3 * static_cast<size_t>(segment.Triangle);
+        const std::uint32_t rise[2] = { ids[segment.Rise], ids[(segment.Rise + 1) % 3] };
+        const std::uint32_t fall[2] = { ids[segment.Fall], ids[(segment.Fall + 1) % 3] };
+        const vtkIdType ends[2] = { zeroPoint(rise[0], rise[1]), zeroPoint(fall[0], fall[1]) };
+        lines->InsertNextCell(2, ends);
+        types->InsertNextValue(type);
+        const vtkIdType edge[2] = { std::min(rise[0], rise[1]), std::max(rise[0], rise[1]) };
+        inputIds->InsertNextTypedTuple(edge);
+        const vtkIdType corners[3] = { ids[0], ids[1], ids[2] };
+        contourTriangles->InsertNextTypedTuple(corners);
+      }
+    }
+  }
   output->SetPoints(outputPoints);
   output->SetLines(lines);
   output->GetCellData()->AddArray(types);
   output->GetCellData()->AddArray(inputIds);
+  if (smooth)
+  {
+    output->GetCellData()->AddArray(contourTriangles);
+  }
   return 1;
 }
 
@@ -860,6 +1112,9 @@ void vtkNPRFeatureLines::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NonManifoldEdges: " << this->NonManifoldEdges << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "MergeCoincidentPoints: " << this->MergeCoincidentPoints << "\n";
+  os << indent << "SmoothContours: " << this->SmoothContours << "\n";
   os << indent << "NumberOfAdjacencyBuilds: " << this->NumberOfAdjacencyBuilds << "\n";
   os << indent << "NumberOfEdges: " << this->GetNumberOfEdges() << "\n";
+  os << indent << "NumberOfSkippedContourTriangles: " << this->GetNumberOfSkippedContourTriangles()
+     << "\n";
 }

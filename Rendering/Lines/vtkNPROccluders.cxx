@@ -247,11 +247,35 @@ void vtkNPROccluders::Build(const std::vector<vtkNPRMeshInstance>& actors, int t
     group.Locator->BuildLocator();
     this->Groups.push_back(group);
   }
+  this->Points.swap(points);
 }
 
-bool vtkNPROccluders::Hidden(
-  const double fromWorld[3], const double toWorld[3], vtkIdList* candidates) const
+bool vtkNPROccluders::Hidden(const double fromWorld[3], const double toWorld[3],
+  vtkIdList* candidates, const vtkIdType* ignored, int ignoredCount) const
 {
+  // The ignored points as the groups hold them: the same doubles, so compared exactly (which
+  // also ignores the faces of points merely coincident with them, split by vtkPolyDataNormals).
+  const double* ignoredPoints[3] = { nullptr, nullptr, nullptr };
+  int ignoring = 0;
+  for (int i = 0; i < ignoredCount && ignoring < 3; ++i)
+  {
+    if (ignored[i] >= 0 && 3 * static_cast<size_t>(ignored[i]) < this->Points.size())
+    {
+      ignoredPoints[ignoring++] = &this->Points[3 * static_cast<size_t>(ignored[i])];
+    }
+  }
+  auto isIgnored = [&](const double* corner)
+  {
+    for (int i = 0; i < ignoring; ++i)
+    {
+      const double* q = ignoredPoints[i];
+      if (corner[0] == q[0] && corner[1] == q[1] && corner[2] == q[2])
+      {
+        return true;
+      }
+    }
+    return false;
+  };
   double from[3], to[3], direction[3];
   for (int k = 0; k < 3; ++k)
   {
@@ -293,7 +317,9 @@ bool vtkNPROccluders::Hidden(
     for (vtkIdType i = 0, n = candidates->GetNumberOfIds(); i < n; ++i)
     {
       const vtkIdType* ids = corners + 3 * candidates->GetId(i);
-      if (SegmentMeetsTriangle(from, direction, x + 3 * ids[0], x + 3 * ids[1], x + 3 * ids[2]))
+      if (SegmentMeetsTriangle(from, direction, x + 3 * ids[0], x + 3 * ids[1], x + 3 * ids[2]) &&
+        !(ignoring &&
+          (isIgnored(x + 3 * ids[0]) || isIgnored(x + 3 * ids[1]) || isIgnored(x + 3 * ids[2]))))
       {
         return true;
       }

@@ -54,12 +54,17 @@ public:
   void Build(const std::vector<vtkNPRMeshInstance>& actors, int trianglesPerLocator);
 
   // Whether a triangle crosses the segment between two world points, ends and edges included.
-  // `candidates` is scratch space, reused between calls.
-  bool Hidden(const double from[3], const double to[3], vtkIdList* candidates) const;
+  // `candidates` is scratch space, reused between calls. The triangles with a corner at the
+  // coordinates of one of the `ignoredCount` scene points `ignored` do not count (a smooth
+  // contour's own triangle and its neighbours); a scene point's id is its mesh's id plus the
+  // points of the meshes before it in Build's list.
+  bool Hidden(const double from[3], const double to[3], vtkIdList* candidates,
+    const vtkIdType* ignored = nullptr, int ignoredCount = 0) const;
 
 private:
   double FrameCenter[3] = { 0.0, 0.0, 0.0 }; // the locators' frame: (world - centre) x scale
   double FrameScale = 1.0;
+  std::vector<double> Points; // every scene point in that frame, for the ignored points
   // vtkStaticCellLocator, not vtkCellLocator: VTK 9.1's vtkCellLocator::IntersectWithLine
   // misses some triangles (rays through a cube's faces at 2 of 297 points in a test). The
   // static locator clears a flag per cell on every ray (O(cells) per ray), hence the groups.

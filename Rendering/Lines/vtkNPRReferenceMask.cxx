@@ -6,6 +6,7 @@
 #include "vtkCellData.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
+#include "vtkNPRFeatureLines.h"
 #include "vtkNPRSceneLines.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -142,6 +143,7 @@ bool vtkNPRReferenceMask::Update()
   settings.Boundaries = this->Boundaries;
   settings.NonManifoldEdges = this->NonManifoldEdges;
   settings.CreaseAngle = this->CreaseAngle;
+  settings.SmoothContours = this->SmoothContours;
   internal.Scene.Update(this->Renderer, settings, this->TrianglesPerLocator);
   const std::vector<vtkNPRSceneLines::Segment>& segments = internal.Scene.GetSegments();
   internal.FeatureEdges = static_cast<vtkIdType>(segments.size());
@@ -213,7 +215,11 @@ bool vtkNPRReferenceMask::Update()
       double from[3], to[3];
       view.Ray(p, this->OcclusionEpsilon, from, to);
       ++internal.RayCasts;
-      if (occluders.Hidden(from, to, candidates))
+      // A smooth contour lies inside a triangle, often a back-facing one just behind the front
+      // faces next to it: the faces sharing a point with its triangle do not hide it.
+      const bool smooth = (segment.Type & vtkNPRFeatureLines::SMOOTH_CONTOUR) != 0;
+      if (occluders.Hidden(
+            from, to, candidates, smooth ? segment.Triangle : nullptr, smooth ? 3 : 0))
       {
         endRun(segment.Type);
         continue;
@@ -252,6 +258,7 @@ void vtkNPRReferenceMask::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Boundaries: " << this->Boundaries << "\n";
   os << indent << "NonManifoldEdges: " << this->NonManifoldEdges << "\n";
   os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";
+  os << indent << "SmoothContours: " << this->SmoothContours << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "OcclusionEpsilon: " << this->OcclusionEpsilon << "\n";
   os << indent << "GenerateVisibleLines: " << this->GenerateVisibleLines << "\n";

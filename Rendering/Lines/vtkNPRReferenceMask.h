@@ -47,6 +47,19 @@
  * clipping planes, and parts of actors in assemblies. Polygons are split into triangle fans
  * for the visibility test (exact for convex planar polygons).
  *
+ * Smooth contours (SmoothContours, off by default; vtkNPRFeatureLines's SMOOTH_CONTOUR): such
+ * a line lies inside a triangle, and on a coarse mesh often on a back-facing triangle just
+ * behind the front-facing triangles next to the mesh's silhouette edge, so the ray above would
+ * hide it along much of an outline. Its samples use the exact rule instead: the triangles that
+ * share a point with the contour's triangle (by id or by equal coordinates, so also across
+ * points split by vtkPolyDataNormals) do not count as occluders, as if the ray went on past
+ * them; every other triangle, of the same mesh or another actor, hides as before. Chosen over
+ * a ray stopped short by twice the triangle's longest edge: that bound would also let through
+ * real occluders within that distance of the line (a fold of the mesh, a touching object),
+ * while ignoring the neighbours costs nothing more per ray (three exact point comparisons per
+ * triangle hit, and a copy of the scene's points, 24 bytes a point). A fold of the mesh within
+ * one ring of the contour's triangle is the accuracy limit: it does not hide the contour.
+ *
  * The occlusion structure is rebuilt only when an actor's geometry, its matrix or the set of
  * actors changed (GetNumberOfLocatorBuilds()). Cost, measured on a 2-core machine (see
  * Documentation/feature-lines.md): a fraction of a second for a 75k-triangle mesh at
@@ -117,6 +130,18 @@ public:
    */
   vtkSetClampMacro(CreaseAngle, double, 0.0, 180.0);
   vtkGetMacro(CreaseAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Silhouettes as smooth contours (off by default): passed to each actor's
+   * vtkNPRFeatureLines, so a mesh with point normals gets the contour of its interpolated
+   * normals (the outline its shading shows), one without keeps its mesh silhouettes. Their
+   * samples ignore the faces that share a point with the contour's triangle (see above).
+   */
+  vtkSetMacro(SmoothContours, bool);
+  vtkGetMacro(SmoothContours, bool);
+  vtkBooleanMacro(SmoothContours, bool);
   ///@}
 
   ///@{
@@ -213,6 +238,7 @@ protected:
   bool Boundaries = true;
   bool NonManifoldEdges = true;
   double CreaseAngle = 30.0;
+  bool SmoothContours = false;
   double SampleSpacing = 0.25;
   double OcclusionEpsilon = 1e-6;
   bool GenerateVisibleLines = false;

@@ -12,6 +12,7 @@
 #include "vtkCellData.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkIdTypeArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNPRFeatureLines.h"
 #include "vtkPolyData.h"
@@ -225,6 +226,7 @@ void vtkNPRSceneLines::Update(
   this->Segments.clear();
   std::map<MeshKey, LinesEntry> used;
   vtkIdType nodeOffset = 0;
+  vtkIdType pointOffset = 0; // of the mesh's points in the occluders' numbering
   for (const vtkNPRMeshInstance& state : actors)
   {
     const MeshKey key{ state.Actor, state.Mesh };
@@ -245,10 +247,13 @@ void vtkNPRSceneLines::Update(
     lines->SetBoundaries(settings.Boundaries);
     lines->SetNonManifoldEdges(settings.NonManifoldEdges);
     lines->SetFeatureAngle(settings.CreaseAngle);
+    lines->SetSmoothContours(settings.SmoothContours);
     lines->Update();
     vtkPolyData* output = lines->GetOutput();
     auto* types =
       vtkUnsignedCharArray::SafeDownCast(output->GetCellData()->GetArray("FeatureType"));
+    auto* triangles =
+      vtkIdTypeArray::SafeDownCast(output->GetCellData()->GetArray("ContourTriangle"));
     auto iterator = vtk::TakeSmartPointer(output->GetLines()->NewIterator());
     vtkIdType cell = 0;
     for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal();
@@ -266,9 +271,15 @@ void vtkNPRSceneLines::Update(
       segment.Type = types ? types->GetValue(cell) : 0;
       segment.NodeA = nodeOffset + ids[0];
       segment.NodeB = nodeOffset + ids[1];
+      for (int k = 0; k < 3; ++k)
+      {
+        const vtkIdType corner = triangles ? triangles->GetTypedComponent(cell, k) : -1;
+        segment.Triangle[k] = corner >= 0 ? pointOffset + corner : -1;
+      }
       this->Segments.push_back(segment);
     }
     nodeOffset += output->GetNumberOfPoints();
+    pointOffset += state.Mesh->GetPoints() ? state.Mesh->GetNumberOfPoints() : 0;
   }
   this->Lines.swap(used); // forget the actors that are gone
   this->LinesTime = Seconds(start);

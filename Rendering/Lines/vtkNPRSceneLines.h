@@ -58,15 +58,19 @@ public:
   struct Settings
   {
     bool Silhouettes = true, Creases = true, Boundaries = true, NonManifoldEdges = true;
+    bool SmoothContours = false;
     double CreaseAngle = 30.0;
   };
   // A feature edge in world coordinates; Nodes identify its end points across the scene (the
-  // same mesh vertex of the same actor: the same node).
+  // same mesh vertex of the same actor, or the same crossed edge of a smooth contour: the same
+  // node). Triangle: for a smooth contour, the scene point ids (vtkNPROccluders's numbering)
+  // of the triangle it lies on; -1 otherwise.
   struct Segment
   {
     double A[3], B[3];
     unsigned char Type;
     vtkIdType NodeA, NodeB;
+    vtkIdType Triangle[3];
   };
 
   vtkNPRSceneLines();
