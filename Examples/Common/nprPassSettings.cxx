@@ -20,7 +20,6 @@ void nprApplyPassSettings(vtkNPRPass* pass, const nprPassSettings& settings)
   vtkNPREdgePass* edges = pass->GetEdgePass();
   edges->SetSilhouettes(settings.Silhouettes);
   edges->SetSmoothSilhouettes(settings.SmoothSilhouettes);
-  edges->SetSmoothSilhouetteReach(settings.SmoothSilhouetteReach);
   edges->SetSuggestiveContours(settings.SuggestiveContours);
   edges->SetSuggestiveContourThreshold(settings.SuggestiveContourThreshold);
   edges->SetCreases(settings.Creases);

@@ -23,9 +23,8 @@ struct nprPassSettings
   bool Contours = true;
   double SilhouetteThreshold = 0.005;
   bool SmoothSilhouettes = true;
-  double SmoothSilhouetteReach = 1.0;
   bool SuggestiveContours = false;
-  double SuggestiveContourThreshold = 0.01;
+  double SuggestiveContourThreshold = 0.002;
   double CreaseAngle = 30.0;
   int ContourSide = vtkNPREdgePass::INSIDE;
   double LineWidth = 1.5;

@@ -69,6 +69,7 @@ enum ViewKind : unsigned char
   ViewNonManifold = 2,   // more than two faces
   ViewTwoFaces = 4,      // two faces: crease and silhouette tests
   ViewSameDirection = 8, // the two faces traverse the edge the same way: flip the second
+  ViewSplit = 16,        // two faces that reach it through different points (merged coordinates)
 };
 
 double Dot(const double a[3], const double b[3])
@@ -97,6 +98,7 @@ struct vtkNPRFeatureLines::Adjacency
     int Count;          // faces that use the edge
     bool FirstForward;  // the first face goes from A to B
     bool SameDirection; // the second face goes the same way as the first (winding differs)
+    bool Split;         // the two faces use different points at its ends (normals split there)
     double Angle;       // between the two faces' normals, degrees (Count == 2)
   };
 
@@ -496,6 +498,10 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
     this->Polys->GetNumberOfConnectivityIds() + this->Strips->GetNumberOfConnectivityIds()));
   std::vector<vtkIdType> faceOfUse;
   faceOfUse.reserve(halfEdges.capacity());
+  // The input's own point ids of each use (smaller, larger): where two faces reach an edge
+  // through different points at the same coordinates, their point data (normals) may differ.
+  std::vector<std::uint64_t> pointsOfUse;
+  pointsOfUse.reserve(halfEdges.capacity());
   const double* coordinates = this->Coordinates.data();
 
   // The single-precision copy of a face's plane for the side-of-plane test, and the bound of its
@@ -604,6 +610,9 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
         (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
       halfEdges.push_back({ key, 2 * static_cast<std::uint64_t>(faceOfUse.size()) + forward });
       faceOfUse.push_back(face);
+      const vtkIdType ia = ids[i], ib = ids[(i + 1) % size];
+      pointsOfUse.push_back((static_cast<std::uint64_t>(std::min(ia, ib)) << 32) |
+        static_cast<std::uint64_t>(std::max(ia, ib)));
     }
   };
 
@@ -653,13 +662,14 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
     const HalfEdge* end = halfEdges.data() + halfEdges.size();
     const std::uint64_t key = run->Key;
     Edge edge{ static_cast<vtkIdType>(key >> 32), static_cast<vtkIdType>(key & 0xffffffffull),
-      { faceOfUse[run->Use / 2], -1 }, 0, (run->Use & 1) != 0, false, 0.0 };
+      { faceOfUse[run->Use / 2], -1 }, 0, (run->Use & 1) != 0, false, false, 0.0 };
     for (const HalfEdge* h = run; h != end && h->Key == key; ++h)
     {
       if (edge.Count == 1)
       {
         edge.Faces[1] = faceOfUse[h->Use / 2];
         edge.SameDirection = ((h->Use & 1) != 0) == edge.FirstForward;
+        edge.Split = pointsOfUse[h->Use / 2] != pointsOfUse[run->Use / 2];
       }
       ++edge.Count;
     }
@@ -770,7 +780,8 @@ void vtkNPRFeatureLines::Adjacency::Build(vtkPolyData* input, bool merge, vtkNPR
     this->ViewKinds[e] = static_cast<unsigned char>(edge.Count == 1
         ? ViewBoundary
         : (edge.Count > 2 ? ViewNonManifold
-                          : ViewTwoFaces | (edge.SameDirection ? ViewSameDirection : 0)));
+                          : ViewTwoFaces | (edge.SameDirection ? ViewSameDirection : 0) |
+                (edge.Split ? ViewSplit : 0)));
   }
 
   if (this->NonFiniteFaces > 0)
@@ -899,7 +910,9 @@ int vtkNPRFeatureLines::RequestData(
   {
     adjacency.ComputeContours(input, contourNormals, parallel, parallel ? direction : eye);
   }
-  if (silhouettes)
+  // Where the normals are split (an edge whose two faces reach it through different points),
+  // the facing function jumps: the smooth contour runs along the edge if it is a silhouette.
+  if (silhouettes || smooth)
   {
     adjacency.ComputeFaceSides(parallel, parallel ? direction : eye);
   }
@@ -977,7 +990,8 @@ int vtkNPRFeatureLines::RequestData(
           else
           {
             type = creases ? creases[e] : 0;
-            if (silhouettes && isSilhouette(e, (kind & ViewSameDirection) != 0))
+            if ((silhouettes || (smooth && (kind & ViewSplit))) &&
+              isSilhouette(e, (kind & ViewSameDirection) != 0))
             {
               type |= SILHOUETTE;
             }

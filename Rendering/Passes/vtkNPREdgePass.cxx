@@ -226,9 +226,8 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
                 << (packed && this->PackedBlur ? 1 : 0) << "\n#define NPR_PERSPECTIVE "
                 << (gbuffer->GetPerspective() ? 1 : 0) << "\n#define NPR_SILHOUETTES "
                 << (this->Silhouettes ? 1 : 0) << "\n#define NPR_CREASES "
-                << (this->Creases && gbuffer->GetWritesNormals() ? 1 : 0)
-                << "\n#define NPR_FACING " << (facing ? 1 : 0)
-                << "\n#define NPR_SMOOTH_SILHOUETTES "
+                << (this->Creases && gbuffer->GetWritesNormals() ? 1 : 0) << "\n#define NPR_FACING "
+                << (facing ? 1 : 0) << "\n#define NPR_SMOOTH_SILHOUETTES "
                 << (facing && this->Silhouettes && this->SmoothSilhouettes ? 1 : 0)
                 << "\n#define NPR_SUGGESTIVE " << (facing && this->SuggestiveContours ? 1 : 0)
                 << "\n#define NPR_CONTOURS " << (this->Contours ? 1 : 0)
@@ -238,8 +237,7 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
                 << "\n#define NPR_CONTOUR_SIDE " << this->ContourSide << "\n";
   std::ostringstream detectSettings;
   detectSettings << detectDefines.str() << this->SilhouetteThreshold << " " << this->CreaseAngle
-                 << " " << this->PackedThreshold << " " << this->SmoothSilhouetteReach << " "
-                 << this->SuggestiveContourThreshold;
+                 << " " << this->PackedThreshold << " " << this->SuggestiveContourThreshold;
   if (lines &&
     (!internal.LineImageValid || internal.LineImageVersion != gbuffer->GetContentVersion() ||
       internal.LineImageSettings != detectSettings.str()))
@@ -269,7 +267,6 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
       const double radians = vtkMath::RadiansFromDegrees(this->CreaseAngle);
       program->SetUniformf("creaseAngle", static_cast<float>(radians));
       program->SetUniformf("creaseRamp", static_cast<float>(std::min(0.0175, 0.25 * radians)));
-      program->SetUniformf("smoothSilhouetteReach", static_cast<float>(this->SmoothSilhouetteReach));
       program->SetUniformf(
         "suggestiveThreshold", static_cast<float>(this->SuggestiveContourThreshold));
       float rayOrigin[3], rayPerPixelX[3], rayPerPixelY[3];
@@ -454,8 +451,8 @@ std::string vtkNPREdgePass::CompositeKey(
   {
     key << " " << windowRect[i];
   }
-  for (const double* colorValue : { this->SilhouetteColor, this->CreaseColor, this->ContourColor,
-         this->SuggestiveContourColor })
+  for (const double* colorValue :
+    { this->SilhouetteColor, this->CreaseColor, this->ContourColor, this->SuggestiveContourColor })
   {
     key << " " << colorValue[0] << " " << colorValue[1] << " " << colorValue[2];
   }
@@ -505,8 +502,7 @@ void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Silhouettes: " << this->Silhouettes << " threshold " << this->SilhouetteThreshold
      << " color " << this->SilhouetteColor[0] << " " << this->SilhouetteColor[1] << " "
      << this->SilhouetteColor[2] << "\n";
-  os << indent << "SmoothSilhouettes: " << this->SmoothSilhouettes << " reach "
-     << this->SmoothSilhouetteReach << "\n";
+  os << indent << "SmoothSilhouettes: " << this->SmoothSilhouettes << "\n";
   os << indent << "SuggestiveContours: " << this->SuggestiveContours << " threshold "
      << this->SuggestiveContourThreshold << " color " << this->SuggestiveContourColor[0] << " "
      << this->SuggestiveContourColor[1] << " " << this->SuggestiveContourColor[2] << "\n";

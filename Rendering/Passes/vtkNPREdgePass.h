@@ -15,22 +15,12 @@
  *   at any slant, so grazing faces draw no line. SilhouetteThreshold is the relative depth step
  *   that starts a line (0.005: a step of 0.5 % of the distance). Lines lie on the nearer side.
  *   With SmoothSilhouettes (on by default, FLOAT and HALF encodings), silhouettes also follow
- *   the contour of the smooth surface that the normals describe, where the depth step fades out
- *   (an interior contour towards its end, where a fold of the surface flattens): n.v, the
- *   interpolated normal against the direction to the eye (the pixel's own for perspective
- *   cameras), changes sign between two pixels of an object (the line lies on the pixel nearer
- *   the zero), or falls towards zero at a pixel where the surface ends (a neighbour of another
- *   object, of the background, or of another sheet of the surface whose n.v does not continue
- *   the fall) and, extrapolated from the opposite neighbour, reaches zero within
- *   SmoothSilhouetteReach pixels. Front-facing smooth regions, where n.v stays positive, draw
- *   nothing.
- * - Creases: the angle between the normals of neighbouring pixels of one object exceeds
- *   CreaseAngle (degrees). Lines lie on the side facing the viewer more. With FaceCreases (on by
- *   default, FLOAT encoding) the normals compared are the faces' own (the G-buffer's face
- *   normals), so that creases are those of the mesh: shading normals averaged across an edge
- *   sharper than the angle (where vtkPolyDataNormals leaves a vertex unsplit because the chain
- *   of sharp edges through it is broken, as along a crease whose angle wavers about the
- *   threshold) would hide part of it.
+ *   the contour of the smooth surface that the normals describe: where n.v, the interpolated
+ *   normal against the direction to the eye (each pixel's own for perspective cameras), changes
+ *   sign between two pixels of an object, the line lies on the pixel nearer the zero. This needs
+ *   no threshold: it draws contours whose depth step is too small for SilhouetteThreshold (an
+ *   interior contour towards its end, a fold seen nearly edge-on), and nothing on front-facing
+ *   smooth regions, where n.v stays positive.
  * - Suggestive contours (DeCarlo et al. 2003; off by default, FLOAT and HALF encodings): where
  *   n.v, positive, has a minimum along the direction in which the surface recedes (the image
  *   gradient of depth, the view direction projected onto the surface): its first derivative
@@ -106,23 +96,19 @@ public:
 
   ///@{
   /**
-   * Silhouettes of the smooth surface (on by default; see the class description): a contour
-   * that n.v, extrapolated across the last pixel of a surface, reaches within
-   * SmoothSilhouetteReach pixels (default 1, clamped to [0, 1]; 0 keeps only sign changes of
-   * n.v between pixels) is drawn on that pixel. The G-buffer then holds normals. No effect with
-   * the packed encodings.
+   * Silhouettes of the smooth surface, where n.v changes sign between pixels (on by default;
+   * see the class description). The G-buffer then holds normals. No effect with the packed
+   * encodings.
    */
   vtkSetMacro(SmoothSilhouettes, bool);
   vtkGetMacro(SmoothSilhouettes, bool);
   vtkBooleanMacro(SmoothSilhouettes, bool);
-  vtkSetClampMacro(SmoothSilhouetteReach, double, 0.0, 1.0);
-  vtkGetMacro(SmoothSilhouetteReach, double);
   ///@}
 
   ///@{
   /**
    * Suggestive contours: off by default, black. The threshold is the second derivative of n.v
-   * along the receding direction, per pixel squared (default 0.01, clamped to [1e-4, 1]): a
+   * along the receding direction, per pixel squared (default 0.002, clamped to [1e-4, 1]): a
    * valley of n.v whose value rises by half of it one pixel to each side. No effect with the
    * packed encodings.
    */
@@ -326,9 +312,8 @@ protected:
   double SilhouetteThreshold = 0.005;
   double SilhouetteColor[3] = { 0.0, 0.0, 0.0 };
   bool SmoothSilhouettes = true;
-  double SmoothSilhouetteReach = 1.0;
   bool SuggestiveContours = false;
-  double SuggestiveContourThreshold = 0.01;
+  double SuggestiveContourThreshold = 0.002;
   double SuggestiveContourColor[3] = { 0.0, 0.0, 0.0 };
   bool Creases = true;
   double CreaseAngle = 30.0;

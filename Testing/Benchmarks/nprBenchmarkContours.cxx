@@ -165,7 +165,7 @@ int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
         {
           vtkNPRReferenceMask* reference = stage.Reference;
           reference->SetCreases(truth.AllTypes);
-          // MERGE reference->SetSmoothContours(truth.Smooth);
+          reference->SetSmoothContours(truth.Smooth);
           truths.push_back(stage.ReferenceMask());
           if (options.SaveMasks)
           {
@@ -174,7 +174,7 @@ int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
           }
         }
         stage.Reference->SetCreases(true);
-        // MERGE stage.Reference->SetSmoothContours(false);
+        stage.Reference->SetSmoothContours(false);
         for (size_t m = 0; m < methods.size(); ++m)
         {
           const nprMask mask = stage.MethodMask(methods[m], passes[m]);
@@ -220,9 +220,9 @@ int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
       sane = sane && std::isfinite(value) && value >= 0.0 && value <= 1.0;
     }
   }
-  std::string header = "Scenes:\n" + nprBenchmarkSceneLines(scenes) + "\nCameras: " +
-    nprBenchmarkCameraLine(options.Cameras) + "; sizes " + nprBenchmarkSizesLine(options) +
-    "; lines " + nprFormat(options.LineWidth, 3) +
+  std::string header = "Scenes:\n" + nprBenchmarkSceneLines(scenes) +
+    "\nCameras: " + nprBenchmarkCameraLine(options.Cameras) + "; sizes " +
+    nprBenchmarkSizesLine(options) + "; lines " + nprFormat(options.LineWidth, 3) +
     " px wide.\n\nMethods (vtkNPREdgePass, default settings otherwise):\n"
     "- lines: every line type; lines-depth-only: the same without SmoothSilhouettes\n"
     "- outline: silhouettes alone; outline-depth-only: the same without SmoothSilhouettes\n\n"

@@ -124,8 +124,8 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
         // box (--speed's small scene) is not among the defaults.
         if (scene != "box" && std::find(names.begin(), names.end(), scene) == names.end())
         {
-          throw nprUsageError(
-            "unknown scene '" + scene + "' (cad, rotor, bunny, isosurface, blobs, knot, bunny1m, box)");
+          throw nprUsageError("unknown scene '" + scene +
+            "' (cad, rotor, bunny, isosurface, blobs, knot, bunny1m, box)");
         }
       }
     }
@@ -248,9 +248,9 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
   {
     if (!options.ScenesGiven)
     {
-      options.Scenes = options.Quick ? std::vector<std::string>{ "knot" }
-                                     : std::vector<std::string>{ "cad", "rotor", "bunny",
-                                         "isosurface", "blobs", "knot" };
+      options.Scenes = options.Quick
+        ? std::vector<std::string>{ "knot" }
+        : std::vector<std::string>{ "cad", "rotor", "bunny", "isosurface", "blobs", "knot" };
       options.ScenesGiven = true;
     }
     if (!sizesGiven && !options.Quick)

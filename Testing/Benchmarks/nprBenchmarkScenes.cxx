@@ -208,8 +208,8 @@ vtkSmartPointer<vtkPolyData> WithMovedPoints(vtkPolyData* raw, Move move)
 
 const std::vector<std::string>& nprBenchmarkSceneNames()
 {
-  static const std::vector<std::string> names = { "cad", "rotor", "bunny", "isosurface",
-    "blobs", "knot", "bunny1m" };
+  static const std::vector<std::string> names = { "cad", "rotor", "bunny", "isosurface", "blobs",
+    "knot", "bunny1m" };
   return names;
 }
 

@@ -22,8 +22,8 @@ struct nprBenchmarkScene
   long long Triangles = 0;
 };
 
-// The scene names, in the default order: cad, rotor, bunny, isosurface, blobs, knot, bunny1m. The scene
-// "box" (108 triangles, for --speed) loads too but is not among them.
+// The scene names, in the default order: cad, rotor, bunny, isosurface, blobs, knot, bunny1m. The
+// scene "box" (108 triangles, for --speed) loads too but is not among them.
 const std::vector<std::string>& nprBenchmarkSceneNames();
 
 // Loads or generates a scene. dataDir holds cad_part.vtp, rotor.ply and bunny.ply; denseMesh is

@@ -112,17 +112,19 @@ int Channels()
   scene.Renderer->ResetCamera();
   struct Case
   {
-    bool Creases, Contours, TwoProps;
-    bool Normals, Ids;
+    bool Creases, Contours, Smooth, TwoProps;
+    bool Normals, FaceNormals, Ids;
     int Components;
   };
   const Case cases[] = {
-    { true, true, false, true, false, 2 },   // one prop: coverage replaces ids
-    { false, true, false, false, false, 1 }, // depth only
-    { false, false, false, false, false, 1 },
-    { true, false, true, true, false, 2 }, // contours off: no ids
-    { false, true, true, false, true, 4 }, // ids, no normals
-    { true, true, true, true, true, 4 },
+    { true, true, true, false, true, true, false, 4 },     // one prop: coverage replaces ids
+    { true, true, true, false, true, false, false, 2 },    // creases from shading normals
+    { false, true, true, false, true, false, false, 2 },   // smooth silhouettes: n.v
+    { false, true, false, false, false, false, false, 1 }, // depth only
+    { false, false, false, false, false, false, false, 1 },
+    { true, false, true, true, true, true, false, 4 },   // contours off: no ids
+    { false, true, false, true, false, false, true, 4 }, // ids, no normals
+    { true, true, true, true, true, true, true, 4 },
   };
   vtkSmartPointer<vtkActor> second;
   for (const Case& c : cases)
@@ -134,10 +136,15 @@ int Channels()
     }
     scene.Edges()->SetCreases(c.Creases);
     scene.Edges()->SetContours(c.Contours);
+    scene.Edges()->SetSmoothSilhouettes(c.Smooth);
+    scene.Edges()->SetFaceCreases(c.FaceNormals || !c.Creases);
     scene.Render();
     vtkTextureObject* geometry = gbuffer->GetGeometryTexture();
     NPR_CHECK(gbuffer->GetWritesNormals() == c.Normals,
-      "creases " << c.Creases << ": normals written " << gbuffer->GetWritesNormals());
+      "creases " << c.Creases << ", smooth silhouettes " << c.Smooth << ": normals written "
+                 << gbuffer->GetWritesNormals());
+    NPR_CHECK(gbuffer->GetWritesFaceNormals() == c.FaceNormals,
+      "creases " << c.Creases << ": face normals written " << gbuffer->GetWritesFaceNormals());
     NPR_CHECK(gbuffer->GetWritesObjectIds() == c.Ids,
       "contours " << c.Contours << ", two props " << c.TwoProps << ": ids written "
                   << gbuffer->GetWritesObjectIds());
@@ -145,6 +152,8 @@ int Channels()
       "geometry attachment has " << (geometry ? geometry->GetComponents() : 0)
                                  << " components, expected " << c.Components);
   }
+  scene.Edges()->SetSmoothSilhouettes(true);
+  scene.Edges()->SetFaceCreases(true);
   // The shaded style makes no G-buffer at all.
   const int draws = gbuffer->GetNumberOfGeometryDraws();
   scene.Pass->SetStyleToShaded();

@@ -15,7 +15,6 @@ uniform float creaseAngle;         // radians
 uniform float creaseRamp;          // radians: soft ramp around the threshold
 uniform float packedThreshold;     // packed: Laplacian, in units of one component's range
 uniform float packedUnit;          // packed: a texel value in units of one component's range
-uniform float smoothSilhouetteReach; // px: how far past a pixel an extrapolated contour may lie
 uniform float suggestiveThreshold; // second difference of n.v over one pixel
 uniform vec3 viewRayOrigin; // view space: the ray through pixel (0, 0)'s centre (the direction of
 uniform vec3 viewRayPerPixelX; // projection for a parallel view), and its change per pixel
@@ -161,15 +160,12 @@ void main()
   // taps. Its zero set is the contour of the smooth surface the normals describe; its minima
   // along the view direction are the suggestive contours.
   const ivec2 offsets[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
-  vec3 normal0 = NPR_NORMAL(g0);
-  float facing0 = covered0 ? dot(normal0, -normalize(nprViewRay(p))) : 0.0;
-  vec3 normals[4];
+  float facing0 = covered0 ? dot(NPR_NORMAL(g0), -normalize(nprViewRay(p))) : 0.0;
   float facing[4];
   bool sameObject[4]; // covered, of this pixel's object
   for (int k = 0; k < 4; ++k)
   {
-    normals[k] = NPR_NORMAL(g[k]);
-    facing[k] = dot(normals[k], -normalize(nprViewRay(p + offsets[k])));
+    facing[k] = dot(NPR_NORMAL(g[k]), -normalize(nprViewRay(p + offsets[k])));
     sameObject[k] = covered0 && g[k].x > 0.0;
 #if NPR_HAVE_OBJECT_IDS
     sameObject[k] = sameObject[k] && NPR_ID(g[k]) == NPR_ID(g0);
@@ -184,7 +180,6 @@ void main()
   {
     for (int k = 0; k < 4; ++k)
     {
-      int opposite = k + 1 - 2 * (k % 2); // 0 <-> 1, 2 <-> 3
       bool line = false;
       if (sameObject[k] && inside[k] && (facing0 > 0.0) != (facing[k] > 0.0))
       {
@@ -192,21 +187,6 @@ void main()
         // them. Drawn on the pixel nearer the zero (ties: the front-facing one).
         float t = facing0 / (facing0 - facing[k]);
         line = facing0 > 0.0 ? t <= 0.5 : t < 0.5;
-      }
-      else if (facing0 > 0.0 && inside[k] && inside[opposite] && sameObject[opposite] &&
-        facing[opposite] > facing0 && dot(normals[opposite], normal0) > cos(creaseAngle))
-      {
-        // Towards k the surface ends (background, another object, or another sheet of it
-        // behind a fold) while n.v falls towards zero: the contour continues beyond the last
-        // pixel, where the depth step fades out near the contour's end. Extrapolated linearly
-        // from the opposite neighbour, if the surface is smooth there (no crease, and not across
-        // a depth step from the far side).
-        bool farSide = step2 < -silhouetteThreshold &&
-          g[opposite].x < g0.x * (1.0 - 4.0 * silhouetteThreshold);
-        float t = facing0 / (facing[opposite] - facing0);
-        // With t <= 1 a smooth continuation would have n.v <= 0 at k; it has n.v > 0 there, so
-        // the surface does not continue smoothly: the contour lies at its end.
-        line = !farSide && t <= smoothSilhouetteReach;
       }
       silhouette = line ? 1.0 : silhouette;
     }

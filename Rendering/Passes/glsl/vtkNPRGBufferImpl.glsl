@@ -17,20 +17,6 @@
     vec4 nprGeometry = vec4(max(nprDepth, 1e-30), 0.0, 0.0, 1.0);
 #endif
 #if NPR_WRITE_NORMALS
-#if NPR_HAVE_MAPPER_NORMAL
-    vec3 nprNormal = normalVCVSOutput;
-    // VTK turns the normal of a back-facing fragment around (two-sided lighting): turn it back,
-    // so that n.v keeps its sign where the interpolated normals face away (the contour of the
-    // smooth surface runs there). Where the winding disagrees with the normals, as for a needle
-    // triangle whose winding flips when its points are rounded to 32-bit floats, this also
-    // restores the normal the mesh gave.
-    if (!gl_FrontFacing)
-    {
-      nprNormal = -nprNormal;
-    }
-#else
-    vec3 nprNormal = vec3(0.0);
-#endif
     // The view-space position, once for both uses below: interpolated where the mapper passes it
     // (rebuilding it from gl_FragCoord costs llvmpipe about a quarter of this shader's time).
 #if NPR_HAVE_VERTEX_VC
@@ -38,11 +24,33 @@
 #else
     vec3 nprPositionVC = nprFragmentPositionVC();
 #endif
+#if NPR_PERSPECTIVE
+    vec3 nprToViewer = -nprPositionVC;
+#else
+    vec3 nprToViewer = vec3(0.0, 0.0, 1.0);
+#endif
+#if NPR_HAVE_MAPPER_NORMAL
+    vec3 nprNormal = normalVCVSOutput;
+    // VTK turns the normal of a back-facing fragment around (two-sided lighting). Where the
+    // winding disagrees with the normals, as for a needle triangle whose winding flips when its
+    // points are rounded to 32-bit floats, or a mesh oriented inwards, that turns it away from
+    // the viewer: turn it back. (So n.v keeps its sign on front-facing fragments only: the smooth
+    // silhouettes' sign changes are those of the front-facing triangles, the depth step the rest.)
+    if (!gl_FrontFacing && dot(nprNormal, nprToViewer) < 0.0)
+    {
+      nprNormal = -nprNormal;
+    }
+#else
+    vec3 nprNormal = vec3(0.0);
+#endif
     // The face normal, from the derivatives of the view-space position (exact within a
     // triangle), turned towards the viewer.
-    vec3 nprFaceNormal = cross(dFdx(nprPositionVC), dFdy(nprPositionVC));
-    nprFaceNormal = dot(nprFaceNormal, nprFaceNormal) > 1e-30
-      ? nprFaceNormal * sign(dot(nprFaceNormal, -nprPositionVC) + 1e-30)
+    // (The derivatives made unit first: at tiny scales their cross product underflows.)
+    vec3 nprDx = dFdx(nprPositionVC), nprDy = dFdy(nprPositionVC);
+    vec3 nprFaceNormal =
+      cross(nprDx / max(length(nprDx), 1e-37), nprDy / max(length(nprDy), 1e-37));
+    nprFaceNormal = dot(nprFaceNormal, nprFaceNormal) > 1e-12
+      ? nprFaceNormal * sign(dot(nprFaceNormal, nprToViewer) + 1e-30)
       : vec3(0.0, 0.0, 1.0);
     // Unlit actors, lines, points and zero-length or NaN normals: the face normal.
     if (!(dot(nprNormal, nprNormal) > 1e-12))
@@ -58,7 +66,8 @@
 #if NPR_WRITE_FACE_NORMALS
     // The face normal too, on the side of the interpolated one: creases are angles between faces,
     // as in the mesh, whatever the shading normals average across (vtkNPREdgePass).
-    nprGeometry.w = nprPackNormal(normalize(nprFaceNormal) * sign(dot(nprFaceNormal, nprNormal) + 1e-30));
+    nprGeometry.w =
+      nprPackNormal(normalize(nprFaceNormal) * sign(dot(nprFaceNormal, nprNormal) + 1e-30));
 #endif
 #endif
 #if NPR_WRITE_OBJECT_IDS
