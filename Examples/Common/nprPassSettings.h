@@ -22,7 +22,7 @@ struct nprPassSettings
   bool Creases = true;
   bool Contours = true;
   double SilhouetteThreshold = 0.005;
-  bool SmoothSilhouettes = true;
+  bool SmoothSilhouettes = false;
   bool SuggestiveContours = false;
   double SuggestiveContourThreshold = 0.002;
   double CreaseAngle = 30.0;

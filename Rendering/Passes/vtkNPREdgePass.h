@@ -14,7 +14,7 @@
  *   perspective and z for parallel cameras, relative to the pixel's depth: it vanishes on planes
  *   at any slant, so grazing faces draw no line. SilhouetteThreshold is the relative depth step
  *   that starts a line (0.005: a step of 0.5 % of the distance). Lines lie on the nearer side.
- *   With SmoothSilhouettes (on by default, FLOAT and HALF encodings), silhouettes also follow
+ *   With SmoothSilhouettes (off by default, FLOAT and HALF encodings), silhouettes also follow
  *   the contour of the smooth surface that the normals describe: where n.v, the interpolated
  *   normal against the direction to the eye (each pixel's own for perspective cameras), changes
  *   sign between two pixels of an object, the line lies on the pixel nearer the zero. This needs
@@ -96,9 +96,11 @@ public:
 
   ///@{
   /**
-   * Silhouettes of the smooth surface, where n.v changes sign between pixels (on by default;
+   * Silhouettes of the smooth surface, where n.v changes sign between pixels (off by default;
    * see the class description). The G-buffer then holds normals. No effect with the packed
-   * encodings.
+   * encodings. Measured on the benchmark's smooth and scanned scenes (Documentation/edges.md),
+   * the depth test already finds every pixel it adds, so it is off by default: it is for
+   * contours whose depth step stays below SilhouetteThreshold.
    */
   vtkSetMacro(SmoothSilhouettes, bool);
   vtkGetMacro(SmoothSilhouettes, bool);
@@ -311,7 +313,7 @@ protected:
   bool Silhouettes = true;
   double SilhouetteThreshold = 0.005;
   double SilhouetteColor[3] = { 0.0, 0.0, 0.0 };
-  bool SmoothSilhouettes = true;
+  bool SmoothSilhouettes = false;
   bool SuggestiveContours = false;
   double SuggestiveContourThreshold = 0.002;
   double SuggestiveContourColor[3] = { 0.0, 0.0, 0.0 };

@@ -2,9 +2,10 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 # SPDX-License-Identifier: BSD-3-Clause
 """Smoke test of npr-benchmark: runs it with --quick (alone, or with --stress, --coherence,
---drawing or --speed) and checks that the files are written and that every figure is sane (F1 in [0, 1], no NaN, positive times).
+--drawing, --speed or --contours) and checks that the files are written and that every figure is sane (F1 in [0, 1], no NaN, positive times).
 
-usage: check_benchmark.py --npr-benchmark EXE --data DIR --out DIR [--stress | --coherence | --drawing | --speed]"""
+usage: check_benchmark.py --npr-benchmark EXE --data DIR --out DIR
+       [--stress | --coherence | --drawing | --speed | --contours]"""
 import argparse
 import csv
 import math
@@ -149,7 +150,8 @@ SPEED_METHODS = (
     "plain VTK frame", "vtkNPRPass edges", "vtkNPRPass toon+edges", "vtkNPRPass sketch",
     "vtkNPRPass toon", "vtkNPRPass inked", "vtkNPRPass drawing",
     "vtkNPRPass edges, silhouettes only", "vtkNPRPass edges, every line type off",
-    "vtkNPRPass inked, 1 px wireframe",
+    "vtkNPRPass edges, creases from shading normals", "vtkNPRPass edges, smooth silhouettes on",
+    "vtkNPRPass edges, suggestive contours on", "vtkNPRPass inked, 1 px wireframe",
     "vtkNPRPass edges, unchanged frame drawn again", "vtkSobelGradientMagnitudePass",
     "vtkOutlineGlowPass", "vtkSSAOPass", "vtkEDLShading",
     "vtkPolyDataSilhouette re-extracted + surface",
@@ -172,6 +174,25 @@ def check_speed(out):
           "speed.csv lacks gpu_median_ms")
     check(all(method in text for method in SPEED_METHODS), "speed.md lacks a method")
     check("nan" not in text.lower(), "speed.md has a NaN")
+
+
+def check_contours(out):
+    rows = read_csv(os.path.join(out, "contours.csv"))
+    pairs = {(row["method"], row["truth"]) for row in rows}
+    expected = {(m, t) for m in ("lines", "lines-smooth", "outline", "outline-smooth")
+                for t in ("mesh", "smooth")}
+    check(pairs == expected, "contours.csv: methods and truths %s" % sorted(pairs))
+    check({row["scene"] for row in rows} == {"knot"}, "contours.csv: the knot only with --quick")
+    for row in rows:
+        for key in ("precision_1px", "recall_1px", "f1_1px"):
+            value = number(row, key)
+            check(0.0 <= value <= 1.0, "%s out of [0, 1]: %s" % (key, row))
+        check(int(row["truth_pixels"]) > 100, "an empty truth: %s" % row)
+        # The knot's tube outlines: every line found, nothing else (measured 0.99 and above).
+        check(number(row, "f1_1px") >= 0.95, "F1@1 of the knot: %s" % row)
+    md = os.path.join(out, "contours.md")
+    check(os.path.isfile(md) and "| scene | kind | method | truth |" in open(md).read(),
+          "contours.md has no table")
 
 
 def check_speed_methods(args):
@@ -201,6 +222,7 @@ def main():
     mode.add_argument("--coherence", action="store_true")
     mode.add_argument("--drawing", action="store_true")
     mode.add_argument("--speed", action="store_true")
+    mode.add_argument("--contours", action="store_true")
     args = parser.parse_args()
     shutil.rmtree(args.out, ignore_errors=True)
     command = [args.npr_benchmark, "--quick", "--data", args.data, "--out", args.out]
@@ -212,6 +234,8 @@ def main():
         command.append("--drawing")
     if args.speed:
         command.append("--speed")
+    if args.contours:
+        command.append("--contours")
     print(" ".join(command))
     result = subprocess.run(command)
     check(result.returncode == 0, "npr-benchmark exited with %d" % result.returncode)
@@ -224,6 +248,8 @@ def main():
     elif args.speed:
         check_speed(args.out)
         check_speed_methods(args)
+    elif args.contours:
+        check_contours(args.out)
     else:
         check_benchmark(args.out)
     print("FAILED (%d failed checks)" % len(failures) if failures else "PASSED")

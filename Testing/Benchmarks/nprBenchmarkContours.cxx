@@ -43,8 +43,8 @@ struct Variant
   bool SmoothSilhouettes; // the edge pass's smooth silhouettes
 };
 
-const Variant Variants[] = { { "lines", true, true }, { "lines-depth-only", true, false },
-  { "outline", false, true }, { "outline-depth-only", false, false } };
+const Variant Variants[] = { { "lines", true, false }, { "lines-smooth", true, true },
+  { "outline", false, false }, { "outline-smooth", false, true } };
 
 struct Truth
 {
@@ -206,7 +206,7 @@ int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
         }
         std::cerr << "npr-benchmark: " << scene.Name << " " << camera.Name << " " << size.first
                   << "x" << size.second << ": outline F1@1 against the smooth truth "
-                  << nprFormat(rows[rows.size() - 3].F1, 3) << " (depth only "
+                  << nprFormat(rows[rows.size() - 3].F1, 3) << " (with smooth silhouettes "
                   << nprFormat(rows.back().F1, 3) << ")\n";
       }
     }
@@ -224,8 +224,8 @@ int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
     "\nCameras: " + nprBenchmarkCameraLine(options.Cameras) + "; sizes " +
     nprBenchmarkSizesLine(options) + "; lines " + nprFormat(options.LineWidth, 3) +
     " px wide.\n\nMethods (vtkNPREdgePass, default settings otherwise):\n"
-    "- lines: every line type; lines-depth-only: the same without SmoothSilhouettes\n"
-    "- outline: silhouettes alone; outline-depth-only: the same without SmoothSilhouettes\n\n"
+    "- lines: every line type; lines-smooth: the same with SmoothSilhouettes\n"
+    "- outline: silhouettes alone; outline-smooth: the same with SmoothSilhouettes\n\n"
     "Truths (vtkNPRReferenceMask): mesh: silhouette edges; smooth: the zero set of the "
     "interpolated n.v (SmoothContours); both with borders and non-manifold edges, and for the "
     "lines with creases above 30 degrees.\n";

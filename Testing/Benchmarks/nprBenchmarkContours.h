@@ -5,7 +5,8 @@
 // edges, creases, borders) and the smooth surface's (the contour where the interpolated n.v is
 // zero, vtkNPRFeatureLines::SmoothContours, with the same creases and borders). Two line sets:
 // every line type ("lines", against creases at 30 degrees too) and silhouettes alone
-// ("outline", against contours and borders alone), each with the smooth silhouettes on and off.
+// ("outline", against contours and borders alone), each at default settings and with the smooth
+// silhouettes on ("-smooth").
 // Writes OUT/contours.csv and OUT/contours.md.
 #ifndef nprBenchmarkContours_h
 #define nprBenchmarkContours_h

@@ -222,7 +222,7 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
   {
     if (!options.ScenesGiven)
     {
-      options.Scenes = { "cad" };
+      options.Scenes = { options.Contours ? "knot" : "cad" };
       options.ScenesGiven = true;
     }
     options.Cameras = camerasGiven ? options.Cameras : 1;

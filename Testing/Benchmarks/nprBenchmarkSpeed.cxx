@@ -147,13 +147,15 @@ std::vector<SpeedMethod> MakeMethods()
   };
   methods.push_back({ "edges-silhouettes", "vtkNPRPass edges, silhouettes only", edgesWith(true) });
   methods.push_back({ "edges-floor", "vtkNPRPass edges, every line type off", edgesWith(false) });
-  // The line set before smooth silhouettes and face-normal creases, and with suggestive contours:
-  // what each costs.
-  auto previous = NPRStyle("edges");
-  vtkNPRPass::SafeDownCast(previous)->GetEdgePass()->SmoothSilhouettesOff();
-  vtkNPRPass::SafeDownCast(previous)->GetEdgePass()->FaceCreasesOff();
-  methods.push_back({ "edges-previous",
-    "vtkNPRPass edges, no smooth silhouettes, creases from shading normals", previous });
+  // What the optional line tests cost: creases from the shading normals (the G-buffer without
+  // face normals, as before they were added), smooth silhouettes, suggestive contours.
+  auto shadingCreases = NPRStyle("edges");
+  vtkNPRPass::SafeDownCast(shadingCreases)->GetEdgePass()->FaceCreasesOff();
+  methods.push_back(
+    { "edges-shading-creases", "vtkNPRPass edges, creases from shading normals", shadingCreases });
+  auto smooth = NPRStyle("edges");
+  vtkNPRPass::SafeDownCast(smooth)->GetEdgePass()->SmoothSilhouettesOn();
+  methods.push_back({ "edges-smooth", "vtkNPRPass edges, smooth silhouettes on", smooth });
   auto suggestive = NPRStyle("edges");
   vtkNPRPass::SafeDownCast(suggestive)->GetEdgePass()->SuggestiveContoursOn();
   methods.push_back({ "edges-suggestive", "vtkNPRPass edges, suggestive contours on", suggestive });

@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The edge pass on smooth surfaces, against analytic answers: a torus seen obliquely has its
 // interior contour drawn to its ending (the cusp, found from the torus's equations and the
-// visibility of each contour point), and not much further; a sphere has no line inside its outline, even with
-// suggestive contours on; suggestive contours appear on a bumpy sphere and not on a smooth one;
-// a crease whose angle wavers about the threshold along a tessellated arc is drawn along the
-// whole of its length where the mesh's faces meet beyond the angle.
+// visibility of each contour point), and not much further; a sphere has no line inside its outline,
+// even with suggestive contours on; suggestive contours appear on a bumpy sphere and not on a
+// smooth one; a crease whose angle wavers about the threshold along a tessellated arc is drawn
+// along the whole of its length where the mesh's faces meet beyond the angle.
 //
 // usage: TestEdgePassSmooth CASE [DATA_DIR]   (CASE: see the table at the end of this file)
 #include "nprTesting.h"
@@ -72,8 +72,8 @@ vtkSmartPointer<vtkPolyData> MakeTorus(double R, double r, int along, int around
     {
       const double v = 2.0 * Pi * j / around;
       const double n[3] = { std::cos(u) * std::cos(v), std::sin(u) * std::cos(v), std::sin(v) };
-      points->InsertNextPoint((R + r * std::cos(v)) * std::cos(u),
-        (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+      points->InsertNextPoint(
+        (R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
       normals->InsertNextTuple(n);
     }
   }
@@ -177,8 +177,8 @@ int TorusCusp()
     for (int b = 0; b < 2; ++b)
     {
       const double v = base + (b ? spread : -spread);
-      const double p[3] = { (R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
-        r * std::sin(v) };
+      const double p[3] = { (R + r * std::cos(v)) * std::cos(u),
+        (R + r * std::cos(v)) * std::sin(u), r * std::sin(v) };
       ContourPoint point;
       scene.Project(p, point.Display);
       point.Visible = visible(p);
@@ -446,8 +446,8 @@ int WaveringCreaseCase()
             }
             ++viewTruth;
             bool near = false;
-            for (const auto& d : { std::array<int, 2>{ 0, 0 }, { 1, 0 }, { -1, 0 }, { 0, 1 },
-                   { 0, -1 } })
+            for (const auto& d :
+              { std::array<int, 2>{ 0, 0 }, { 1, 0 }, { -1, 0 }, { 0, 1 }, { 0, -1 } })
             {
               near = near || nprPixel(mask, x + d[0], y + d[1]) >= 128;
             }

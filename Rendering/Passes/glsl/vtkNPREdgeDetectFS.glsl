@@ -160,12 +160,27 @@ void main()
   // taps. Its zero set is the contour of the smooth surface the normals describe; its minima
   // along the view direction are the suggestive contours.
   const ivec2 offsets[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
-  float facing0 = covered0 ? dot(NPR_NORMAL(g0), -normalize(nprViewRay(p))) : 0.0;
-  float facing[4];
+  // The rays of neighbouring pixels have all but the same length: divided by this pixel's,
+  // one square root instead of five.
+  vec3 ray0 = nprViewRay(p);
+  float rayScale = inversesqrt(dot(ray0, ray0));
+  float facing0 = covered0 ? -dot(NPR_NORMAL(g0), ray0) * rayScale : 0.0;
+  // The neighbours' n.v only where this pixel can hold a line: a sign change drawn here needs
+  // |n.v| below a half on both sides or a turn of the normal by over 60 degrees within a pixel
+  // (a crease); suggestive contours need them everywhere.
+  float facing[4] = float[4](facing0, facing0, facing0, facing0);
+#if !NPR_SUGGESTIVE
+  if (covered0 && abs(facing0) < 0.5)
+#endif
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      facing[k] = -dot(NPR_NORMAL(g[k]), nprViewRay(p + offsets[k])) * rayScale;
+    }
+  }
   bool sameObject[4]; // covered, of this pixel's object
   for (int k = 0; k < 4; ++k)
   {
-    facing[k] = dot(NPR_NORMAL(g[k]), -normalize(nprViewRay(p + offsets[k])));
     sameObject[k] = covered0 && g[k].x > 0.0;
 #if NPR_HAVE_OBJECT_IDS
     sameObject[k] = sameObject[k] && NPR_ID(g[k]) == NPR_ID(g0);
