@@ -18,13 +18,19 @@ const char* const nprPassOptionsHelp = R"(Style:
 
 Lines (--style edges, toon+edges, sketch and drawing):
   --lines LIST             line types drawn, comma separated: silhouettes, creases,
-                           contours, or none (default silhouettes,creases,contours)
+                           contours, suggestive (suggestive contours), or none (default
+                           silhouettes,creases,contours)
   --silhouette-threshold X relative depth step that makes a silhouette (default 0.005)
+  --smooth-silhouettes     silhouettes also where the shading normal turns away between
+                           two pixels (the smooth surface's contour)
   --crease-angle DEG       normal angle that makes a crease, 1..179 (default 30)
+  --shading-creases        creases between the shading normals instead of the faces'
+  --suggestive-threshold X strength of a suggestive contour, 0.0001..1 (default 0.002)
   --contour-side SIDE      inside, outside or both (default inside)
   --line-width PX          line width in pixels, 0.5..16 (default 1.5)
   --line-color COLOR       colour of every line type (default black)
-  --silhouette-color COLOR, --crease-color COLOR, --contour-color COLOR
+  --silhouette-color COLOR, --crease-color COLOR, --contour-color COLOR,
+  --suggestive-color COLOR
   --no-antialias           lines without anti-aliasing
   --encoding NAME          how the G-buffer stores depth and normals: float (default),
                            half, packed8 or packed16 (the 1990s packed depth+normal
@@ -88,7 +94,7 @@ bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
   else if (arg == "--lines")
   {
     const std::vector<std::string> parts = nprSplitList(arguments.Value());
-    pass.Silhouettes = pass.Creases = pass.Contours = false;
+    pass.Silhouettes = pass.Creases = pass.Contours = pass.SuggestiveContours = false;
     for (const std::string& part : parts)
     {
       if (part == "silhouettes" || part == "silhouette")
@@ -103,10 +109,15 @@ bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
       {
         pass.Contours = true;
       }
+      else if (part == "suggestive")
+      {
+        pass.SuggestiveContours = true;
+      }
       else if (part != "none")
       {
-        throw nprUsageError(
-          "--lines expects silhouettes, creases, contours or none, got '" + part + "'");
+        throw nprUsageError("--lines expects silhouettes, creases, contours, suggestive or none, "
+                            "got '" +
+          part + "'");
       }
     }
   }
@@ -117,6 +128,22 @@ bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
   else if (arg == "--crease-angle")
   {
     pass.CreaseAngle = nprParseRange(arg, arguments.Value(), 1.0, 179.0);
+  }
+  else if (arg == "--smooth-silhouettes")
+  {
+    pass.SmoothSilhouettes = true;
+  }
+  else if (arg == "--shading-creases")
+  {
+    pass.FaceCreases = false;
+  }
+  else if (arg == "--suggestive-threshold")
+  {
+    pass.SuggestiveContourThreshold = nprParseRange(arg, arguments.Value(), 1e-4, 1.0);
+  }
+  else if (arg == "--suggestive-color")
+  {
+    nprParseColor(arg, arguments.Value(), pass.SuggestiveContourColor);
   }
   else if (arg == "--contour-side")
   {
@@ -138,6 +165,7 @@ bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
     nprParseColor(arg, arguments.Value(), pass.SilhouetteColor);
     std::copy_n(pass.SilhouetteColor, 3, pass.CreaseColor);
     std::copy_n(pass.SilhouetteColor, 3, pass.ContourColor);
+    std::copy_n(pass.SilhouetteColor, 3, pass.SuggestiveContourColor);
   }
   else if (arg == "--silhouette-color")
   {

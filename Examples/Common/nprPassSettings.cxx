@@ -31,6 +31,8 @@ void nprApplyPassSettings(vtkNPRPass* pass, const nprPassSettings& settings)
   edges->SetSilhouetteColor(settings.SilhouetteColor);
   edges->SetCreaseColor(settings.CreaseColor);
   edges->SetContourColor(settings.ContourColor);
+  edges->SetSuggestiveContourColor(settings.SuggestiveContourColor);
+  edges->SetFaceCreases(settings.FaceCreases);
   edges->SetAntiAliasing(settings.AntiAliasing);
   edges->SetEncoding(settings.Encoding);
   edges->SetPackedThreshold(settings.PackedThreshold);

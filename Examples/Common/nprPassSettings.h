@@ -31,6 +31,8 @@ struct nprPassSettings
   double SilhouetteColor[3] = { 0.0, 0.0, 0.0 };
   double CreaseColor[3] = { 0.0, 0.0, 0.0 };
   double ContourColor[3] = { 0.0, 0.0, 0.0 };
+  double SuggestiveContourColor[3] = { 0.0, 0.0, 0.0 };
+  bool FaceCreases = true;
   bool AntiAliasing = true;
   int Encoding = vtkNPREdgePass::FLOAT;
   double PackedThreshold = 0.1;

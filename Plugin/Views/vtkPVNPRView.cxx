@@ -63,7 +63,12 @@ void vtkPVNPRView::UpdateSceneRenderPass()
     this->SynchronizedRenderers->SetRenderPass(pass);
   }
 }
-vtkPVNPRViewForward(Silhouettes, bool, GetEdgePass(), SetSilhouettes)
+vtkPVNPRViewForward(FaceCreases, bool, GetEdgePass(), SetFaceCreases) vtkPVNPRViewForward(
+  SmoothSilhouettes, bool, GetEdgePass(),
+  SetSmoothSilhouettes) vtkPVNPRViewForward(SuggestiveContours, bool, GetEdgePass(),
+  SetSuggestiveContours) vtkPVNPRViewForward(SuggestiveContourThreshold, double, GetEdgePass(),
+  SetSuggestiveContourThreshold) vtkPVNPRViewForwardColor(SuggestiveContourColor, GetEdgePass(),
+  SetSuggestiveContourColor) vtkPVNPRViewForward(Silhouettes, bool, GetEdgePass(), SetSilhouettes)
   vtkPVNPRViewForward(SilhouetteThreshold, double, GetEdgePass(), SetSilhouetteThreshold)
     vtkPVNPRViewForwardColor(SilhouetteColor, GetEdgePass(), SetSilhouetteColor)
       vtkPVNPRViewForward(Creases, bool, GetEdgePass(), SetCreases) vtkPVNPRViewForward(CreaseAngle,

@@ -59,6 +59,11 @@ public:
   void SetCreases(bool on);
   void SetCreaseAngle(double degrees);
   void SetCreaseColor(double r, double g, double b);
+  void SetFaceCreases(bool on);
+  void SetSmoothSilhouettes(bool on);
+  void SetSuggestiveContours(bool on);
+  void SetSuggestiveContourThreshold(double threshold);
+  void SetSuggestiveContourColor(double r, double g, double b);
   void SetContours(bool on);
   void SetContourSide(int side);
   void SetContourColor(double r, double g, double b);

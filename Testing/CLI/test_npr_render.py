@@ -156,6 +156,14 @@ check(300 < lit < 0.3 * 160 * 120 and values.count(0) > 0.5 * 160 * 120,
       "the edge mask has white lines on black (%d line pixels)" % lit)
 rc, _, err = run(rotor, "--style", "edges", "--lines", "none", "--size", "160x120", "--edge-mask", out("none.png"))
 check(rc == 0 and max(read_png(out("none.png"))[3]) == 0, "--lines none gives an empty mask (%s)" % err.strip())
+# Suggestive contours alone: lines inside the bunny's outline (its folds), none with no line type.
+rc, _, err = run(bunny, "--style", "edges", "--lines", "suggestive", "--size", "320x240", "--edge-mask",
+                 out("suggestive.png"))
+check(rc == 0 and max(read_png(out("suggestive.png"))[3]) > 0,
+      "--lines suggestive draws suggestive contours (%s)" % err.strip())
+rc, _, err = run(bunny, "--style", "edges", "--smooth-silhouettes", "--shading-creases", "--size", "160x120",
+                 "--edge-mask", out("smooth.png"))
+check(rc == 0 and max(read_png(out("smooth.png"))[3]) > 0, "--smooth-silhouettes --shading-creases (%s)" % err.strip())
 rc, _, _ = run(rotor, "--style", "edges", "--lines", "silhouettes", "--line-width", "4", "--size", "160x120",
                "--azimuth", "30", "--edge-mask", out("wide.png"))
 wide = sum(v for v in read_png(out("wide.png"))[3]) / 255.0
@@ -264,7 +272,8 @@ errors = [
     ([rotor, "--style", "edges", "--silhouette-threshold", "2", "-o", out("x.png")], "--silhouette-threshold expects a number in"),
     ([rotor, "--style", "edges", "--line-width", "0", "-o", out("x.png")], "--line-width expects a number in 0.5..16"),
     ([rotor, "--style", "edges", "--contour-side", "sideways", "-o", out("x.png")], "--contour-side expects inside, outside or both"),
-    ([rotor, "--style", "edges", "--lines", "silhouettes,hatching", "-o", out("x.png")], "--lines expects silhouettes, creases, contours or none, got 'hatching'"),
+    ([rotor, "--style", "edges", "--suggestive-threshold", "0", "-o", out("x.png")], "--suggestive-threshold expects a number in"),
+    ([rotor, "--style", "edges", "--lines", "silhouettes,hatching", "-o", out("x.png")], "--lines expects silhouettes, creases, contours, suggestive or none, got 'hatching'"),
     ([rotor, "--style", "edges", "--line-color", "2,0,0", "-o", out("x.png")], "--line-color expects r,g,b"),
     ([rotor, "--edge-mask", out("m.png")], "--edge-mask needs --style edges, toon+edges or inked"),
     ([rotor, "--style", "edges", "--encoding", "packed4", "-o", out("x.png")], "--encoding expects float, half, packed8 or packed16, got 'packed4'"),
