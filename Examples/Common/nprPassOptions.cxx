@@ -25,7 +25,7 @@ Lines (--style edges, toon+edges, sketch and drawing):
                            two pixels (the smooth surface's contour)
   --crease-angle DEG       normal angle that makes a crease, 1..179 (default 30)
   --shading-creases        creases between the shading normals instead of the faces'
-  --suggestive-threshold X strength of a suggestive contour, 0.0001..1 (default 0.002)
+  --suggestive-threshold X strength of a suggestive contour, 0.0001..1 (default 0.01)
   --contour-side SIDE      inside, outside or both (default inside)
   --line-width PX          line width in pixels, 0.5..16 (default 1.5)
   --line-color COLOR       colour of every line type (default black)

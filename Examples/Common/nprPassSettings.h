@@ -24,7 +24,7 @@ struct nprPassSettings
   double SilhouetteThreshold = 0.005;
   bool SmoothSilhouettes = false;
   bool SuggestiveContours = false;
-  double SuggestiveContourThreshold = 0.002;
+  double SuggestiveContourThreshold = 0.01;
   double CreaseAngle = 30.0;
   int ContourSide = vtkNPREdgePass::INSIDE;
   double LineWidth = 1.5;

@@ -132,7 +132,8 @@ public:
     CREASE = 2,
     BOUNDARY = 4,
     NON_MANIFOLD = 8,
-    SMOOTH_CONTOUR = 16
+    SMOOTH_CONTOUR = 16,
+    INTERSECTION = 32 // not made here: vtkNPRReferenceMask's curves where surfaces cross
   };
 
   ///@{

@@ -59,6 +59,85 @@ bool SegmentMeetsTriangle(
   const double t = vtkMath::Dot(n, oa) / along;
   return t >= 0.0 && t <= 1.0;
 }
+
+// The segment where triangles a and b cross (in the occluders' frame, where the scene's extent
+// is 1), and the angle between their planes in degrees. False where they do not cross along a
+// segment: apart, touching at a point, or coplanar.
+bool CrossTriangles(
+  const double* const a[3], const double* const b[3], double p[3], double q[3], double& angle)
+{
+  constexpr double eps = 1e-12;
+  auto normal = [](const double* const t[3], double n[3])
+  {
+    const double u[3] = { t[1][0] - t[0][0], t[1][1] - t[0][1], t[1][2] - t[0][2] };
+    const double v[3] = { t[2][0] - t[0][0], t[2][1] - t[0][1], t[2][2] - t[0][2] };
+    vtkMath::Cross(u, v, n);
+    return vtkMath::Normalize(n) > 0.0;
+  };
+  double na[3], nb[3];
+  if (!normal(a, na) || !normal(b, nb))
+  {
+    return false;
+  }
+  // Each triangle's corners against the other's plane, then the piece of it on that plane.
+  auto cut = [](const double* const t[3], const double n[3], const double* o, double out[2][3])
+  {
+    double d[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const double r[3] = { t[k][0] - o[0], t[k][1] - o[1], t[k][2] - o[2] };
+      d[k] = vtkMath::Dot(n, r);
+    }
+    const bool above = d[0] > eps || d[1] > eps || d[2] > eps;
+    const bool below = d[0] < -eps || d[1] < -eps || d[2] < -eps;
+    if (!above || !below)
+    {
+      return 0; // on one side, or in the plane (coplanar, or touching it)
+    }
+    int count = 0;
+    for (int k = 0; k < 3 && count < 2; ++k)
+    {
+      const int next = (k + 1) % 3;
+      if (std::abs(d[k]) <= eps)
+      {
+        std::copy_n(t[k], 3, out[count++]);
+      }
+      else if ((d[k] > eps && d[next] < -eps) || (d[k] < -eps && d[next] > eps))
+      {
+        const double s = d[k] / (d[k] - d[next]);
+        for (int i = 0; i < 3; ++i)
+        {
+          out[count][i] = t[k][i] + s * (t[next][i] - t[k][i]);
+        }
+        ++count;
+      }
+    }
+    return count;
+  };
+  double pa[2][3], pb[2][3];
+  if (cut(a, nb, b[0], pa) != 2 || cut(b, na, a[0], pb) != 2)
+  {
+    return false;
+  }
+  // Both pieces lie on the planes' common line: their overlap along it.
+  double line[3];
+  vtkMath::Cross(na, nb, line);
+  const double sa[2] = { vtkMath::Dot(pa[0], line), vtkMath::Dot(pa[1], line) };
+  const double sb[2] = { vtkMath::Dot(pb[0], line), vtkMath::Dot(pb[1], line) };
+  const double low = std::max(std::min(sa[0], sa[1]), std::min(sb[0], sb[1]));
+  const double high = std::min(std::max(sa[0], sa[1]), std::max(sb[0], sb[1]));
+  if (!(high - low > eps) || sa[1] == sa[0])
+  {
+    return false;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    p[i] = pa[0][i] + (low - sa[0]) / (sa[1] - sa[0]) * (pa[1][i] - pa[0][i]);
+    q[i] = pa[0][i] + (high - sa[0]) / (sa[1] - sa[0]) * (pa[1][i] - pa[0][i]);
+  }
+  angle = vtkMath::DegreesFromRadians(std::acos(std::min(1.0, std::abs(vtkMath::Dot(na, nb)))));
+  return true;
+}
 }
 
 void vtkNPROccluders::Build(const std::vector<vtkNPRMeshInstance>& actors, int trianglesPerLocator)
@@ -248,6 +327,85 @@ void vtkNPROccluders::Build(const std::vector<vtkNPRMeshInstance>& actors, int t
     this->Groups.push_back(group);
   }
   this->Points.swap(points);
+  this->Crossings.clear();
+  this->CrossingsValid = false;
+}
+
+const std::vector<vtkNPROccluders::Crossing>& vtkNPROccluders::GetCrossings()
+{
+  if (this->CrossingsValid)
+  {
+    return this->Crossings;
+  }
+  this->CrossingsValid = true;
+  this->Crossings.clear();
+  vtkNew<vtkIdList> candidates;
+  for (size_t g = 0; g < this->Groups.size(); ++g)
+  {
+    const Group& group = this->Groups[g];
+    const vtkIdType* corners = group.Corners->GetPointer(0);
+    const vtkIdType count = group.Corners->GetNumberOfValues() / 3;
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      const double* a[3] = { group.Coordinates + 3 * corners[3 * i],
+        group.Coordinates + 3 * corners[3 * i + 1], group.Coordinates + 3 * corners[3 * i + 2] };
+      double box[6];
+      for (int k = 0; k < 3; ++k)
+      {
+        box[2 * k] = std::min({ a[0][k], a[1][k], a[2][k] }) - 1e-12;
+        box[2 * k + 1] = std::max({ a[0][k], a[1][k], a[2][k] }) + 1e-12;
+      }
+      // Each pair once: the other triangle later in the groups' order.
+      for (size_t h = g; h < this->Groups.size(); ++h)
+      {
+        const Group& other = this->Groups[h];
+        bool overlap = true;
+        for (int k = 0; k < 3; ++k)
+        {
+          overlap = overlap && box[2 * k] <= other.Bounds[2 * k + 1] &&
+            box[2 * k + 1] >= other.Bounds[2 * k];
+        }
+        if (!overlap)
+        {
+          continue;
+        }
+        other.Locator->FindCellsWithinBounds(box, candidates);
+        const vtkIdType* otherCorners = other.Corners->GetPointer(0);
+        for (vtkIdType c = 0, n = candidates->GetNumberOfIds(); c < n; ++c)
+        {
+          const vtkIdType j = candidates->GetId(c);
+          if (h == g && j <= i)
+          {
+            continue;
+          }
+          const double* b[3] = { other.Coordinates + 3 * otherCorners[3 * j],
+            other.Coordinates + 3 * otherCorners[3 * j + 1],
+            other.Coordinates + 3 * otherCorners[3 * j + 2] };
+          // Neighbours (a corner at the same coordinates) meet along their shared edge or point.
+          bool neighbours = false;
+          for (int u = 0; u < 3 && !neighbours; ++u)
+          {
+            for (int v = 0; v < 3 && !neighbours; ++v)
+            {
+              neighbours = a[u][0] == b[v][0] && a[u][1] == b[v][1] && a[u][2] == b[v][2];
+            }
+          }
+          Crossing crossing;
+          double p[3], q[3];
+          if (!neighbours && CrossTriangles(a, b, p, q, crossing.Angle))
+          {
+            for (int k = 0; k < 3; ++k)
+            {
+              crossing.A[k] = p[k] / this->FrameScale + this->FrameCenter[k];
+              crossing.B[k] = q[k] / this->FrameScale + this->FrameCenter[k];
+            }
+            this->Crossings.push_back(crossing);
+          }
+        }
+      }
+    }
+  }
+  return this->Crossings;
 }
 
 bool vtkNPROccluders::Hidden(const double fromWorld[3], const double toWorld[3],

@@ -61,7 +61,19 @@ public:
   bool Hidden(const double from[3], const double to[3], vtkIdList* candidates,
     const vtkIdType* ignored = nullptr, int ignoredCount = 0) const;
 
+  // Where two triangles that share no corner (by coordinates) cross each other: the segment
+  // in world coordinates and the angle between their planes (degrees, 0 to 90). Computed on the
+  // first call after Build(), then kept.
+  struct Crossing
+  {
+    double A[3], B[3];
+    double Angle;
+  };
+  const std::vector<Crossing>& GetCrossings();
+
 private:
+  std::vector<Crossing> Crossings;
+  bool CrossingsValid = false;
   double FrameCenter[3] = { 0.0, 0.0, 0.0 }; // the locators' frame: (world - centre) x scale
   double FrameScale = 1.0;
   std::vector<double> Points; // every scene point in that frame, for the ignored points

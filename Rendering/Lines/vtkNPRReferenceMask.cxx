@@ -144,6 +144,7 @@ bool vtkNPRReferenceMask::Update()
   settings.NonManifoldEdges = this->NonManifoldEdges;
   settings.CreaseAngle = this->CreaseAngle;
   settings.SmoothContours = this->SmoothContours;
+  settings.Intersections = this->Creases && this->IntersectionCurves;
   internal.Scene.Update(this->Renderer, settings, this->TrianglesPerLocator);
   const std::vector<vtkNPRSceneLines::Segment>& segments = internal.Scene.GetSegments();
   internal.FeatureEdges = static_cast<vtkIdType>(segments.size());
@@ -255,6 +256,7 @@ void vtkNPRReferenceMask::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
   os << indent << "Silhouettes: " << this->Silhouettes << "\n";
   os << indent << "Creases: " << this->Creases << "\n";
+  os << indent << "IntersectionCurves: " << this->IntersectionCurves << "\n";
   os << indent << "Boundaries: " << this->Boundaries << "\n";
   os << indent << "NonManifoldEdges: " << this->NonManifoldEdges << "\n";
   os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";

@@ -40,9 +40,8 @@
  * double precision; positions are rounded to the pixel that contains the sample (a line pixel
  * lies within half a pixel diagonal, 0.71 px, of the exact visible line); a visible piece
  * shorter than SampleSpacing between two samples can be missed, and a line crossing a pixel's
- * corner by less than that can be missed in that pixel. Not included: intersection curves
- * between interpenetrating objects (they are edges of no mesh), lines of translucent actors (and
- * translucent actors do not hide lines, as they do not in vtkNPREdgePass's G-buffer), props
+ * corner by less than that can be missed in that pixel. Not included: lines of translucent actors
+ * (and translucent actors do not hide lines, as they do not in vtkNPREdgePass's G-buffer), props
  * that are not vtkActors with a vtkPolyDataMapper (volumes, images, glyph mappers), mapper
  * clipping planes, and parts of actors in assemblies. Polygons are split into triangle fans
  * for the visibility test (exact for convex planar polygons).
@@ -121,6 +120,20 @@ public:
   vtkSetMacro(NonManifoldEdges, bool);
   vtkGetMacro(NonManifoldEdges, bool);
   vtkBooleanMacro(NonManifoldEdges, bool);
+  ///@}
+
+  ///@{
+  /**
+   * With creases on, also the curves where two surfaces cross at more than CreaseAngle (on by
+   * default): parts of one mesh that pass through each other (a boss through a housing, a
+   * cylinder through a plate) or two actors. They are edges of no mesh, but the image shows a
+   * crease there and the edge pass draws one. Found once per occlusion structure: every pair of
+   * triangles that share no corner and whose boxes overlap is intersected (the crossings' cost is
+   * part of GetLocatorTime()); in the mask's FeatureType they are CREASE | INTERSECTION.
+   */
+  vtkSetMacro(IntersectionCurves, bool);
+  vtkGetMacro(IntersectionCurves, bool);
+  vtkBooleanMacro(IntersectionCurves, bool);
   ///@}
 
   ///@{
@@ -238,6 +251,7 @@ protected:
   bool Boundaries = true;
   bool NonManifoldEdges = true;
   double CreaseAngle = 30.0;
+  bool IntersectionCurves = true;
   bool SmoothContours = false;
   double SampleSpacing = 0.25;
   double OcclusionEpsilon = 1e-6;

@@ -293,5 +293,23 @@ void vtkNPRSceneLines::Update(
     this->LocatorTrianglesPerLocator = trianglesPerLocator;
     ++this->LocatorBuilds;
   }
+  // Where surfaces cross (parts of one mesh, or two actors), a crease of no mesh.
+  if (settings.Intersections)
+  {
+    for (const vtkNPROccluders::Crossing& crossing : this->Occluders.GetCrossings())
+    {
+      if (crossing.Angle > settings.CreaseAngle)
+      {
+        Segment segment;
+        std::copy_n(crossing.A, 3, segment.A);
+        std::copy_n(crossing.B, 3, segment.B);
+        segment.Type = vtkNPRFeatureLines::CREASE | vtkNPRFeatureLines::INTERSECTION;
+        segment.NodeA = nodeOffset++;
+        segment.NodeB = nodeOffset++;
+        std::fill_n(segment.Triangle, 3, -1);
+        this->Segments.push_back(segment);
+      }
+    }
+  }
   this->LocatorTime = Seconds(start);
 }

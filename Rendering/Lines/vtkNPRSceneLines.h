@@ -59,6 +59,7 @@ public:
   {
     bool Silhouettes = true, Creases = true, Boundaries = true, NonManifoldEdges = true;
     bool SmoothContours = false;
+    bool Intersections = false; // crossing surfaces at more than CreaseAngle, as creases
     double CreaseAngle = 30.0;
   };
   // A feature edge in world coordinates; Nodes identify its end points across the scene (the

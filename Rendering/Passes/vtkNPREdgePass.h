@@ -110,7 +110,7 @@ public:
   ///@{
   /**
    * Suggestive contours: off by default, black. The threshold is the second derivative of n.v
-   * along the receding direction, per pixel squared (default 0.002, clamped to [1e-4, 1]): a
+   * along the receding direction, per pixel squared (default 0.01, clamped to [1e-4, 1]): a
    * valley of n.v whose value rises by half of it one pixel to each side. No effect with the
    * packed encodings.
    */
@@ -315,7 +315,7 @@ protected:
   double SilhouetteColor[3] = { 0.0, 0.0, 0.0 };
   bool SmoothSilhouettes = false;
   bool SuggestiveContours = false;
-  double SuggestiveContourThreshold = 0.002;
+  double SuggestiveContourThreshold = 0.01;
   double SuggestiveContourColor[3] = { 0.0, 0.0, 0.0 };
   bool Creases = true;
   double CreaseAngle = 30.0;

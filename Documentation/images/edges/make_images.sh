@@ -35,3 +35,6 @@ render contour_side_both.png Testing/Data/bunny.ply Testing/Data/rotor.ply --sty
 
 # A colour per line type.
 render colors.png Testing/Data/bunny.ply Testing/Data/rotor.ply --style edges --size 480x360 --azimuth -20 --zoom 1.3 --line-width 2 --silhouette-color 0.9,0,0 --crease-color 0,0.35,1 --contour-color 0,0.65,0
+
+# Suggestive contours, red, with silhouettes and creases.
+render suggestive.png Testing/Data/bunny.ply --style edges --size 480x360 --lines silhouettes,creases,suggestive --suggestive-color 0.85,0,0
