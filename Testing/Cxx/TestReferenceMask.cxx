@@ -4,7 +4,8 @@
 // an independent projection of its visible edges, in perspective and parallel; occlusion by
 // another object; what is rebuilt between updates; the same lines and mask far from the origin
 // and at any scale; the grouping of the occluders changes nothing; a sphere's smooth contours
-// against its analytic outline, without gaps, and still hidden by real occluders.
+// against its analytic outline, without gaps, and still hidden by real occluders; the curves
+// where surfaces cross.
 //
 // usage: TestReferenceMask CASE [DATA_DIR]   (CASE: see the table at the end of this file)
 #include "nprFeatureLineTesting.h"
@@ -629,6 +630,72 @@ int MaskSmoothOcclusion()
   NPR_CHECK(behind == alone, "the sphere behind shows " << behind - alone << " pixels");
   return nprTestResult();
 }
+// ---- Where surfaces cross: a post through a plate ----
+// The post's sides cross the plate's top face along a square (at 90 degrees): creases of no mesh,
+// in the mask with IntersectionCurves on (the default), not with it off or under a crease angle
+// above 90 degrees.
+int MaskIntersections()
+{
+  MaskScene scene(400, 300);
+  vtkNew<vtkCubeSource> plate;
+  plate->SetXLength(2.0);
+  plate->SetYLength(0.2);
+  plate->SetZLength(2.0);
+  vtkNew<vtkCubeSource> post;
+  post->SetXLength(0.4);
+  post->SetYLength(1.6);
+  post->SetZLength(0.4);
+  nprAddActor(scene.Renderer, plate->GetOutputPort());
+  nprAddActor(scene.Renderer, post->GetOutputPort());
+  vtkCamera* camera = scene.Camera();
+  camera->SetPosition(2.5, 3.0, 4.0);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetClippingRange(1.0, 20.0);
+  scene.Reference->SilhouettesOff();
+  scene.Reference->BoundariesOff();
+  // The square's two edges that face the camera, sampled away from their ends (where the post's
+  // and the plate's own creases come near).
+  auto pixelsOnSquare = [&](vtkImageData* mask, int& samples)
+  {
+    int found = 0;
+    samples = 0;
+    for (int edge = 0; edge < 2; ++edge)
+    {
+      for (int i = 2; i <= 18; ++i)
+      {
+        const double s = -0.2 + 0.4 * i / 20.0;
+        const Point point = edge == 0 ? Point{ 0.2, 0.1, s } : Point{ s, 0.1, 0.2 };
+        const auto display = scene.Project(point);
+        bool near = false;
+        for (int dy = -1; dy <= 1; ++dy)
+        {
+          for (int dx = -1; dx <= 1; ++dx)
+          {
+            near = near ||
+              nprPixel(mask, static_cast<int>(display[0]) + dx, static_cast<int>(display[1]) + dy) >
+                0;
+          }
+        }
+        found += near ? 1 : 0;
+        ++samples;
+      }
+    }
+    return found;
+  };
+  int samples = 0;
+  const int on = pixelsOnSquare(scene.Mask(), samples);
+  scene.Reference->IntersectionCurvesOff();
+  const int off = pixelsOnSquare(scene.Mask(), samples);
+  scene.Reference->IntersectionCurvesOn();
+  scene.Reference->SetCreaseAngle(95.0);
+  const int steep = pixelsOnSquare(scene.Mask(), samples);
+  std::cout << "samples of the crossing square with a line pixel: " << on << " of " << samples
+            << " (IntersectionCurves off: " << off << ", crease angle 95: " << steep << ")\n";
+  NPR_CHECK(on == samples, "the crossing is missing from the mask");
+  NPR_CHECK(off == 0 && steep == 0, "a crossing drawn where it should not be");
+  return nprTestResult();
+}
 }
 
 int main(int argc, char* argv[])
@@ -642,6 +709,7 @@ int main(int argc, char* argv[])
     { "mask-locator-groups", MaskLocatorGroups },
     { "mask-smooth-sphere", MaskSmoothSphere },
     { "mask-smooth-occlusion", MaskSmoothOcclusion },
+    { "mask-intersections", MaskIntersections },
   };
   return nprRunTestCase(argc, argv, cases);
 }
