@@ -4,8 +4,9 @@
 // vtkNPREdgePass, step 2: widens and anti-aliases the line image, composites it over the shaded
 // G-buffer colour and writes the depth sprite (gl_FragDepth).
 //
-// The line image (r silhouettes, g creases, b contours, a suggestive contours) is filtered with a separable Gaussian (NPR_TAPS bilinear taps). Across a straight
-// one-pixel line the filtered value falls off as P(d) = g(d); the pixel's coverage of a line of
+// The line image (r silhouettes, g creases, b contours, a suggestive contours) is filtered with a
+// separable Gaussian (NPR_TAPS bilinear taps). Across a straight one-pixel line the filtered
+// value falls off as P(d) = g(d); the pixel's coverage of a line of
 // width w is then 0.5 + (P - P(w/2)) / |P'(w/2)|, which is clamp(w/2 + 0.5 - d, 0, 1) near the
 // line's border: a line of the requested width with one pixel of anti-aliasing, and no staircase
 // since the filter averages the staircase of the one-pixel line.

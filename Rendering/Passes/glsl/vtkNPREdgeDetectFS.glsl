@@ -3,10 +3,11 @@
 //VTK::System::Dec
 // vtkNPREdgePass, step 1: line pixels from the G-buffer's geometry attachment.
 // Output: r = silhouette, g = crease, b = object contour, a = suggestive contour strength (0..1)
-// on the pixels the line belongs to. One texel fetch per tap, five taps (a cross): fetches are the cost on llvmpipe.
-// NPR_ENCODING says how the G-buffer stores the geometry (vtkNPRGBufferPass::GeometryEncoding):
-// 0 float (depth, 12-bit octahedral normal packed in one float, id, face normal likewise), 1 half (depth / far,
-// octahedral normal in two channels, id), 2 and 3 the packed 8- and 16-bit depth+normal value.
+// on the pixels the line belongs to. One texel fetch per tap, five taps (a cross): fetches are
+// the cost on llvmpipe. NPR_ENCODING says how the G-buffer stores the geometry
+// (vtkNPRGBufferPass::GeometryEncoding): 0 float (depth, 12-bit octahedral normal packed in one
+// float, id, the face normal packed likewise), 1 half (depth / far, octahedral normal in two
+// channels, id), 2 and 3 the packed 8- and 16-bit depth+normal value.
 //NPR::Defines
 in vec2 texCoord;
 uniform sampler2D geometryTexture; // view depth (> 0, 0 = background), normal, id
@@ -214,7 +215,8 @@ void main()
   // surface recedes: the gradient of depth. The second derivative of n.v along it must exceed the
   // threshold (its strength) and the first derivative vanish within half a pixel.
   if (covered0 && facing0 > 0.0 && sameObject[0] && sameObject[1] && sameObject[2] &&
-    sameObject[3] && inside[0] && inside[1] && inside[2] && inside[3] && abs(step2) <= silhouetteThreshold)
+    sameObject[3] && inside[0] && inside[1] && inside[2] && inside[3] &&
+    abs(step2) <= silhouetteThreshold)
   {
     vec2 recede = vec2(g[0].x - g[1].x, g[2].x - g[3].x);
     float recedeLength = length(recede);
