@@ -13,7 +13,7 @@
  *   float), b = the object id (1-based index of the prop in the frame).
  *
  * Only what the effects need is allocated and written: the geometry attachment is R32F when
- * neither normals nor ids are wanted, RG32F with normals, RGBA32F with ids.
+ * neither normals nor ids are wanted, RG32F with normals, RGBA32F with ids or face normals.
  *
  * GeometryEncoding chooses how the geometry attachment stores this (for measuring what
  * precision the lines need; vtkNPREdgePass reads each):
