@@ -24,7 +24,8 @@ Lines (--style edges, toon+edges, sketch and drawing):
   --smooth-silhouettes     silhouettes also where the shading normal turns away between
                            two pixels (the smooth surface's contour)
   --crease-angle DEG       normal angle that makes a crease, 1..179 (default 30)
-  --shading-creases        creases between the shading normals instead of the faces'
+  --face-creases           creases between the faces' own normals instead of the shading
+                           normals (the mesh's creases, for CAD parts)
   --suggestive-threshold X strength of a suggestive contour, 0.0001..1 (default 0.01)
   --contour-side SIDE      inside, outside or both (default inside)
   --line-width PX          line width in pixels, 0.5..16 (default 1.5)
@@ -133,9 +134,9 @@ bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
   {
     pass.SmoothSilhouettes = true;
   }
-  else if (arg == "--shading-creases")
+  else if (arg == "--face-creases")
   {
-    pass.FaceCreases = false;
+    pass.FaceCreases = true;
   }
   else if (arg == "--suggestive-threshold")
   {

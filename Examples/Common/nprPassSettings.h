@@ -32,7 +32,7 @@ struct nprPassSettings
   double CreaseColor[3] = { 0.0, 0.0, 0.0 };
   double ContourColor[3] = { 0.0, 0.0, 0.0 };
   double SuggestiveContourColor[3] = { 0.0, 0.0, 0.0 };
-  bool FaceCreases = true;
+  bool FaceCreases = false;
   bool AntiAliasing = true;
   int Encoding = vtkNPREdgePass::FLOAT;
   double PackedThreshold = 0.1;

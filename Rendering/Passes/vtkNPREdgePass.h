@@ -21,6 +21,13 @@
  *   no threshold: it draws contours whose depth step is too small for SilhouetteThreshold (an
  *   interior contour towards its end, a fold seen nearly edge-on), and nothing on front-facing
  *   smooth regions, where n.v stays positive.
+ * - Creases: the angle between the normals of neighbouring pixels of one object exceeds
+ *   CreaseAngle (degrees). Lines lie on the side facing the viewer more. The normals compared
+ *   are the shading normals, or with FaceCreases (off by default, FLOAT encoding) the faces' own
+ *   (the G-buffer's face normals), so that creases are those of the mesh also where the shading
+ *   normals are averaged across an edge sharper than the angle (where vtkPolyDataNormals leaves
+ *   a point unsplit because the chain of sharp edges through it is broken, as along a crease
+ *   whose angle wavers about the threshold).
  * - Suggestive contours (DeCarlo et al. 2003; off by default, FLOAT and HALF encodings): where
  *   n.v, positive, has a minimum along the direction in which the surface recedes (the image
  *   gradient of depth, the view direction projected onto the surface): its first derivative
@@ -148,10 +155,13 @@ public:
 
   ///@{
   /**
-   * Creases between the faces' own normals (on by default; FLOAT encoding only, where the
-   * G-buffer then stores a face normal per pixel beside the shading normal) instead of between
-   * the shading normals (off: an edge whose shading normals are averaged draws no crease, as on
-   * a coarse mesh shaded smooth on purpose).
+   * Creases between the faces' own normals (off by default; FLOAT encoding only, where the
+   * G-buffer then stores a face normal per pixel beside the shading normal, RGBA32F) instead of
+   * between the shading normals. On: the mesh's creases, as vtkNPRFeatureLines and
+   * vtkNPRReferenceMask find them, also where the shading normals are averaged across a sharp
+   * edge (a CAD part whose crease angle wavers about the threshold). Off: an edge whose shading
+   * normals are averaged draws no crease, which is what a surface shaded smooth across its
+   * facets on purpose needs (an isosurface with gradient normals, a coarse mesh).
    */
   vtkSetMacro(FaceCreases, bool);
   vtkGetMacro(FaceCreases, bool);
@@ -320,7 +330,7 @@ protected:
   bool Creases = true;
   double CreaseAngle = 30.0;
   double CreaseColor[3] = { 0.0, 0.0, 0.0 };
-  bool FaceCreases = true;
+  bool FaceCreases = false;
   bool Contours = true;
   int ContourSide = INSIDE;
   double ContourColor[3] = { 0.0, 0.0, 0.0 };

@@ -147,12 +147,12 @@ std::vector<SpeedMethod> MakeMethods()
   };
   methods.push_back({ "edges-silhouettes", "vtkNPRPass edges, silhouettes only", edgesWith(true) });
   methods.push_back({ "edges-floor", "vtkNPRPass edges, every line type off", edgesWith(false) });
-  // What the optional line tests cost: creases from the shading normals (the G-buffer without
-  // face normals, as before they were added), smooth silhouettes, suggestive contours.
-  auto shadingCreases = NPRStyle("edges");
-  vtkNPRPass::SafeDownCast(shadingCreases)->GetEdgePass()->FaceCreasesOff();
+  // What the optional line tests cost: creases from the face normals (the G-buffer's geometry
+  // attachment RGBA32F instead of RG32F), smooth silhouettes, suggestive contours.
+  auto faceCreases = NPRStyle("edges");
+  vtkNPRPass::SafeDownCast(faceCreases)->GetEdgePass()->FaceCreasesOn();
   methods.push_back(
-    { "edges-shading-creases", "vtkNPRPass edges, creases from shading normals", shadingCreases });
+    { "edges-face-creases", "vtkNPRPass edges, creases from face normals", faceCreases });
   auto smooth = NPRStyle("edges");
   vtkNPRPass::SafeDownCast(smooth)->GetEdgePass()->SmoothSilhouettesOn();
   methods.push_back({ "edges-smooth", "vtkNPRPass edges, smooth silhouettes on", smooth });

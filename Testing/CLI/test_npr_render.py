@@ -161,9 +161,9 @@ rc, _, err = run(bunny, "--style", "edges", "--lines", "suggestive", "--size", "
                  out("suggestive.png"))
 check(rc == 0 and max(read_png(out("suggestive.png"))[3]) > 0,
       "--lines suggestive draws suggestive contours (%s)" % err.strip())
-rc, _, err = run(bunny, "--style", "edges", "--smooth-silhouettes", "--shading-creases", "--size", "160x120",
+rc, _, err = run(bunny, "--style", "edges", "--smooth-silhouettes", "--face-creases", "--size", "160x120",
                  "--edge-mask", out("smooth.png"))
-check(rc == 0 and max(read_png(out("smooth.png"))[3]) > 0, "--smooth-silhouettes --shading-creases (%s)" % err.strip())
+check(rc == 0 and max(read_png(out("smooth.png"))[3]) > 0, "--smooth-silhouettes --face-creases (%s)" % err.strip())
 rc, _, _ = run(rotor, "--style", "edges", "--lines", "silhouettes", "--line-width", "4", "--size", "160x120",
                "--azimuth", "30", "--edge-mask", out("wide.png"))
 wide = sum(v for v in read_png(out("wide.png"))[3]) / 255.0

@@ -152,8 +152,8 @@ int Channels()
       "geometry attachment has " << (geometry ? geometry->GetComponents() : 0)
                                  << " components, expected " << c.Components);
   }
-  scene.Edges()->SetSmoothSilhouettes(true);
-  scene.Edges()->SetFaceCreases(true);
+  scene.Edges()->SetSmoothSilhouettes(false);
+  scene.Edges()->SetFaceCreases(false);
   // The shaded style makes no G-buffer at all.
   const int draws = gbuffer->GetNumberOfGeometryDraws();
   scene.Pass->SetStyleToShaded();

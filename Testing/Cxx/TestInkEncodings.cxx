@@ -277,14 +277,14 @@ int EncodingsCube()
   return nprTestResult();
 }
 
-// The geometry attachment's storage: RGBA32F (creases: the face normal too), RGBA16F, R8, R16.
+// The geometry attachment's storage: RG32F, RGBA16F, R8, R16.
 int EncodingStorage()
 {
   Scene scene(64, 64);
   AddCubeSeenFromCorner(scene, false);
   scene.Pass->SetStyleToEdges();
   scene.Edges()->ContoursOff(); // one prop: no ids anyway
-  const std::map<int, unsigned int> formats = { { vtkNPREdgePass::FLOAT, GL_RGBA32F },
+  const std::map<int, unsigned int> formats = { { vtkNPREdgePass::FLOAT, GL_RG32F },
     { vtkNPREdgePass::HALF, GL_RGBA16F }, { vtkNPREdgePass::PACKED8, GL_R8 },
     { vtkNPREdgePass::PACKED16, GL_R16 } };
   for (const auto& entry : formats)

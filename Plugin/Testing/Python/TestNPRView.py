@@ -120,6 +120,23 @@ if not args.mpi:
           "drawing: the faces are white (%.3f, shaded %.3f)" % (white, shaded_white))
     check(dark(drawing) > 1500, "drawing draws lines")
     check(grey(hidden) > grey(drawing) + 500, "drawing: hidden lines appear in grey")
+    # Suggestive contours in red (their own colour) on the edges style; smooth silhouettes and
+    # creases from the face normals are accepted and still draw lines.
+    view.SuggestiveContours = 1
+    view.SuggestiveContourColor = [1, 0, 0]
+    view.SuggestiveContourThreshold = 0.001  # the wavelet's isosurface has shallow valleys
+    _, _, suggestive = render("Edges", False, "-suggestive")
+    view.SuggestiveContours = 0
+    view.SuggestiveContourThreshold = 0.01
+    red = int(((suggestive[:, :, 0] > 150) & (suggestive[:, :, 1] < 80)).sum())
+    print("suggestive contours: %d red pixels" % red)
+    check(red > 20, "the view draws suggestive contours in their colour")
+    view.SmoothSilhouettes = 1
+    view.FaceCreases = 1
+    _, _, options = render("Edges", False, "-smooth")
+    view.SmoothSilhouettes = 0
+    view.FaceCreases = 0
+    check(dark(options) > dark(shaded) + 3000, "edges with smooth silhouettes draws lines")
     # The view's lines as a vector file (vtkNPRDrawingExporter through the view's command).
     svg = os.path.join(args.output_dir, "drawing.svg")
     if os.path.exists(svg):
