@@ -12,6 +12,7 @@
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNPROccluders.h" // for vtkNPRForEachTriangle
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -280,28 +281,7 @@ void vtkNPRFeatureLines::Adjacency::ComputeContours(
             static_cast<std::uint32_t>(c) });
       }
     };
-    auto iterator = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
-    {
-      vtkIdType size;
-      const vtkIdType* ids;
-      iterator->GetCurrentCell(size, ids);
-      for (vtkIdType k = 1; k + 1 < size; ++k)
-      {
-        addTriangle(ids[0], ids[k], ids[k + 1]);
-      }
-    }
-    iterator = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
-    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
-    {
-      vtkIdType size;
-      const vtkIdType* ids;
-      iterator->GetCurrentCell(size, ids);
-      for (vtkIdType k = 0; k + 2 < size; ++k)
-      {
-        addTriangle(ids[k + (k & 1)], ids[k + 1 - (k & 1)], ids[k + 2]);
-      }
-    }
+    vtkNPRForEachTriangle(input, addTriangle);
     this->TrianglesValid = true;
   }
   if (this->NormalsArray != normals || this->NormalsTime != normals->GetMTime())

@@ -176,29 +176,7 @@ void vtkNPROccluders::Build(const std::vector<vtkNPRMeshInstance>& actors, int t
       }
       triangles.insert(triangles.end(), { offset + a, offset + b, offset + c });
     };
-    // Polygons as fans, as the OpenGL mapper draws convex polygons; strips as their triangles.
-    auto iterator = vtk::TakeSmartPointer(state.Mesh->GetPolys()->NewIterator());
-    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
-    {
-      vtkIdType size;
-      const vtkIdType* ids;
-      iterator->GetCurrentCell(size, ids);
-      for (vtkIdType k = 1; k + 1 < size; ++k)
-      {
-        addTriangle(ids[0], ids[k], ids[k + 1]);
-      }
-    }
-    iterator = vtk::TakeSmartPointer(state.Mesh->GetStrips()->NewIterator());
-    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
-    {
-      vtkIdType size;
-      const vtkIdType* ids;
-      iterator->GetCurrentCell(size, ids);
-      for (vtkIdType k = 0; k + 2 < size; ++k)
-      {
-        addTriangle(ids[k], ids[k + 1], ids[k + 2]);
-      }
-    }
+    vtkNPRForEachTriangle(state.Mesh, addTriangle);
   }
 
   // The locators work in a frame centred on the scene and scaled to its size: VTK's static

@@ -5,8 +5,11 @@
 #ifndef vtkNPROccluders_h
 #define vtkNPROccluders_h
 
-#include "vtkSmartPointer.h" // for the groups
-#include "vtkType.h"         // for vtkIdType, vtkMTimeType
+#include "vtkCellArray.h"         // for vtkNPRForEachTriangle
+#include "vtkCellArrayIterator.h" // for vtkNPRForEachTriangle
+#include "vtkPolyData.h"          // for vtkNPRForEachTriangle
+#include "vtkSmartPointer.h"      // for the groups
+#include "vtkType.h"              // for vtkIdType, vtkMTimeType
 
 #include <array>  // for the matrices
 #include <vector> // for the groups
@@ -28,6 +31,36 @@ inline void vtkNPRTransformPoint(const double m[16], const double x[3], double o
   for (int r = 0; r < 3; ++r)
   {
     out[r] = h[r] / h[3];
+  }
+}
+
+// Calls add(a, b, c) with the point ids of each triangle of the mesh: its polygons as fans (as
+// the OpenGL mapper draws convex polygons), its strips' triangles in the strip's winding. The ids
+// are the cells' as they are: the caller checks their range.
+template <typename Add>
+void vtkNPRForEachTriangle(vtkPolyData* mesh, Add&& add)
+{
+  auto iterator = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    iterator->GetCurrentCell(size, ids);
+    for (vtkIdType k = 1; k + 1 < size; ++k)
+    {
+      add(ids[0], ids[k], ids[k + 1]);
+    }
+  }
+  iterator = vtk::TakeSmartPointer(mesh->GetStrips()->NewIterator());
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    iterator->GetCurrentCell(size, ids);
+    for (vtkIdType k = 0; k + 2 < size; ++k)
+    {
+      add(ids[k + (k & 1)], ids[k + 1 - (k & 1)], ids[k + 2]);
+    }
   }
 }
 

@@ -137,7 +137,7 @@ int Channels()
     scene.Edges()->SetCreases(c.Creases);
     scene.Edges()->SetContours(c.Contours);
     scene.Edges()->SetSmoothSilhouettes(c.Smooth);
-    scene.Edges()->SetFaceCreases(c.FaceNormals || !c.Creases);
+    scene.Edges()->SetFaceCreases(c.FaceNormals);
     scene.Render();
     vtkTextureObject* geometry = gbuffer->GetGeometryTexture();
     NPR_CHECK(gbuffer->GetWritesNormals() == c.Normals,

@@ -19,6 +19,16 @@ vec3 nprFragmentPositionVC()
   return p.xyz / p.w;
 }
 
+// The unit face normal from the derivatives of the view-space position (exact within a
+// triangle), turned towards the viewer; (0, 0, 1) where they vanish. The derivatives are made
+// unit first: at tiny scales their cross product underflows.
+vec3 nprFaceNormal(vec3 positionVC, vec3 toViewer)
+{
+  vec3 dx = dFdx(positionVC), dy = dFdy(positionVC);
+  vec3 n = cross(dx / max(length(dx), 1e-37), dy / max(length(dy), 1e-37));
+  return dot(n, n) > 1e-12 ? normalize(n) * sign(dot(n, toViewer) + 1e-30) : vec3(0.0, 0.0, 1.0);
+}
+
 // Octahedral encoding of a unit vector: two coordinates in [-1, 1].
 vec2 nprOctahedral(vec3 n)
 {

@@ -43,19 +43,10 @@
 #else
     vec3 nprNormal = vec3(0.0);
 #endif
-    // The face normal, from the derivatives of the view-space position (exact within a
-    // triangle), turned towards the viewer.
-    // (The derivatives made unit first: at tiny scales their cross product underflows.)
-    vec3 nprDx = dFdx(nprPositionVC), nprDy = dFdy(nprPositionVC);
-    vec3 nprFaceNormal =
-      cross(nprDx / max(length(nprDx), 1e-37), nprDy / max(length(nprDy), 1e-37));
-    nprFaceNormal = dot(nprFaceNormal, nprFaceNormal) > 1e-12
-      ? nprFaceNormal * sign(dot(nprFaceNormal, nprToViewer) + 1e-30)
-      : vec3(0.0, 0.0, 1.0);
     // Unlit actors, lines, points and zero-length or NaN normals: the face normal.
     if (!(dot(nprNormal, nprNormal) > 1e-12))
     {
-      nprNormal = nprFaceNormal;
+      nprNormal = nprFaceNormal(nprPositionVC, nprToViewer);
     }
     nprNormal = normalize(nprNormal);
 #if NPR_ENCODING == 1
@@ -66,8 +57,8 @@
 #if NPR_WRITE_FACE_NORMALS
     // The face normal too, on the side of the interpolated one: creases are angles between faces,
     // as in the mesh, whatever the shading normals average across (vtkNPREdgePass).
-    nprGeometry.w =
-      nprPackNormal(normalize(nprFaceNormal) * sign(dot(nprFaceNormal, nprNormal) + 1e-30));
+    vec3 nprFace = nprFaceNormal(nprPositionVC, nprToViewer);
+    nprGeometry.w = nprPackNormal(nprFace * sign(dot(nprFace, nprNormal) + 1e-30));
 #endif
 #endif
 #if NPR_WRITE_OBJECT_IDS
