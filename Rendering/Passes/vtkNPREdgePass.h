@@ -14,6 +14,10 @@
  *   perspective and z for parallel cameras, relative to the pixel's depth: it vanishes on planes
  *   at any slant, so grazing faces draw no line. SilhouetteThreshold is the relative depth step
  *   that starts a line (0.005: a step of 0.5 % of the distance). Lines lie on the nearer side.
+ *   A fold seen nearly edge-on bends the depth as much as a step; one more depth fetch, on line
+ *   pixels only, tells them apart: a step bends the depth the other way, by the threshold, one
+ *   pixel beyond on its far side; a fold does not. (A step smaller than the far surface's own
+ *   depth change over a pixel fits a fold between the pixels too, and is taken for one.)
  *   With SmoothSilhouettes (off by default, FLOAT and HALF encodings), silhouettes also follow
  *   the contour of the smooth surface that the normals describe: where n.v, the interpolated
  *   normal against the direction to the eye (each pixel's own for perspective cameras), changes

@@ -2,13 +2,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The lines of the edge pass (vtkNPREdgePass over vtkNPRGBufferPass) where their place can be
 // stated: a cube's visible edges projected analytically, in perspective and parallel; no false
-// line on a plane seen at a grazing angle; the id contour between touching objects, and its
+// line on a plane seen at a grazing angle, nor on a shallow fold seen nearly edge-on (while a step
+// of that size is drawn); the id contour between touching objects, and its
 // sides; anti-aliasing, line width and DPI along a slanted silhouette.
 //
 // usage: TestEdgePassLines CASE [DATA_DIR]   (CASE: see the table at the end of this file)
 #include "nprTesting.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
+#include "vtkCleanPolyData.h"
 #include "vtkCubeSource.h"
 #include "vtkImageData.h"
 #include "vtkNPREdgePass.h"
@@ -195,6 +198,70 @@ int GrazingPlane()
   return nprTestResult();
 }
 
+// ---- A 15-degree fold seen nearly edge-on bends the depth as much as a step: no line ----
+// Seen from the eye, face A (n.v 0.31) runs down the screen to the fold, face B (n.v 0.05) on
+// from it, receding eight times as steeply. The depth's second difference at the fold is 2.5
+// times the silhouette threshold, but the surface is continuous and front-facing: the mesh has
+// no silhouette and no crease there. With a gap (B moved back by a relative depth step of 3 %)
+// the same place is a step, which must be drawn. (A step smaller than B's own depth change over
+// a pixel, 1.5 %, fits a fold between the pixels as well: the pass takes it for one.)
+int GrazingFold(bool parallel, bool gap)
+{
+  Scene scene(400, 300);
+  const double pi = std::acos(-1.0);
+  const double angleA = 18.0 * pi / 180.0; // between each face and the view direction
+  const double angleB = 3.0 * pi / 180.0;
+  const double back = gap ? 0.3 : 0.0;
+  vtkNew<vtkPlaneSource> faceA;
+  faceA->SetOrigin(-1, 0, 0);
+  faceA->SetPoint1(1, 0, 0);
+  faceA->SetPoint2(-1, 2 * std::sin(angleA), 2 * std::cos(angleA));
+  vtkNew<vtkPlaneSource> faceB;
+  faceB->SetOrigin(-1, 0, -back);
+  faceB->SetPoint1(1, 0, -back);
+  faceB->SetPoint2(-1, -2 * std::sin(angleB), -back - 2 * std::cos(angleB));
+  vtkNew<vtkAppendPolyData> both;
+  both->AddInputConnection(faceA->GetOutputPort());
+  both->AddInputConnection(faceB->GetOutputPort());
+  vtkNew<vtkCleanPolyData> merged; // one surface along the fold: the faces share its points
+  merged->SetInputConnection(both->GetOutputPort());
+  nprAddActor(scene.Renderer, merged->GetOutputPort(), Grey);
+  vtkCamera* camera = scene.Camera();
+  camera->SetPosition(0, 0, 10);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(14);
+  camera->SetParallelProjection(parallel);
+  camera->SetParallelScale(1.2);
+  camera->SetClippingRange(5, 15);
+  auto mask = scene.Mask();
+  const double foldLeft[3] = { -0.8, 0, 0 };
+  const double foldRight[3] = { 0.8, 0, 0 };
+  double left[2], right[2];
+  scene.Project(foldLeft, left);
+  scene.Project(foldRight, right);
+  long long near = 0;
+  for (int y = 0; y < 300; ++y)
+  {
+    for (int x = static_cast<int>(left[0]); x <= static_cast<int>(right[0]); ++x)
+    {
+      near += std::abs(y + 0.5 - left[1]) <= 3.0 && nprPixel(mask, x, y) > 0 ? 1 : 0;
+    }
+  }
+  const double length = right[0] - left[0];
+  std::cout << (gap ? "step" : "fold") << " at row " << left[1] << ", " << length
+            << " px long: " << near << " line pixels within 3 px\n";
+  if (gap)
+  {
+    NPR_CHECK(near >= 0.9 * length, "the step is drawn along only " << near << " pixels");
+  }
+  else
+  {
+    NPR_CHECK(near == 0, near << " line pixels on the fold");
+  }
+  return nprTestResult();
+}
+
 // ---- Two cubes touching face to face, seen straight on: only the id contour separates them ----
 int TouchingObjects()
 {
@@ -366,6 +433,10 @@ int main(int argc, char* argv[])
     { "cube", [] { return CubeEdges(false); } },
     { "cube-parallel", [] { return CubeEdges(true); } },
     { "grazing-plane", GrazingPlane },
+    { "grazing-fold", [] { return GrazingFold(false, false); } },
+    { "grazing-fold-parallel", [] { return GrazingFold(true, false); } },
+    { "grazing-step", [] { return GrazingFold(false, true); } },
+    { "grazing-step-parallel", [] { return GrazingFold(true, true); } },
     { "touching-objects", TouchingObjects },
     { "antialiasing", AntiAliasing },
   };

@@ -270,6 +270,10 @@ int ToonEdges()
   Scene scene(360, 300);
   const double color[3] = { 0.9, 0.6, 0.3 };
   ShowSphere(scene, color);
+  // Parallel, as in ToonBands: the darkest band is then a ring several pixels wide inside the
+  // silhouette (in perspective it is a pixel or two wide, under the line).
+  scene.Camera()->ParallelProjectionOn();
+  scene.Camera()->SetParallelScale(1.1);
   scene.Pass->SetStyleToToonEdges();
   scene.Toon()->SetNumberOfBands(3);
   scene.Render();

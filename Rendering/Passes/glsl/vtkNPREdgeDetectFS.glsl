@@ -126,34 +126,62 @@ void main()
   // screen space, so that it vanishes on planes at any slant (no lines on grazing faces). Its
   // sign says which side of a step this pixel is on: positive = the nearer side.
   float step2 = 0.0;
+  float a0 = 1.0;
+  float a[4] = float[4](0.0, 0.0, 0.0, 0.0);
+  float lapX = 0.0;
+  float lapY = 0.0;
+#if NPR_PERSPECTIVE
+  const float towardsNear = -1.0;
+#else
+  const float towardsNear = 1.0;
+#endif
   if (covered0)
   {
 #if NPR_PERSPECTIVE
-    float a0 = 1.0 / g0.x;
-    float a[4];
+    a0 = 1.0 / g0.x;
     for (int k = 0; k < 4; ++k)
     {
       a[k] = g[k].x > 0.0 ? 1.0 / g[k].x : 0.0;
     }
-    const float towardsNear = -1.0;
 #else
-    float a0 = g0.x;
-    float a[4];
+    a0 = g0.x;
     for (int k = 0; k < 4; ++k)
     {
       a[k] = g[k].x > 0.0 ? g[k].x : 1e6 * g0.x;
     }
-    const float towardsNear = 1.0;
 #endif
     // At the image border one neighbour is missing: that axis contributes nothing.
-    float lapX = (p.x > 0 && p.x < size.x - 1) ? a[0] + a[1] - 2.0 * a0 : 0.0;
-    float lapY = (p.y > 0 && p.y < size.y - 1) ? a[2] + a[3] - 2.0 * a0 : 0.0;
+    lapX = (p.x > 0 && p.x < size.x - 1) ? a[0] + a[1] - 2.0 * a0 : 0.0;
+    lapY = (p.y > 0 && p.y < size.y - 1) ? a[2] + a[3] - 2.0 * a0 : 0.0;
     step2 = towardsNear * (lapX + lapY) / a0;
   }
 
   float silhouette = 0.0;
 #if NPR_SILHOUETTES
   silhouette = smoothstep(silhouetteThreshold, 2.0 * silhouetteThreshold, step2);
+  if (silhouette > 0.0)
+  {
+    // A step or a kink? A surface that folds away seen nearly edge-on (a shallow crease, a fold
+    // past a contour's ending) bends the depth as much as a step does. Along the axis that bends
+    // most, towards the farther neighbour f, the second difference one pixel further on tells
+    // them apart: past a step it has the opposite sign (the far side's own bend), past a kink
+    // between the two pixels it has the same sign or none. One more fetch, on line pixels only.
+    // In "farther" units: b = -1/z (perspective) or z (parallel); background is farthest.
+    int f = towardsNear * lapX >= towardsNear * lapY ? 0 : 2;
+    f += towardsNear * a[f + 1] > towardsNear * a[f] ? 1 : 0;
+    ivec2 beyond = p + 2 * (f < 2 ? ivec2(f == 0 ? 1 : -1, 0) : ivec2(0, f == 2 ? 1 : -1));
+    if (all(greaterThanEqual(beyond, ivec2(0))) && all(lessThan(beyond, size)))
+    {
+      float depthBeyond = texelFetch(geometryTexture, beyond, 0).x;
+#if NPR_PERSPECTIVE
+      float aBeyond = depthBeyond > 0.0 ? 1.0 / depthBeyond : 0.0;
+#else
+      float aBeyond = depthBeyond > 0.0 ? depthBeyond : 1e6 * g0.x;
+#endif
+      float bendBeyond = towardsNear * (aBeyond + a0 - 2.0 * a[f]) / a0;
+      silhouette = bendBeyond < -silhouetteThreshold ? silhouette : 0.0;
+    }
+  }
 #endif
 
 #if NPR_FACING
