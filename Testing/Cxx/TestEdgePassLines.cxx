@@ -217,9 +217,9 @@ int GrazingFold(bool parallel, bool gap)
   faceA->SetPoint1(1, 0, 0);
   faceA->SetPoint2(-1, 2 * std::sin(angleA), 2 * std::cos(angleA));
   vtkNew<vtkPlaneSource> faceB;
-  faceB->SetOrigin(-1, 0, -back);
-  faceB->SetPoint1(1, 0, -back);
-  faceB->SetPoint2(-1, -2 * std::sin(angleB), -back - 2 * std::cos(angleB));
+  faceB->SetOrigin(-1, 0, -back); // wound as faceA: both normals towards the eye
+  faceB->SetPoint1(-1, -2 * std::sin(angleB), -back - 2 * std::cos(angleB));
+  faceB->SetPoint2(1, 0, -back);
   vtkNew<vtkAppendPolyData> both;
   both->AddInputConnection(faceA->GetOutputPort());
   both->AddInputConnection(faceB->GetOutputPort());

@@ -163,13 +163,16 @@ void main()
   {
     // A step or a kink? A surface that folds away seen nearly edge-on (a shallow crease, a fold
     // past a contour's ending) bends the depth as much as a step does. Along the axis that bends
-    // most, towards the farther neighbour f, the second difference one pixel further on tells
+    // most, towards the farther neighbour, the second difference one pixel further on tells
     // them apart: past a step it has the opposite sign (the far side's own bend), past a kink
     // between the two pixels it has the same sign or none. One more fetch, on line pixels only.
-    // In "farther" units: b = -1/z (perspective) or z (parallel); background is farthest.
-    int f = towardsNear * lapX >= towardsNear * lapY ? 0 : 2;
-    f += towardsNear * a[f + 1] > towardsNear * a[f] ? 1 : 0;
-    ivec2 beyond = p + 2 * (f < 2 ? ivec2(f == 0 ? 1 : -1, 0) : ivec2(0, f == 2 ? 1 : -1));
+    // towardsNear * a grows with the distance (-1/z or z); the background is farthest.
+    bool alongX = towardsNear * lapX >= towardsNear * lapY;
+    float aPlus = alongX ? a[0] : a[2];
+    float aMinus = alongX ? a[1] : a[3];
+    bool farIsMinus = towardsNear * aMinus > towardsNear * aPlus;
+    float aFar = farIsMinus ? aMinus : aPlus;
+    ivec2 beyond = p + (farIsMinus ? -2 : 2) * (alongX ? ivec2(1, 0) : ivec2(0, 1));
     if (all(greaterThanEqual(beyond, ivec2(0))) && all(lessThan(beyond, size)))
     {
       float depthBeyond = texelFetch(geometryTexture, beyond, 0).x;
@@ -178,7 +181,7 @@ void main()
 #else
       float aBeyond = depthBeyond > 0.0 ? depthBeyond : 1e6 * g0.x;
 #endif
-      float bendBeyond = towardsNear * (aBeyond + a0 - 2.0 * a[f]) / a0;
+      float bendBeyond = towardsNear * (aBeyond + a0 - 2.0 * aFar) / a0;
       silhouette = bendBeyond < -silhouetteThreshold ? silhouette : 0.0;
     }
   }
