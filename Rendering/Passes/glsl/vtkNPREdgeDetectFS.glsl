@@ -104,6 +104,17 @@ vec3 nprViewRay(ivec2 q)
   return viewRayOrigin + float(q.x) * viewRayPerPixelX + float(q.y) * viewRayPerPixelY;
 }
 
+// The depth operator's quantity, affine in screen space on planes: 1/z for perspective, z for
+// parallel projection. Background (depth 0) is farthest: 0, or a million times depth0.
+float nprAffineDepth(float depth, float depth0)
+{
+#if NPR_PERSPECTIVE
+  return depth > 0.0 ? 1.0 / depth : 0.0;
+#else
+  return depth > 0.0 ? depth : 1e6 * depth0;
+#endif
+}
+
 vec3 nprUnpackNormal(float code)
 {
   return nprUnpackOctahedral(vec2(floor(code / 4096.0), mod(code, 4096.0)) / 4095.0 * 2.0 - 1.0);
@@ -137,19 +148,11 @@ void main()
 #endif
   if (covered0)
   {
-#if NPR_PERSPECTIVE
-    a0 = 1.0 / g0.x;
+    a0 = nprAffineDepth(g0.x, g0.x);
     for (int k = 0; k < 4; ++k)
     {
-      a[k] = g[k].x > 0.0 ? 1.0 / g[k].x : 0.0;
+      a[k] = nprAffineDepth(g[k].x, g0.x);
     }
-#else
-    a0 = g0.x;
-    for (int k = 0; k < 4; ++k)
-    {
-      a[k] = g[k].x > 0.0 ? g[k].x : 1e6 * g0.x;
-    }
-#endif
     // At the image border one neighbour is missing: that axis contributes nothing.
     lapX = (p.x > 0 && p.x < size.x - 1) ? a[0] + a[1] - 2.0 * a0 : 0.0;
     lapY = (p.y > 0 && p.y < size.y - 1) ? a[2] + a[3] - 2.0 * a0 : 0.0;
@@ -175,12 +178,7 @@ void main()
     ivec2 beyond = p + (farIsMinus ? -2 : 2) * (alongX ? ivec2(1, 0) : ivec2(0, 1));
     if (all(greaterThanEqual(beyond, ivec2(0))) && all(lessThan(beyond, size)))
     {
-      float depthBeyond = texelFetch(geometryTexture, beyond, 0).x;
-#if NPR_PERSPECTIVE
-      float aBeyond = depthBeyond > 0.0 ? 1.0 / depthBeyond : 0.0;
-#else
-      float aBeyond = depthBeyond > 0.0 ? depthBeyond : 1e6 * g0.x;
-#endif
+      float aBeyond = nprAffineDepth(texelFetch(geometryTexture, beyond, 0).x, g0.x);
       float bendBeyond = towardsNear * (aBeyond + a0 - 2.0 * aFar) / a0;
       silhouette = bendBeyond < -silhouetteThreshold ? silhouette : 0.0;
     }
@@ -210,12 +208,12 @@ void main()
       facing[k] = -dot(NPR_NORMAL(g[k]), nprViewRay(p + offsets[k])) * rayScale;
     }
   }
-  bool sameObject[4]; // covered, of this pixel's object
+  bool ofObject[4]; // the neighbour is covered, by this pixel's object
   for (int k = 0; k < 4; ++k)
   {
-    sameObject[k] = covered0 && g[k].x > 0.0;
+    ofObject[k] = covered0 && g[k].x > 0.0;
 #if NPR_HAVE_OBJECT_IDS
-    sameObject[k] = sameObject[k] && NPR_ID(g[k]) == NPR_ID(g0);
+    ofObject[k] = ofObject[k] && NPR_ID(g[k]) == NPR_ID(g0);
 #endif
   }
   // The taps clamped at the image border repeat this pixel: they are no neighbours.
@@ -228,7 +226,7 @@ void main()
     for (int k = 0; k < 4; ++k)
     {
       bool line = false;
-      if (sameObject[k] && inside[k] && (facing0 > 0.0) != (facing[k] > 0.0))
+      if (ofObject[k] && inside[k] && (facing0 > 0.0) != (facing[k] > 0.0))
       {
         // n.v changes sign between this pixel and its neighbour: the contour runs between
         // them. Drawn on the pixel nearer the zero (ties: the front-facing one).
@@ -245,8 +243,8 @@ void main()
   // direction projected onto the surface. In the image that direction is the one in which the
   // surface recedes: the gradient of depth. The second derivative of n.v along it must exceed the
   // threshold (its strength) and the first derivative vanish within half a pixel.
-  if (covered0 && facing0 > 0.0 && sameObject[0] && sameObject[1] && sameObject[2] &&
-    sameObject[3] && inside[0] && inside[1] && inside[2] && inside[3] &&
+  if (covered0 && facing0 > 0.0 && ofObject[0] && ofObject[1] && ofObject[2] &&
+    ofObject[3] && inside[0] && inside[1] && inside[2] && inside[3] &&
     abs(step2) <= silhouetteThreshold)
   {
     vec2 recede = vec2(g[0].x - g[1].x, g[2].x - g[3].x);
