@@ -195,6 +195,31 @@ def check_contours(out):
           "contours.md has no table")
 
 
+def check_contours_orbit(args):
+    """--orbit turns the camera around the model: 360/DEG azimuths at each of the three
+    elevations, every view scored; it goes only with --contours and without --cameras."""
+    out = args.out + "-orbit"
+    shutil.rmtree(out, ignore_errors=True)
+    command = [args.npr_benchmark, "--quick", "--contours", "--orbit", "120", "--data", args.data,
+               "--out", out]
+    print(" ".join(command))
+    check(subprocess.run(command).returncode == 0, "--contours --orbit 120 failed")
+    rows = read_csv(os.path.join(out, "contours.csv"))
+    cameras = sorted({row["camera"] for row in rows})
+    expected = sorted("a%de%d" % (azimuth, elevation) for azimuth in (-180, -60, 60)
+                      for elevation in (20, 35, -15))
+    check(cameras == expected, "--orbit 120 cameras: %s" % cameras)
+    check(len(rows) == 9 * 8, "--orbit 120: %d rows, not 9 views x 8" % len(rows))
+    text = open(os.path.join(out, "contours.md")).read()
+    check("(9 views)" in text and "| 9/9 |" in text, "contours.md: the orbit's views not counted")
+    for bad in (["--orbit", "10"], ["--contours", "--cameras", "2", "--orbit", "10"],
+                ["--contours", "--orbit", "0"]):
+        result = subprocess.run([args.npr_benchmark, "--data", args.data, "--out", out] + bad,
+                                stderr=subprocess.PIPE, text=True)
+        check(result.returncode == 2 and "--orbit" in result.stderr,
+              "%s accepted or unclear: %d %s" % (bad, result.returncode, result.stderr))
+
+
 def check_speed_methods(args):
     """--methods picks methods (the plain frame always comes first); an unknown name is an error."""
     out = args.out + "-methods"
@@ -250,6 +275,7 @@ def main():
         check_speed_methods(args)
     elif args.contours:
         check_contours(args.out)
+        check_contours_orbit(args)
     else:
         check_benchmark(args.out)
     print("FAILED (%d failed checks)" % len(failures) if failures else "PASSED")

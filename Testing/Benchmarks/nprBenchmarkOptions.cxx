@@ -54,6 +54,9 @@ OUT/contours.csv and OUT/contours.md (default scenes cad,rotor,bunny,isosurface,
                      but box; --stress: cad,bunny)
   --methods LIST     method names, or the families edges, inked, objectlines (default all)
   --cameras N        the first N of the 3 cameras (default 3; --stress: 1)
+  --orbit DEG        --contours: instead of the cameras, a turn around each model: azimuth
+                     -180 to 180 every DEG degrees (1 to 120) at each camera's elevation
+                     (-15, 20, 35); --orbit 10 is 108 views
   --runs N           --speed: repeats of the whole measurement; the median of their medians
                      is reported (default 3)
   --line-width PX    line width of every method (default 1.5)
@@ -139,6 +142,10 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
         nprParseInteger(arg, arguments.Value(), 1, static_cast<int>(nprBenchmarkCameras().size()));
       camerasGiven = true;
     }
+    else if (arg == "--orbit")
+    {
+      options.OrbitStep = nprParseInteger(arg, arguments.Value(), 1, 120);
+    }
     else if (arg == "--runs")
     {
       options.Runs = nprParseInteger(arg, arguments.Value(), 1, 100);
@@ -192,6 +199,10 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
   if (options.Data.empty() || options.Out.empty())
   {
     throw nprUsageError("--data DIR and --out DIR are required (see --help)");
+  }
+  if (options.OrbitStep > 0 && (!options.Contours || camerasGiven))
+  {
+    throw nprUsageError("--orbit DEG goes with --contours, without --cameras");
   }
   if (options.DenseMesh.empty())
   {

@@ -19,6 +19,7 @@ struct nprBenchmarkOptions
   bool ScenesGiven = false;
   std::vector<std::string> Methods;
   int Cameras = 3;
+  int OrbitStep = 0; // --contours: > 0, the orbit's azimuth step instead of the cameras
   double LineWidth = 1.5;
   bool Quick = false;
   bool Stress = false;

@@ -334,6 +334,21 @@ const std::vector<nprBenchmarkCamera>& nprBenchmarkCameras()
   return cameras;
 }
 
+std::vector<nprBenchmarkCamera> nprBenchmarkOrbitCameras(int step)
+{
+  std::vector<nprBenchmarkCamera> cameras;
+  for (const nprBenchmarkCamera& preset : nprBenchmarkCameras())
+  {
+    for (int azimuth = -180; azimuth < 180; azimuth += step)
+    {
+      const int elevation = static_cast<int>(preset.Elevation);
+      cameras.push_back({ "a" + std::to_string(azimuth) + "e" + std::to_string(elevation),
+        static_cast<double>(azimuth), preset.Elevation });
+    }
+  }
+  return cameras;
+}
+
 void nprApplyBenchmarkCamera(vtkRenderer* renderer, const nprBenchmarkCamera& preset)
 {
   vtkCamera* camera = renderer->GetActiveCamera();

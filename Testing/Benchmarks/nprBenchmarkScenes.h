@@ -43,11 +43,14 @@ std::string nprBenchmarkSceneLines(const std::vector<nprBenchmarkScene>& scenes)
 // The benchmark's cameras: after ResetCamera, an azimuth and an elevation (degrees), perspective.
 struct nprBenchmarkCamera
 {
-  const char* Name;
+  std::string Name; // "a30e20"
   double Azimuth;
   double Elevation;
 };
 const std::vector<nprBenchmarkCamera>& nprBenchmarkCameras();
+// A turn around the model: azimuth -180 up to 180 (excluded) every step degrees, at each
+// elevation of nprBenchmarkCameras(); elevation by elevation.
+std::vector<nprBenchmarkCamera> nprBenchmarkOrbitCameras(int step);
 void nprApplyBenchmarkCamera(vtkRenderer* renderer, const nprBenchmarkCamera& camera);
 // The first count cameras for the report: "a30e20 (azimuth 30, elevation 20), ...".
 std::string nprBenchmarkCameraLine(int count);
