@@ -7,17 +7,15 @@
 #include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkNPRQuadProgram.h"
+#include "vtkNPRRenderTarget.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
-#include "vtkTexture.h"
 #include "vtkTextureObject.h"
-#include "vtkVersionMacros.h"
 
 #include "vtkNPREdgeCompositeFS.h"
 #include "vtkNPREdgeDetectFS.h"
@@ -108,7 +106,7 @@ struct vtkNPREdgePass::Internals
   vtkNPRQuadProgram Composite; // lines over the colour, or the mask
   vtkNPRQuadProgram Coverage;  // each type's coverage and depth, for vtkNPRSketchPass
   std::string CompositeSource;
-  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
+  vtkNPRRenderTarget Target;
   vtkTextureObject* LineTexture = nullptr;
   // What the line image was computed from: the G-buffer's content and the detection settings
   // (colours, width, anti-aliasing and CoverageOnly only change the composite).
@@ -117,12 +115,6 @@ struct vtkNPREdgePass::Internals
   bool LineImageValid = false;
   bool WarnedAboutEncoding = false;
   LineFilter Filter;
-  // The last composite, for frames in which nothing changed (KeepUnchangedComposite).
-  vtkNPRKeptImage Kept;
-  std::string CompositeKey; // what the last composite was drawn from; empty: not reusable
-  int FramesSinceUnchanged = KeepAfterUnchanged + 1;
-  // Keep a changed frame's composite while one of this many previous frames was unchanged.
-  static constexpr int KeepAfterUnchanged = 8;
 };
 
 vtkStandardNewMacro(vtkNPREdgePass);
@@ -140,39 +132,16 @@ vtkNPREdgePass::~vtkNPREdgePass()
   {
     this->Internal->LineTexture->Delete();
   }
-  if (this->Internal->Framebuffer)
-  {
-    this->Internal->Framebuffer->Delete();
-  }
 }
 
 const char* vtkNPREdgePass::GetEncodingName(int encoding)
 {
-  switch (encoding)
-  {
-    case FLOAT:
-      return "float";
-    case HALF:
-      return "half";
-    case PACKED8:
-      return "packed8";
-    case PACKED16:
-      return "packed16";
-    default:
-      return "unknown";
-  }
+  return vtkNPRGBufferPass::GetEncodingName(encoding);
 }
 
 int vtkNPREdgePass::GetEncodingFromName(const char* name)
 {
-  for (int encoding = FLOAT; name && encoding <= PACKED16; ++encoding)
-  {
-    if (strcmp(name, GetEncodingName(encoding)) == 0)
-    {
-      return encoding;
-    }
-  }
-  return -1;
+  return vtkNPRGBufferPass::GetEncodingFromName(name);
 }
 
 double vtkNPREdgePass::GetEffectiveLineWidth(vtkRenderer* renderer) const
@@ -180,35 +149,72 @@ double vtkNPREdgePass::GetEffectiveLineWidth(vtkRenderer* renderer) const
   return vtkNPREffectiveLineWidth(renderer, this->LineWidth);
 }
 
-void vtkNPREdgePass::Render(const vtkRenderState* state)
+vtkNPRGBufferPass* vtkNPREdgePass::GetGBuffer()
 {
-  this->Draw(state, this->CoverageOnly ? OutputMask : OutputComposite);
+  return this->GBufferPass;
+}
+
+bool vtkNPREdgePass::UpdateImages(const vtkRenderState* state)
+{
+  return !this->GetDrawsLines() || this->UpdateLineImage(state);
 }
 
 void vtkNPREdgePass::RenderLineCoverage(const vtkRenderState* state)
 {
-  this->Draw(state, OutputLineCoverage);
-}
-
-void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
-{
-  vtkOpenGLClearErrorMacro();
   this->NumberOfRenderedProps = 0;
   vtkNPRGBufferPass* gbuffer = this->GBufferPass;
-  if (!gbuffer || gbuffer->GetLastRenderWasSelection() || !gbuffer->GetHasContent())
+  if (!gbuffer || gbuffer->GetLastRenderWasSelection() || !gbuffer->GetHasContent() ||
+    !this->UpdateImages(state))
   {
-    return; // a picking render, or nothing was drawn
+    return;
   }
-  vtkRenderer* renderer = state->GetRenderer();
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  vtkOpenGLState* glState = window->GetState();
-  Internals& internal = *this->Internal;
-  vtkTextureObject* geometry = gbuffer->GetGeometryTexture();
-  const int width = geometry->GetWidth();
-  const int height = geometry->GetHeight();
-  const bool lines = this->GetDrawsLines();
+  // Plain values into the caller's target, from its origin; it has no depth buffer.
+  vtkOpenGLState* glState =
+    static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow())->GetState();
+  const int origin[2] = { 0, 0 };
+  int rect[4];
+  this->GetCompositeRectangle(state->GetRenderer(), rect);
+  vtkNPRCompositeState compositeState(glState);
+  compositeState.Apply(
+    origin, gbuffer->GetDepthTexture()->GetWidth(), gbuffer->GetDepthTexture()->GetHeight());
+  glState->vtkglScissor(rect[0], rect[1], rect[2] - rect[0] + 1, rect[3] - rect[1] + 1);
+  glState->vtkglDisable(GL_DEPTH_TEST);
+  glState->vtkglDepthMask(GL_FALSE);
+  glState->vtkglDisable(GL_BLEND);
+  if (this->DrawLines(state, origin, OutputLineCoverage))
+  {
+    this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+  }
+}
 
-  // ---- Step 1: the one-pixel line image, recomputed only when its inputs changed ----
+std::string vtkNPREdgePass::GetDetectDefines(int encoding) const
+{
+  vtkNPRGBufferPass* gbuffer = this->GBufferPass;
+  const bool packed = encoding == PACKED8 || encoding == PACKED16;
+  // n.v at each tap, for the smooth silhouettes and the suggestive contours.
+  const bool facing = !packed && gbuffer->GetWritesNormals() &&
+    ((this->Silhouettes && this->SmoothSilhouettes) || this->SuggestiveContours);
+  std::ostringstream defines;
+  defines << "#define NPR_ENCODING " << encoding << "\n#define NPR_PACKED_BLUR "
+          << (packed && this->PackedBlur ? 1 : 0) << "\n#define NPR_PERSPECTIVE "
+          << (gbuffer->GetPerspective() ? 1 : 0) << "\n#define NPR_SILHOUETTES "
+          << (this->Silhouettes ? 1 : 0) << "\n#define NPR_CREASES "
+          << (this->Creases && gbuffer->GetWritesNormals() ? 1 : 0) << "\n#define NPR_FACING "
+          << (facing ? 1 : 0) << "\n#define NPR_SMOOTH_SILHOUETTES "
+          << (facing && this->Silhouettes && this->SmoothSilhouettes ? 1 : 0)
+          << "\n#define NPR_SUGGESTIVE " << (facing && this->SuggestiveContours ? 1 : 0)
+          << "\n#define NPR_CONTOURS " << (this->Contours ? 1 : 0)
+          << "\n#define NPR_HAVE_OBJECT_IDS " << (gbuffer->GetWritesObjectIds() ? 1 : 0)
+          << "\n#define NPR_HAVE_FACE_NORMALS "
+          << (this->FaceCreases && gbuffer->GetWritesFaceNormals() ? 1 : 0)
+          << "\n#define NPR_CONTOUR_SIDE " << this->ContourSide << "\n";
+  return defines.str();
+}
+
+bool vtkNPREdgePass::UpdateLineImage(const vtkRenderState* state)
+{
+  vtkNPRGBufferPass* gbuffer = this->GBufferPass;
+  Internals& internal = *this->Internal;
   const int encoding = gbuffer->GetWrittenEncoding();
   if (encoding != this->Encoding && !internal.WarnedAboutEncoding)
   {
@@ -217,137 +223,131 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
       << GetEncodingName(this->Encoding) << ": set its GeometryEncoding to match");
     internal.WarnedAboutEncoding = true;
   }
-  const bool packed = encoding == PACKED8 || encoding == PACKED16;
-  // n.v at each tap, for the smooth silhouettes and the suggestive contours.
-  const bool facing = !packed && gbuffer->GetWritesNormals() &&
-    ((this->Silhouettes && this->SmoothSilhouettes) || this->SuggestiveContours);
-  std::ostringstream detectDefines;
-  detectDefines << "#define NPR_ENCODING " << encoding << "\n#define NPR_PACKED_BLUR "
-                << (packed && this->PackedBlur ? 1 : 0) << "\n#define NPR_PERSPECTIVE "
-                << (gbuffer->GetPerspective() ? 1 : 0) << "\n#define NPR_SILHOUETTES "
-                << (this->Silhouettes ? 1 : 0) << "\n#define NPR_CREASES "
-                << (this->Creases && gbuffer->GetWritesNormals() ? 1 : 0) << "\n#define NPR_FACING "
-                << (facing ? 1 : 0) << "\n#define NPR_SMOOTH_SILHOUETTES "
-                << (facing && this->Silhouettes && this->SmoothSilhouettes ? 1 : 0)
-                << "\n#define NPR_SUGGESTIVE " << (facing && this->SuggestiveContours ? 1 : 0)
-                << "\n#define NPR_CONTOURS " << (this->Contours ? 1 : 0)
-                << "\n#define NPR_HAVE_OBJECT_IDS " << (gbuffer->GetWritesObjectIds() ? 1 : 0)
-                << "\n#define NPR_HAVE_FACE_NORMALS "
-                << (this->FaceCreases && gbuffer->GetWritesFaceNormals() ? 1 : 0)
-                << "\n#define NPR_CONTOUR_SIDE " << this->ContourSide << "\n";
-  std::ostringstream detectSettings;
-  detectSettings << detectDefines.str() << this->SilhouetteThreshold << " " << this->CreaseAngle
-                 << " " << this->PackedThreshold << " " << this->SuggestiveContourThreshold;
-  if (lines &&
-    (!internal.LineImageValid || internal.LineImageVersion != gbuffer->GetContentVersion() ||
-      internal.LineImageSettings != detectSettings.str()))
+  const std::string defines = this->GetDetectDefines(encoding);
+  std::ostringstream settings;
+  settings << defines << this->SilhouetteThreshold << " " << this->CreaseAngle << " "
+           << this->PackedThreshold << " " << this->SuggestiveContourThreshold;
+  if (internal.LineImageValid && internal.LineImageVersion == gbuffer->GetContentVersion() &&
+    internal.LineImageSettings == settings.str())
   {
-    if (!internal.LineTexture)
-    {
-      internal.LineTexture =
-        vtkNPRNewTexture(window, vtkTextureObject::Linear, vtkTextureObject::ClampToEdge);
-      internal.LineTexture->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
-      internal.Framebuffer = vtkOpenGLFramebufferObject::New();
-      internal.Framebuffer->SetContext(window);
-    }
-    internal.LineTexture->Resize(width, height);
-
-    vtkShaderProgram* program =
-      internal.Detect.Ready(window, vtkNPREdgeDetectFS, detectDefines.str());
-    if (!program)
-    {
-      vtkErrorMacro("the line detection shader did not compile");
-      return;
-    }
-    geometry->Activate();
-    program->SetUniformi("geometryTexture", geometry->GetTextureUnit());
-    if (!packed)
-    {
-      program->SetUniformf("silhouetteThreshold", static_cast<float>(this->SilhouetteThreshold));
-      const double radians = vtkMath::RadiansFromDegrees(this->CreaseAngle);
-      program->SetUniformf("creaseAngle", static_cast<float>(radians));
-      program->SetUniformf("creaseRamp", static_cast<float>(std::min(0.0175, 0.25 * radians)));
-      program->SetUniformf(
-        "suggestiveThreshold", static_cast<float>(this->SuggestiveContourThreshold));
-      float rayOrigin[3], rayPerPixelX[3], rayPerPixelY[3];
-      gbuffer->GetViewRay(rayOrigin, rayPerPixelX, rayPerPixelY);
-      program->SetUniform3f("viewRayOrigin", rayOrigin);
-      program->SetUniform3f("viewRayPerPixelX", rayPerPixelX);
-      program->SetUniform3f("viewRayPerPixelY", rayPerPixelY);
-    }
-    else
-    {
-      // A texel's normalised value in units of one component's range (0..63 or 0..16383).
-      const double unit = encoding == PACKED8 ? 255.0 / 63.0 : 65535.0 / 16383.0;
-      program->SetUniformf("packedUnit", static_cast<float>(unit));
-      program->SetUniformf("packedThreshold", static_cast<float>(this->PackedThreshold));
-    }
-
-    vtkOpenGLState::ScopedglViewport viewportSaver(glState);
-    vtkOpenGLState::ScopedglEnableDisable depthTestSaver(glState, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(glState, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
-    glState->PushFramebufferBindings();
-    internal.Framebuffer->Bind();
-    internal.Framebuffer->AddColorAttachment(0, internal.LineTexture);
-    internal.Framebuffer->ActivateDrawBuffers(1);
-    internal.Framebuffer->StartNonOrtho(width, height);
-    glState->vtkglViewport(0, 0, width, height);
-    glState->vtkglDisable(GL_DEPTH_TEST);
-    glState->vtkglDisable(GL_BLEND);
+    return true;
+  }
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow());
+  vtkShaderProgram* program = internal.Detect.Ready(window, vtkNPREdgeDetectFS, defines);
+  if (!program)
+  {
+    vtkErrorMacro("the line detection shader did not compile");
+    return false;
+  }
+  vtkTextureObject* geometry = gbuffer->GetGeometryTexture();
+  const int width = geometry->GetWidth();
+  const int height = geometry->GetHeight();
+  if (!internal.LineTexture)
+  {
+    internal.LineTexture =
+      vtkNPRNewTexture(window, vtkTextureObject::Linear, vtkTextureObject::ClampToEdge);
+    internal.LineTexture->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+  }
+  internal.LineTexture->Resize(width, height);
+  geometry->Activate();
+  this->SetDetectUniforms(program, encoding);
+  {
+    vtkNPRRenderTarget::Scope target(
+      internal.Target, window, { internal.LineTexture }, nullptr, width, height);
+    target.Clear(0.0, 0.0, 0.0, 0.0);
     // Only where the props can be: the rest of the line image stays clear.
-    const int* rect = gbuffer->GetContentRectangle();
-    vtkOpenGLState::ScopedglClearColor clearColorSaver(glState);
-    vtkOpenGLState::ScopedglScissor scissorSaver(glState);
-    glState->vtkglDisable(GL_SCISSOR_TEST);
-    glState->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-    glState->vtkglClear(GL_COLOR_BUFFER_BIT);
-    glState->vtkglEnable(GL_SCISSOR_TEST);
-    glState->vtkglScissor(rect[0], rect[1], rect[2] - rect[0] + 1, rect[3] - rect[1] + 1);
+    target.ScissorTo(gbuffer->GetContentRectangle());
     internal.Detect.Render();
-    internal.Framebuffer->RemoveColorAttachments(1);
-    glState->PopFramebufferBindings();
-    geometry->Deactivate();
-
-    internal.LineImageValid = true;
-    internal.LineImageVersion = gbuffer->GetContentVersion();
-    internal.LineImageSettings = detectSettings.str();
-    ++this->NumberOfLineImageUpdates;
   }
+  geometry->Deactivate();
+  internal.LineImageValid = true;
+  internal.LineImageVersion = gbuffer->GetContentVersion();
+  internal.LineImageSettings = settings.str();
+  ++this->NumberOfLineImageUpdates;
+  return true;
+}
 
-  // ---- Step 2: composite colour, lines and depth into the current framebuffer ----
-  const double lineWidth = this->GetEffectiveLineWidth(renderer);
-  internal.Filter.Compute(lineWidth);
-  const int taps = static_cast<int>(internal.Filter.Taps.size() / 3);
-  std::ostringstream defines;
-  defines << "#define NPR_LINES " << (lines ? 1 : 0) << "\n#define NPR_TAPS " << taps
-          << "\n#define NPR_RADIUS " << internal.Filter.Radius + 1 << "\n#define NPR_ANTIALIAS "
-          << (this->AntiAliasing ? 1 : 0) << "\n#define NPR_OUTPUT " << output
-          << "\n#define NPR_REMAPPED_DEPTH " << (gbuffer->GetDepthRemapped() ? 1 : 0) << "\n";
-  int origin[2] = { 0, 0 };
-  if (output != OutputLineCoverage)
+void vtkNPREdgePass::SetDetectUniforms(vtkShaderProgram* program, int encoding)
+{
+  vtkNPRGBufferPass* gbuffer = this->GBufferPass;
+  program->SetUniformi("geometryTexture", gbuffer->GetGeometryTexture()->GetTextureUnit());
+  if (encoding == PACKED8 || encoding == PACKED16)
   {
-    vtkNPRViewportOrigin(state, origin);
-  }
-  // Outside the props' projected bounds there is only background: nothing to write there.
-  const int* rect = gbuffer->GetContentRectangle();
-  const int windowRect[4] = { origin[0] + rect[0], origin[1] + rect[1], origin[0] + rect[2],
-    origin[1] + rect[3] };
-  // An unchanged frame: the kept composite copied back, before any of the composite's setup.
-  const std::string compositeKey = output == OutputComposite
-    ? this->CompositeKey(renderer, defines.str(), windowRect)
-    : std::string();
-  const bool unchanged = !compositeKey.empty() && compositeKey == internal.CompositeKey;
-  internal.CompositeKey = compositeKey;
-  internal.FramesSinceUnchanged = unchanged ? 0 : internal.FramesSinceUnchanged + 1;
-  if (unchanged && internal.Kept.Restore(window))
-  {
-    ++this->NumberOfKeptCompositeRestores;
-    this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
-    vtkOpenGLCheckErrorMacro("failed after vtkNPREdgePass::Render (kept composite)");
+    // A texel's normalised value in units of one component's range (0..63 or 0..16383).
+    const double unit = encoding == PACKED8 ? 255.0 / 63.0 : 65535.0 / 16383.0;
+    program->SetUniformf("packedUnit", static_cast<float>(unit));
+    program->SetUniformf("packedThreshold", static_cast<float>(this->PackedThreshold));
     return;
   }
+  program->SetUniformf("silhouetteThreshold", static_cast<float>(this->SilhouetteThreshold));
+  const double radians = vtkMath::RadiansFromDegrees(this->CreaseAngle);
+  program->SetUniformf("creaseAngle", static_cast<float>(radians));
+  program->SetUniformf("creaseRamp", static_cast<float>(std::min(0.0175, 0.25 * radians)));
+  program->SetUniformf("suggestiveThreshold", static_cast<float>(this->SuggestiveContourThreshold));
+  float rayOrigin[3], rayPerPixelX[3], rayPerPixelY[3];
+  gbuffer->GetViewRay(rayOrigin, rayPerPixelX, rayPerPixelY);
+  program->SetUniform3f("viewRayOrigin", rayOrigin);
+  program->SetUniform3f("viewRayPerPixelX", rayPerPixelX);
+  program->SetUniform3f("viewRayPerPixelY", rayPerPixelY);
+}
 
+std::string vtkNPREdgePass::GetCompositeDefines(vtkRenderer* renderer, int output)
+{
+  Internals& internal = *this->Internal;
+  internal.Filter.Compute(this->GetEffectiveLineWidth(renderer));
+  std::ostringstream defines;
+  defines << "#define NPR_LINES " << (this->GetDrawsLines() ? 1 : 0) << "\n#define NPR_TAPS "
+          << internal.Filter.Taps.size() / 3 << "\n#define NPR_RADIUS "
+          << internal.Filter.Radius + 1 << "\n#define NPR_ANTIALIAS "
+          << (this->AntiAliasing ? 1 : 0) << "\n#define NPR_OUTPUT " << output
+          << "\n#define NPR_REMAPPED_DEPTH " << (this->GBufferPass->GetDepthRemapped() ? 1 : 0)
+          << "\n";
+  return defines.str();
+}
+
+void vtkNPREdgePass::GetCompositeRectangle(vtkRenderer*, int rect[4])
+{
+  if (this->CoverageOnly)
+  {
+    // A mask is black everywhere else.
+    vtkTextureObject* depth = this->GBufferPass->GetDepthTexture();
+    rect[0] = rect[1] = 0;
+    rect[2] = static_cast<int>(depth->GetWidth()) - 1;
+    rect[3] = static_cast<int>(depth->GetHeight()) - 1;
+    return;
+  }
+  // Outside the props' projected bounds there is only background: nothing to write there.
+  std::copy_n(this->GBufferPass->GetContentRectangle(), 4, rect);
+}
+
+std::string vtkNPREdgePass::GetCompositeKey(vtkRenderer* renderer)
+{
+  if (this->CoverageOnly)
+  {
+    return std::string(); // a measurement: always drawn
+  }
+  std::ostringstream key;
+  key.precision(17);
+  key << this->GetCompositeDefines(renderer, OutputComposite) << this->NumberOfLineImageUpdates
+      << " " << this->Internal->LineImageSettings << " " << this->GetEffectiveLineWidth(renderer);
+  for (const double* colorValue :
+    { this->SilhouetteColor, this->CreaseColor, this->ContourColor, this->SuggestiveContourColor })
+  {
+    key << " " << colorValue[0] << " " << colorValue[1] << " " << colorValue[2];
+  }
+  return key.str();
+}
+
+bool vtkNPREdgePass::DrawComposite(const vtkRenderState* state, const int origin[2])
+{
+  return this->DrawLines(state, origin, this->CoverageOnly ? OutputMask : OutputComposite);
+}
+
+bool vtkNPREdgePass::DrawLines(const vtkRenderState* state, const int origin[2], int output)
+{
+  Internals& internal = *this->Internal;
+  vtkRenderer* renderer = state->GetRenderer();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   if (internal.CompositeSource.empty())
   {
     internal.CompositeSource = vtkNPREdgeCompositeFS;
@@ -358,121 +358,65 @@ void vtkNPREdgePass::Draw(const vtkRenderState* state, int output)
   }
   vtkNPRQuadProgram& composite =
     output == OutputLineCoverage ? internal.Coverage : internal.Composite;
-  vtkShaderProgram* program = composite.Ready(window, internal.CompositeSource, defines.str());
+  vtkShaderProgram* program =
+    composite.Ready(window, internal.CompositeSource, this->GetCompositeDefines(renderer, output));
   if (!program)
   {
     vtkErrorMacro("the line composite shader did not compile");
-    return;
+    return false;
   }
+  vtkNPRGBufferPass* gbuffer = this->GBufferPass;
   vtkTextureObject* color = gbuffer->GetColorTexture();
   vtkTextureObject* depth = gbuffer->GetDepthTexture();
+  const bool lines = this->GetDrawsLines();
   color->Activate();
   depth->Activate();
-  program->SetUniformi("colorTexture", color->GetTextureUnit());
-  program->SetUniformi("depthTexture", depth->GetTextureUnit());
   if (lines)
   {
     internal.LineTexture->Activate();
-    program->SetUniformi("lineTexture", internal.LineTexture->GetTextureUnit());
-    program->SetUniform3fv(
-      "taps", taps, reinterpret_cast<const float(*)[3]>(internal.Filter.Taps.data()));
-    const float texelSize[2] = { 1.0f / width, 1.0f / height };
-    program->SetUniform2f("texelSize", texelSize);
-    program->SetUniformf("coverageLevel", internal.Filter.CoverageLevel);
-    program->SetUniformf("coverageSlope", internal.Filter.CoverageSlope);
-    program->SetUniform3f("silhouetteColor", this->SilhouetteColor);
-    program->SetUniform3f("creaseColor", this->CreaseColor);
-    program->SetUniform3f("contourColor", this->ContourColor);
-    program->SetUniform3f("suggestiveColor", this->SuggestiveContourColor);
   }
-  program->SetUniform2i("viewportOrigin", origin);
-  if (gbuffer->GetDepthRemapped())
-  {
-    program->SetUniform2f("nprDepthRemap", gbuffer->GetDepthRemap());
-  }
-
-  vtkNPRCompositeState compositeState(glState);
-  compositeState.Apply(origin, width, height);
-  if (output == OutputMask)
-  {
-    glState->vtkglDisable(GL_SCISSOR_TEST); // a mask is black everywhere else
-  }
-  else
-  {
-    glState->vtkglEnable(GL_SCISSOR_TEST);
-    glState->vtkglScissor(
-      windowRect[0], windowRect[1], rect[2] - rect[0] + 1, rect[3] - rect[1] + 1);
-  }
-  if (output == OutputLineCoverage)
-  {
-    // Plain values into the caller's target, which has no depth buffer.
-    glState->vtkglDisable(GL_DEPTH_TEST);
-    glState->vtkglDepthMask(GL_FALSE);
-    glState->vtkglDisable(GL_BLEND);
-  }
+  this->SetCompositeUniforms(program, origin);
   composite.Render();
-  if (internal.CompositeKey.empty() ||
-    internal.FramesSinceUnchanged > Internals::KeepAfterUnchanged ||
-    !internal.Kept.Capture(window, windowRect))
-  {
-    internal.Kept.Invalidate();
-  }
-
   color->Deactivate();
   depth->Deactivate();
   if (lines)
   {
     internal.LineTexture->Deactivate();
   }
-  this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
-  vtkOpenGLCheckErrorMacro("failed after vtkNPREdgePass::Render");
+  return true;
 }
 
-std::string vtkNPREdgePass::CompositeKey(
-  vtkRenderer* renderer, const std::string& defines, const int windowRect[4])
+void vtkNPREdgePass::SetCompositeUniforms(vtkShaderProgram* program, const int origin[2])
 {
-  // Only where what lies under the composite is this renderer's own clear, which these settings
-  // describe: another layer below, a preserved colour or depth buffer could change on their own.
-  if (!this->KeepUnchangedComposite || renderer->Transparent() || !renderer->GetErase() ||
-    renderer->GetPreserveDepthBuffer())
+  Internals& internal = *this->Internal;
+  vtkNPRGBufferPass* gbuffer = this->GBufferPass;
+  program->SetUniformi("colorTexture", gbuffer->GetColorTexture()->GetTextureUnit());
+  program->SetUniformi("depthTexture", gbuffer->GetDepthTexture()->GetTextureUnit());
+  program->SetUniform2i("viewportOrigin", origin);
+  if (gbuffer->GetDepthRemapped())
   {
-    return std::string();
+    program->SetUniform2f("nprDepthRemap", gbuffer->GetDepthRemap());
   }
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  unsigned int binding = 0, drawBuffer = 0;
-  window->GetState()->GetCurrentDrawFramebufferState(binding, drawBuffer);
-  std::ostringstream key;
-  key.precision(17);
-  key << defines << this->GBufferPass->GetContentVersion() << " " << this->NumberOfLineImageUpdates
-      << " " << this->Internal->LineImageSettings << " " << this->GetEffectiveLineWidth(renderer)
-      << " " << binding << " " << drawBuffer << " " << window->GetSize()[0] << " "
-      << window->GetSize()[1];
-  for (int i = 0; i < 4; ++i)
+  if (!this->GetDrawsLines())
   {
-    key << " " << windowRect[i];
+    return;
   }
-  for (const double* colorValue :
-    { this->SilhouetteColor, this->CreaseColor, this->ContourColor, this->SuggestiveContourColor })
-  {
-    key << " " << colorValue[0] << " " << colorValue[1] << " " << colorValue[2];
-  }
-  // The renderer's clear (vtkOpenGLRenderer::Clear); not its MTime, which capturing the window
-  // changes (vtkWindowToImageFilter).
-  for (const double* colorValue : { renderer->GetBackground(), renderer->GetBackground2() })
-  {
-    key << " " << colorValue[0] << " " << colorValue[1] << " " << colorValue[2];
-  }
-  vtkTexture* background = renderer->GetBackgroundTexture();
-  key << " " << renderer->GetBackgroundAlpha() << " " << renderer->GetGradientBackground() << " "
-      << renderer->GetTexturedBackground() << " " << background << " "
-      << (background ? background->GetMTime() : 0);
-#if VTK_MAJOR_VERSION > 9 || (VTK_MAJOR_VERSION == 9 && VTK_MINOR_VERSION >= 3)
-  key << " " << static_cast<int>(renderer->GetGradientMode());
-#endif
-  return key.str();
+  const LineFilter& filter = internal.Filter;
+  program->SetUniformi("lineTexture", internal.LineTexture->GetTextureUnit());
+  program->SetUniform3fv("taps", static_cast<int>(filter.Taps.size() / 3),
+    reinterpret_cast<const float(*)[3]>(filter.Taps.data()));
+  const float texelSize[2] = { 1.0f / internal.LineTexture->GetWidth(),
+    1.0f / internal.LineTexture->GetHeight() };
+  program->SetUniform2f("texelSize", texelSize);
+  program->SetUniformf("coverageLevel", filter.CoverageLevel);
+  program->SetUniformf("coverageSlope", filter.CoverageSlope);
+  program->SetUniform3f("silhouetteColor", this->SilhouetteColor);
+  program->SetUniform3f("creaseColor", this->CreaseColor);
+  program->SetUniform3f("contourColor", this->ContourColor);
+  program->SetUniform3f("suggestiveColor", this->SuggestiveContourColor);
 }
 
-void vtkNPREdgePass::ReleaseGraphicsResources(vtkWindow* window)
+void vtkNPREdgePass::ReleaseEffectResources(vtkWindow* window)
 {
   Internals& internal = *this->Internal;
   internal.Detect.Release(window);
@@ -484,15 +428,8 @@ void vtkNPREdgePass::ReleaseGraphicsResources(vtkWindow* window)
     internal.LineTexture->Delete();
     internal.LineTexture = nullptr;
   }
-  if (internal.Framebuffer)
-  {
-    internal.Framebuffer->ReleaseGraphicsResources(window);
-    internal.Framebuffer->Delete();
-    internal.Framebuffer = nullptr;
-  }
+  internal.Target.ReleaseGraphicsResources(window);
   internal.LineImageValid = false;
-  internal.Kept.ReleaseGraphicsResources(window);
-  internal.CompositeKey.clear();
 }
 
 void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
@@ -518,6 +455,4 @@ void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";
   os << indent << "CoverageOnly: " << this->CoverageOnly << "\n";
   os << indent << "NumberOfLineImageUpdates: " << this->NumberOfLineImageUpdates << "\n";
-  os << indent << "KeepUnchangedComposite: " << this->KeepUnchangedComposite << "\n";
-  os << indent << "NumberOfKeptCompositeRestores: " << this->NumberOfKeptCompositeRestores << "\n";
 }

@@ -64,24 +64,22 @@
 #ifndef vtkNPREdgePass_h
 #define vtkNPREdgePass_h
 
-#include "vtkRenderPass.h"
+#include "vtkNPRGBufferPass.h" // for the encodings
+#include "vtkNPRImageEffectPass.h"
 #include "vtkRenderingNPRModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
-class vtkNPRGBufferPass;
 class vtkRenderer;
+class vtkShaderProgram;
 
-class VTKRENDERINGNPR_EXPORT vtkNPREdgePass : public vtkRenderPass
+class VTKRENDERINGNPR_EXPORT vtkNPREdgePass : public vtkNPRImageEffectPass
 {
 public:
   static vtkNPREdgePass* New();
-  vtkTypeMacro(vtkNPREdgePass, vtkRenderPass);
+  vtkTypeMacro(vtkNPREdgePass, vtkNPRImageEffectPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  void Render(const vtkRenderState* state) override;
-  void ReleaseGraphicsResources(vtkWindow* window) override;
 
   ///@{
   /**
@@ -195,12 +193,13 @@ public:
   vtkGetVector3Macro(ContourColor, double);
   ///@}
 
+  // The G-buffer's encodings (vtkNPRGBufferPass::GeometryEncodings), by the same names here.
   enum Encodings
   {
-    FLOAT = 0,
-    HALF = 1,
-    PACKED8 = 2,
-    PACKED16 = 3
+    FLOAT = vtkNPRGBufferPass::FLOAT,
+    HALF = vtkNPRGBufferPass::HALF,
+    PACKED8 = vtkNPRGBufferPass::PACKED8,
+    PACKED16 = vtkNPRGBufferPass::PACKED16
   };
 
   ///@{
@@ -286,27 +285,8 @@ public:
    */
   vtkGetMacro(NumberOfLineImageUpdates, int);
 
-  ///@{
-  /**
-   * Draw a frame in which nothing changed by copying back the last composited image instead of
-   * compositing again (on by default). Nothing changed means: the G-buffer kept its content
-   * (vtkNPRGBufferPass::ReuseUnchangedFrames), and the line settings, the renderer's background,
-   * the viewport and the framebuffer drawn into are those of the last frame. The copy (colour and
-   * depth of the props' rectangle, glBlitFramebuffer) is taken only while frames are being
-   * reused (one of the last 8 was unchanged), so a scene in motion pays nothing for it, and only
-   * where it comes back bit for bit: a renderer that clears its own colour and depth, into a
-   * framebuffer without multisampling, with 8-bit colour and a standard depth format. Lines only
-   * (CoverageOnly and RenderLineCoverage() always draw).
-   */
-  vtkSetMacro(KeepUnchangedComposite, bool);
-  vtkGetMacro(KeepUnchangedComposite, bool);
-  vtkBooleanMacro(KeepUnchangedComposite, bool);
-  ///@}
-
-  /**
-   * Number of frames drawn by copying back the kept composite (KeepUnchangedComposite).
-   */
-  vtkGetMacro(NumberOfKeptCompositeRestores, int);
+  // KeepUnchangedComposite (vtkNPRImageEffectPass): lines only; CoverageOnly and
+  // RenderLineCoverage() always draw.
 
 protected:
   vtkNPREdgePass();
@@ -318,10 +298,13 @@ protected:
     OutputMask = 1,        // CoverageOnly
     OutputLineCoverage = 2 // RenderLineCoverage()
   };
-  void Draw(const vtkRenderState* state, int output);
-  // What a composite into the current framebuffer depends on, or empty where it cannot be kept.
-  std::string CompositeKey(
-    vtkRenderer* renderer, const std::string& defines, const int windowRect[4]);
+  // The steps of the frame (vtkNPRImageEffectPass).
+  vtkNPRGBufferPass* GetGBuffer() override;
+  bool UpdateImages(const vtkRenderState* state) override;
+  std::string GetCompositeKey(vtkRenderer* renderer) override;
+  void GetCompositeRectangle(vtkRenderer* renderer, int rect[4]) override;
+  bool DrawComposite(const vtkRenderState* state, const int origin[2]) override;
+  void ReleaseEffectResources(vtkWindow* window) override;
 
   vtkNPRGBufferPass* GBufferPass = nullptr;
   bool Silhouettes = true;
@@ -345,12 +328,19 @@ protected:
   bool AntiAliasing = true;
   bool CoverageOnly = false;
   int NumberOfLineImageUpdates = 0;
-  bool KeepUnchangedComposite = true;
-  int NumberOfKeptCompositeRestores = 0;
 
 private:
   vtkNPREdgePass(const vtkNPREdgePass&) = delete;
   void operator=(const vtkNPREdgePass&) = delete;
+
+  // The one-pixel line image, recomputed only when the G-buffer or the detection settings changed.
+  std::string GetDetectDefines(int encoding) const;
+  bool UpdateLineImage(const vtkRenderState* state);
+  void SetDetectUniforms(vtkShaderProgram* program, int encoding);
+  // The composite of the lines (and colour and depth, or the mask, or the coverage).
+  std::string GetCompositeDefines(vtkRenderer* renderer, int output);
+  bool DrawLines(const vtkRenderState* state, const int origin[2], int output);
+  void SetCompositeUniforms(vtkShaderProgram* program, const int origin[2]);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

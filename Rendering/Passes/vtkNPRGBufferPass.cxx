@@ -26,9 +26,11 @@
 #include "vtkNPRGBufferDecl.h"
 #include "vtkNPRGBufferImpl.h"
 #include "vtkNPRQuadProgram.h"
+#include "vtkNPRRenderTarget.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 struct vtkNPRGBufferPass::Internals
@@ -42,6 +44,7 @@ struct vtkNPRGBufferPass::Internals
   vtkNPRQuadProgram DepthGeometry;
   vtkNPRQuadProgram Copy;
   vtkNPRShaderCheck Check;
+  vtkNPRRenderTarget Target;
 };
 
 vtkStandardNewMacro(vtkNPRGBufferPass);
@@ -62,7 +65,7 @@ vtkNPRGBufferPass::~vtkNPRGBufferPass()
   // callbacks when their context is still alive.
   for (vtkObject* object :
     { static_cast<vtkObject*>(this->ColorTexture), static_cast<vtkObject*>(this->GeometryTexture),
-      static_cast<vtkObject*>(this->DepthTexture), static_cast<vtkObject*>(this->Framebuffer) })
+      static_cast<vtkObject*>(this->DepthTexture) })
   {
     if (object)
     {
@@ -110,11 +113,6 @@ GeometryFormat GetGeometryFormat(int encoding, int components)
 void vtkNPRGBufferPass::AllocateBuffers(
   vtkOpenGLRenderWindow* window, int width, int height, int components, int encoding)
 {
-  if (!this->Framebuffer)
-  {
-    this->Framebuffer = vtkOpenGLFramebufferObject::New();
-    this->Framebuffer->SetContext(window);
-  }
   if (!this->ColorTexture)
   {
     this->ColorTexture = NewNearestTexture(window);
@@ -169,6 +167,35 @@ void vtkNPRGBufferPass::ComputeContentRectangle(const vtkRenderState* state, int
   vtkNPRScreenRectangleOfProps(state, width, height, this->ContentRectangle);
 }
 
+const char* vtkNPRGBufferPass::GetEncodingName(int encoding)
+{
+  switch (encoding)
+  {
+    case FLOAT:
+      return "float";
+    case HALF:
+      return "half";
+    case PACKED8:
+      return "packed8";
+    case PACKED16:
+      return "packed16";
+    default:
+      return "unknown";
+  }
+}
+
+int vtkNPRGBufferPass::GetEncodingFromName(const char* name)
+{
+  for (int encoding = FLOAT; name && encoding <= PACKED16; ++encoding)
+  {
+    if (strcmp(name, GetEncodingName(encoding)) == 0)
+    {
+      return encoding;
+    }
+  }
+  return -1;
+}
+
 void vtkNPRGBufferPass::Render(const vtkRenderState* state)
 {
   vtkOpenGLClearErrorMacro();
@@ -178,35 +205,19 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
     vtkWarningMacro("no delegate pass: nothing drawn");
     return;
   }
-  vtkRenderer* renderer = state->GetRenderer();
-
   this->LastRenderWasSelection = vtkNPRRenderSelection(state, this->NumberOfRenderedProps);
   if (this->LastRenderWasSelection)
   {
     return; // a picking render: no G-buffer
   }
-
   int width = 0, height = 0;
-  if (state->GetFrameBuffer())
-  {
-    state->GetFrameBuffer()->GetLastSize(width, height);
-  }
-  else
-  {
-    int x, y;
-    renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-  }
+  GetTargetSize(state, width, height);
   if (this->DepthOnly)
   {
     this->RenderDepthOnly(state, width, height);
     return;
   }
-
-  int opaqueProps = 0;
-  for (int i = 0; i < state->GetPropArrayCount(); ++i)
-  {
-    opaqueProps += state->GetPropArray()[i]->HasOpaqueGeometry() ? 1 : 0;
-  }
+  const int opaqueProps = CountOpaqueProps(state);
   if (opaqueProps == 0)
   {
     // Nothing to draw: no buffers, no effects.
@@ -214,12 +225,65 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
     this->Internal->Valid = false;
     return;
   }
+  this->UpdateOutputs(opaqueProps);
+  if (width < 1 || height < 1)
+  {
+    this->HasContent = false;
+    return;
+  }
+  if (this->SceneUnchanged(state, width, height))
+  {
+    this->NumberOfRenderedProps = opaqueProps;
+    return;
+  }
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow());
+  const int components =
+    this->WritesObjectIds || this->WritesFaceNormals ? 4 : (this->WritesNormals ? 2 : 1);
+  this->AllocateBuffers(window, width, height, components, this->WrittenEncoding);
+  this->UpdateProjection(state->GetRenderer(), width, height);
+  this->ComputeContentRectangle(state, width, height);
+  this->Internal->FrameProps.assign(
+    state->GetPropArray(), state->GetPropArray() + state->GetPropArrayCount());
+  this->DrawGeometry(state, width, height);
+  this->Internal->Last = vtkNPRTakeFrameSignature(
+    state, width, height, this->WritesNormals, this->WritesObjectIds, this->GetSettingsTime());
+  this->Internal->Valid = true;
+  vtkOpenGLCheckErrorMacro("failed after vtkNPRGBufferPass::Render");
+}
 
+void vtkNPRGBufferPass::GetTargetSize(const vtkRenderState* state, int& width, int& height)
+{
+  if (state->GetFrameBuffer())
+  {
+    state->GetFrameBuffer()->GetLastSize(width, height);
+    return;
+  }
+  int x, y;
+  state->GetRenderer()->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+}
+
+int vtkNPRGBufferPass::CountOpaqueProps(const vtkRenderState* state)
+{
+  int opaqueProps = 0;
+  for (int i = 0; i < state->GetPropArrayCount(); ++i)
+  {
+    opaqueProps += state->GetPropArray()[i]->HasOpaqueGeometry() ? 1 : 0;
+  }
+  return opaqueProps;
+}
+
+void vtkNPRGBufferPass::UpdateOutputs(int opaqueProps)
+{
   const int encoding = this->GeometryEncoding;
   const bool packed = encoding == PACKED8 || encoding == PACKED16;
   const bool normals = this->NormalsRequested;
   const bool ids = this->ObjectIdsRequested && opaqueProps > 1 && !packed;
   const bool faceNormals = normals && this->FaceNormalsRequested && encoding == FLOAT;
+  this->SetOutputs(normals, ids, faceNormals, encoding);
+}
+
+void vtkNPRGBufferPass::SetOutputs(bool normals, bool ids, bool faceNormals, int encoding)
+{
   if (normals != this->WritesNormals || ids != this->WritesObjectIds ||
     faceNormals != this->WritesFaceNormals || encoding != this->WrittenEncoding)
   {
@@ -229,27 +293,14 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
     this->WrittenEncoding = encoding;
     this->ShaderStageTime.Modified(); // the mappers rebuild their shaders with the new outputs
   }
+}
 
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  if (width < 1 || height < 1)
-  {
-    this->HasContent = false;
-    return;
-  }
-
-  if (this->SceneUnchanged(state, width, height))
-  {
-    this->NumberOfRenderedProps = opaqueProps;
-    return;
-  }
-
-  const int components = ids || faceNormals ? 4 : (normals ? 2 : 1);
-  this->AllocateBuffers(window, width, height, components, encoding);
+void vtkNPRGBufferPass::UpdateProjection(vtkRenderer* renderer, int width, int height)
+{
   this->Viewport[0] = 0.0f;
   this->Viewport[1] = 0.0f;
   this->Viewport[2] = 1.0f / width;
   this->Viewport[3] = 1.0f / height;
-
   vtkMatrix4x4 *worldToView, *viewToDevice, *worldToDevice;
   vtkMatrix3x3* normalMatrix;
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -273,55 +324,25 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   }
   this->DepthRemap[0] = static_cast<float>(clippingRange[0]);
   this->DepthRemap[1] = static_cast<float>(std::log(clippingRange[1] / clippingRange[0]));
+}
 
-  this->ComputeContentRectangle(state, width, height);
-  this->Internal->FrameProps.assign(
-    state->GetPropArray(), state->GetPropArray() + state->GetPropArrayCount());
-
-  vtkOpenGLState* glState = window->GetState();
-  vtkOpenGLState::ScopedglViewport viewportSaver(glState);
-  vtkOpenGLState::ScopedglScissor scissorSaver(glState);
-  vtkOpenGLState::ScopedglClearColor clearColorSaver(glState);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(glState);
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(glState, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(glState, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
-
+void vtkNPRGBufferPass::DrawGeometry(const vtkRenderState* state, int width, int height)
+{
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow());
   this->Internal->Check.Window = window;
   this->HasLinePrimitives = false; // SetShaderParameters() sees them
   this->PreRender(state);          // the mappers now call this pass's shader hooks
-  glState->PushFramebufferBindings();
-  this->Framebuffer->Bind();
-  this->Framebuffer->AddColorAttachment(0, this->ColorTexture);
-  this->Framebuffer->AddColorAttachment(1, this->GeometryTexture);
-  this->Framebuffer->AddDepthAttachment(this->DepthTexture);
-  this->Framebuffer->ActivateDrawBuffers(2);
-  this->Framebuffer->StartNonOrtho(width, height); // checks completeness; sets no viewport
-  glState->vtkglViewport(0, 0, width, height);
-  glState->vtkglScissor(0, 0, width, height);
-  // VTK leaves blending on in the opaque step; it would blend every attachment.
-  glState->vtkglDisable(GL_BLEND);
-  glState->vtkglEnable(GL_DEPTH_TEST);
-  glState->vtkglDepthMask(GL_TRUE);
-  glState->vtkglClearColor(0.0, 0.0, 0.0, 0.0); // geometry depth 0 = background
-  glState->vtkglClearDepth(1.0);
-  glState->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-
-  this->DelegatePass->Render(state);
-  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-
-  this->Framebuffer->RemoveColorAttachments(2);
-  this->Framebuffer->RemoveDepthAttachment();
-  glState->PopFramebufferBindings();
+  {
+    vtkNPRRenderTarget::Scope target(this->Internal->Target, window,
+      { this->ColorTexture, this->GeometryTexture }, this->DepthTexture, width, height);
+    target.Clear(0.0, 0.0, 0.0, 0.0); // geometry depth 0 = background
+    this->DelegatePass->Render(state);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  }
   this->PostRender(state);
-
   this->HasContent = true;
-  this->Internal->Last = vtkNPRTakeFrameSignature(
-    state, width, height, this->WritesNormals, this->WritesObjectIds, this->GetSettingsTime());
-  this->Internal->Valid = true;
   ++this->NumberOfGeometryDraws;
   ++this->ContentVersion;
-  vtkOpenGLCheckErrorMacro("failed after vtkNPRGBufferPass::Render");
 }
 
 void vtkNPRGBufferPass::RenderDepthOnly(const vtkRenderState* state, int width, int height)
@@ -335,112 +356,75 @@ void vtkNPRGBufferPass::RenderDepthOnly(const vtkRenderState* state, int width, 
   }
   vtkRenderer* renderer = state->GetRenderer();
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  if (this->WritesNormals != true || this->WritesObjectIds || this->WritesFaceNormals ||
-    this->WrittenEncoding != FLOAT)
-  {
-    this->WritesNormals = true;
-    this->WritesObjectIds = false;
-    this->WritesFaceNormals = false; // the rebuilt normals are face normals
-    this->WrittenEncoding = FLOAT;
-    this->ShaderStageTime.Modified();
-  }
+  // The rebuilt normals are face normals; no ids.
+  this->SetOutputs(true, false, false, FLOAT);
   this->AllocateBuffers(window, width, height, 2, FLOAT);
-  this->Viewport[0] = 0.0f;
-  this->Viewport[1] = 0.0f;
-  this->Viewport[2] = 1.0f / width;
-  this->Viewport[3] = 1.0f / height;
-  vtkCamera* camera = renderer->GetActiveCamera();
-  this->Perspective = !camera->GetParallelProjection();
-  const double* clippingRange = camera->GetClippingRange();
-  this->PackedDepthRange[0] = static_cast<float>(clippingRange[0]);
-  this->PackedDepthRange[1] = static_cast<float>(clippingRange[1]);
-  this->DepthRemapped = false; // the delegate writes the usual depth
   this->ContentRectangle[0] = this->ContentRectangle[1] = 0;
   this->ContentRectangle[2] = width - 1;
   this->ContentRectangle[3] = height - 1;
   this->Internal->FrameProps.clear();
-
-  vtkOpenGLState* glState = window->GetState();
-  vtkOpenGLState::ScopedglViewport viewportSaver(glState);
-  vtkOpenGLState::ScopedglScissor scissorSaver(glState);
-  vtkOpenGLState::ScopedglClearColor clearColorSaver(glState);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(glState);
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(glState, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(glState, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
-
-  // 1. The delegate draws colour and depth (no shader hooks).
-  glState->PushFramebufferBindings();
-  this->Framebuffer->Bind();
-  this->Framebuffer->AddColorAttachment(0, this->ColorTexture);
-  this->Framebuffer->AddDepthAttachment(this->DepthTexture);
-  this->Framebuffer->ActivateDrawBuffers(1);
-  this->Framebuffer->StartNonOrtho(width, height);
-  glState->vtkglViewport(0, 0, width, height);
-  glState->vtkglScissor(0, 0, width, height);
-  glState->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-  glState->vtkglDepthMask(GL_TRUE);
-  glState->vtkglClearDepth(1.0);
-  glState->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  this->DelegatePass->Render(state);
-  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-  this->Framebuffer->RemoveDepthAttachment();
-
-  // The delegate set the camera: the projection it drew with.
-  vtkMatrix4x4 *worldToView, *viewToDevice, *worldToDevice;
-  vtkMatrix3x3* normalMatrix;
-  static_cast<vtkOpenGLCamera*>(camera)->GetKeyMatrices(
-    renderer, worldToView, normalMatrix, viewToDevice, worldToDevice);
-  vtkMatrix4x4::Invert(viewToDevice, this->InverseProjection); // stays in GLSL's layout
-
-  // 2. The geometry attachment from the depth texture.
-  this->Framebuffer->AddColorAttachment(0, this->GeometryTexture);
-  this->Framebuffer->ActivateDrawBuffers(1);
-  glState->vtkglDisable(GL_DEPTH_TEST);
-  glState->vtkglDepthMask(GL_FALSE);
-  glState->vtkglDisable(GL_BLEND);
-  glState->vtkglDisable(GL_SCISSOR_TEST);
-  vtkShaderProgram* program =
-    this->Internal->DepthGeometry.Ready(window, vtkNPRDepthGeometryFS, "");
-  if (program)
   {
-    this->DepthTexture->Activate();
-    program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
-    program->SetUniformMatrix("inverseProjection", this->InverseProjection);
-    this->Internal->DepthGeometry.Render();
-    this->DepthTexture->Deactivate();
+    // The delegate draws colour and depth (no shader hooks).
+    vtkNPRRenderTarget::Scope target(
+      this->Internal->Target, window, { this->ColorTexture }, this->DepthTexture, width, height);
+    target.Clear(0.0, 0.0, 0.0, 0.0);
+    this->DelegatePass->Render(state);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   }
-  else
-  {
-    vtkErrorMacro("the depth-only geometry shader did not compile");
-  }
-  this->Framebuffer->RemoveColorAttachments(1);
-  glState->PopFramebufferBindings();
-
-  // 3. The captured image back into the caller's framebuffer.
-  vtkShaderProgram* copy = this->Internal->Copy.Ready(window, vtkNPRCopyFS, "");
-  if (copy)
-  {
-    int origin[2];
-    vtkNPRViewportOrigin(state, origin);
-    vtkNPRCompositeState compositeState(glState);
-    compositeState.Apply(origin, width, height);
-    // Replaces what is there, as the delegate drawing here would have: nobody cleared it.
-    glState->vtkglDisable(GL_BLEND);
-    glState->vtkglDepthFunc(GL_ALWAYS);
-    this->ColorTexture->Activate();
-    this->DepthTexture->Activate();
-    copy->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
-    copy->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
-    this->Internal->Copy.Render();
-    this->ColorTexture->Deactivate();
-    this->DepthTexture->Deactivate();
-  }
-
+  // The delegate set the camera: the projection it drew with, and the usual depth.
+  this->UpdateProjection(renderer, width, height);
+  this->DepthRemapped = false;
+  this->DeriveGeometryFromDepth(window, width, height);
+  this->CopyBack(state, width, height);
   this->HasContent = true;
   ++this->NumberOfGeometryDraws;
   ++this->ContentVersion;
   vtkOpenGLCheckErrorMacro("failed after vtkNPRGBufferPass::RenderDepthOnly");
+}
+
+void vtkNPRGBufferPass::DeriveGeometryFromDepth(
+  vtkOpenGLRenderWindow* window, int width, int height)
+{
+  vtkShaderProgram* program =
+    this->Internal->DepthGeometry.Ready(window, vtkNPRDepthGeometryFS, "");
+  if (!program)
+  {
+    vtkErrorMacro("the depth-only geometry shader did not compile");
+    return;
+  }
+  vtkNPRRenderTarget::Scope target(
+    this->Internal->Target, window, { this->GeometryTexture }, nullptr, width, height);
+  this->DepthTexture->Activate();
+  program->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+  program->SetUniformMatrix("inverseProjection", this->InverseProjection);
+  this->Internal->DepthGeometry.Render();
+  this->DepthTexture->Deactivate();
+}
+
+void vtkNPRGBufferPass::CopyBack(const vtkRenderState* state, int width, int height)
+{
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow());
+  vtkShaderProgram* copy = this->Internal->Copy.Ready(window, vtkNPRCopyFS, "");
+  if (!copy)
+  {
+    vtkErrorMacro("the depth-only copy shader did not compile");
+    return;
+  }
+  vtkOpenGLState* glState = window->GetState();
+  int origin[2];
+  vtkNPRViewportOrigin(state, origin);
+  vtkNPRCompositeState compositeState(glState);
+  compositeState.Apply(origin, width, height);
+  // Replaces what is there, as the delegate drawing here would have: nobody cleared it.
+  glState->vtkglDisable(GL_BLEND);
+  glState->vtkglDepthFunc(GL_ALWAYS);
+  this->ColorTexture->Activate();
+  this->DepthTexture->Activate();
+  copy->SetUniformi("colorTexture", this->ColorTexture->GetTextureUnit());
+  copy->SetUniformi("depthTexture", this->DepthTexture->GetTextureUnit());
+  this->Internal->Copy.Render();
+  this->ColorTexture->Deactivate();
+  this->DepthTexture->Deactivate();
 }
 
 bool vtkNPRGBufferPass::PreReplaceShaderValues(
@@ -498,14 +482,15 @@ bool vtkNPRGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
 bool vtkNPRGBufferPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
-  if (!this->Framebuffer)
+  vtkOpenGLFramebufferObject* framebuffer = this->Internal->Target.GetFramebuffer();
+  if (!framebuffer)
   {
     return true;
   }
   if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
   {
     this->HasLinePrimitives = this->HasLinePrimitives || vtkNPRKeepsOwnLook(mapper, prop);
-    this->Framebuffer->ActivateDrawBuffers(2);
+    framebuffer->ActivateDrawBuffers(2);
     // The compiler drops the uniforms a variant does not read.
     if (program->IsUniformUsed("nprObjectId"))
     {
@@ -534,7 +519,7 @@ bool vtkNPRGBufferPass::SetShaderParameters(
   else
   {
     // Mappers without the G-buffer outputs write colour and depth only.
-    this->Framebuffer->ActivateDrawBuffers(1);
+    framebuffer->ActivateDrawBuffers(1);
   }
   return true;
 }
@@ -560,12 +545,7 @@ void vtkNPRGBufferPass::ReleaseGraphicsResources(vtkWindow* window)
       *texture = nullptr;
     }
   }
-  if (this->Framebuffer)
-  {
-    this->Framebuffer->ReleaseGraphicsResources(window);
-    this->Framebuffer->Delete();
-    this->Framebuffer = nullptr;
-  }
+  this->Internal->Target.ReleaseGraphicsResources(window);
   this->Internal->DepthGeometry.Release(window);
   this->Internal->Copy.Release(window);
   this->HasContent = false;

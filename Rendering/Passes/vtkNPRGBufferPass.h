@@ -74,6 +74,7 @@
 class vtkMatrix4x4;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
+class vtkRenderer;
 class vtkTextureObject;
 
 class VTKRENDERINGNPR_EXPORT vtkNPRGBufferPass : public vtkOpenGLRenderPass
@@ -133,6 +134,13 @@ public:
   vtkSetClampMacro(GeometryEncoding, int, FLOAT, PACKED16);
   vtkGetMacro(GeometryEncoding, int);
   ///@}
+
+  /**
+   * The name of an encoding (float, half, packed8, packed16), "unknown" for another value, and
+   * the encoding of a name, -1 for an unknown name. The one table of the encodings' names.
+   */
+  static const char* GetEncodingName(int encoding);
+  static int GetEncodingFromName(const char* name);
 
   ///@{
   /**
@@ -252,6 +260,15 @@ protected:
   vtkMTimeType GetSettingsTime();
   void ComputeContentRectangle(const vtkRenderState* state, int width, int height);
   void RenderDepthOnly(const vtkRenderState* state, int width, int height);
+  // The steps of Render() and RenderDepthOnly().
+  static void GetTargetSize(const vtkRenderState* state, int& width, int& height);
+  static int CountOpaqueProps(const vtkRenderState* state);
+  void UpdateOutputs(int opaqueProps);
+  void SetOutputs(bool normals, bool ids, bool faceNormals, int encoding);
+  void UpdateProjection(vtkRenderer* renderer, int width, int height);
+  void DrawGeometry(const vtkRenderState* state, int width, int height);
+  void DeriveGeometryFromDepth(vtkOpenGLRenderWindow* window, int width, int height);
+  void CopyBack(const vtkRenderState* state, int width, int height);
 
   vtkRenderPass* DelegatePass = nullptr;
   bool NormalsRequested = false;
@@ -261,7 +278,6 @@ protected:
   bool DepthOnly = false;
   int GeometryEncoding = FLOAT;
 
-  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
   vtkTextureObject* ColorTexture = nullptr;
   vtkTextureObject* GeometryTexture = nullptr;
   vtkTextureObject* DepthTexture = nullptr;
