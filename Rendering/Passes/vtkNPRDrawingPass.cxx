@@ -75,74 +75,109 @@ vtkIdType vtkNPRDrawingPass::GetNumberOfStrokeUpdates() const
   return this->Internal->StrokeUpdates;
 }
 
-void vtkNPRDrawingPass::Render(const vtkRenderState* state)
+vtkNPRGBufferPass* vtkNPRDrawingPass::GetGBuffer()
 {
-  vtkOpenGLClearErrorMacro();
-  this->NumberOfRenderedProps = 0;
-  vtkNPRGBufferPass* gbuffer = this->EdgePass ? this->EdgePass->GetGBufferPass() : nullptr;
   if (!this->EdgePass)
   {
     vtkErrorMacro("no edge pass: set one (its G-buffer and line settings are used)");
-    return;
+    return nullptr;
   }
-  if (!gbuffer || gbuffer->GetLastRenderWasSelection() || !gbuffer->GetHasContent())
-  {
-    return; // a picking render, or nothing was drawn
-  }
-  vtkRenderer* renderer = state->GetRenderer();
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  vtkOpenGLState* glState = window->GetState();
+  return this->EdgePass->GetGBufferPass();
+}
+
+bool vtkNPRDrawingPass::UpdateImages(const vtkRenderState* state)
+{
   Internals& internal = *this->Internal;
-  vtkTextureObject* depth = gbuffer->GetDepthTexture();
+  vtkTextureObject* depth = this->EdgePass->GetGBufferPass()->GetDepthTexture();
   const int width = depth->GetWidth();
   const int height = depth->GetHeight();
-
-  // ---- Step 1: the strokes, computed and rasterised again only when the frame changed ----
+  // The strokes, computed and rasterised again only when the frame changed.
   const vtkMTimeType settingsTime = std::max(this->GetMTime(), this->EdgePass->GetMTime());
   vtkNPRFrameSignature signature =
     vtkNPRTakeFrameSignature(state, width, height, false, false, settingsTime);
-  if (!internal.StrokesValid || !(signature == internal.Signature) || !internal.StrokeTexture)
+  if (internal.StrokesValid && signature == internal.Signature && internal.StrokeTexture)
   {
-    vtkNPRDrawingLines* lines = internal.Lines;
-    lines->SetRenderer(renderer);
-    lines->SetSize(width, height);
-    lines->SetSilhouettes(this->EdgePass->GetSilhouettes());
-    lines->SetBoundaries(this->EdgePass->GetSilhouettes());
-    lines->SetCreases(this->EdgePass->GetCreases());
-    lines->SetNonManifoldEdges(this->EdgePass->GetCreases());
-    lines->SetCreaseAngle(this->EdgePass->GetCreaseAngle());
-    lines->SetHiddenLines(this->HiddenLines);
-    const bool updated = lines->Update();
-    // Not kept: the renderer holds this pass, so a reference back would be a cycle (a leak).
-    lines->SetRenderer(nullptr);
-    if (!updated)
-    {
-      return;
-    }
-    const vtkNPRStrokeStyle style = vtkNPRMakeStrokeStyle(this, this->EdgePass, renderer);
-    std::string error;
-    if (!vtkNPRRasterizeStrokes(lines->GetStrokes(), style, width, height, internal.Pixels, error))
-    {
-      vtkErrorMacro("the strokes could not be rasterised: " << error);
-      return;
-    }
-    if (!internal.StrokeTexture)
-    {
-      internal.StrokeTexture =
-        vtkNPRNewTexture(window, vtkTextureObject::Nearest, vtkTextureObject::ClampToEdge);
-    }
-    internal.StrokeTexture->Create2DFromRaw(
-      width, height, 4, VTK_UNSIGNED_CHAR, internal.Pixels.data());
-    internal.Signature = signature;
-    internal.StrokesValid = true;
-    ++internal.StrokeUpdates;
+    return true;
   }
+  if (!this->UpdateStrokes(state->GetRenderer(), width, height))
+  {
+    return false;
+  }
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow());
+  if (!internal.StrokeTexture)
+  {
+    internal.StrokeTexture =
+      vtkNPRNewTexture(window, vtkTextureObject::Nearest, vtkTextureObject::ClampToEdge);
+  }
+  internal.StrokeTexture->Create2DFromRaw(
+    width, height, 4, VTK_UNSIGNED_CHAR, internal.Pixels.data());
+  internal.Signature = signature;
+  internal.StrokesValid = true;
+  ++internal.StrokeUpdates;
+  return true;
+}
 
-  // ---- Step 2: faces, strokes and depth into the current framebuffer ----
+bool vtkNPRDrawingPass::UpdateStrokes(vtkRenderer* renderer, int width, int height)
+{
+  Internals& internal = *this->Internal;
+  vtkNPRDrawingLines* lines = internal.Lines;
+  lines->SetRenderer(renderer);
+  lines->SetSize(width, height);
+  lines->SetSilhouettes(this->EdgePass->GetSilhouettes());
+  lines->SetBoundaries(this->EdgePass->GetSilhouettes());
+  lines->SetCreases(this->EdgePass->GetCreases());
+  lines->SetNonManifoldEdges(this->EdgePass->GetCreases());
+  lines->SetCreaseAngle(this->EdgePass->GetCreaseAngle());
+  lines->SetHiddenLines(this->HiddenLines);
+  const bool updated = lines->Update();
+  // Not kept: the renderer holds this pass, so a reference back would be a cycle (a leak).
+  lines->SetRenderer(nullptr);
+  if (!updated)
+  {
+    return false;
+  }
+  const vtkNPRStrokeStyle style = vtkNPRMakeStrokeStyle(this, this->EdgePass, renderer);
+  std::string error;
+  if (!vtkNPRRasterizeStrokes(lines->GetStrokes(), style, width, height, internal.Pixels, error))
+  {
+    vtkErrorMacro("the strokes could not be rasterised: " << error);
+    return false;
+  }
+  return true;
+}
+
+std::string vtkNPRDrawingPass::GetDrawingDefines(vtkRenderer* renderer) const
+{
   const double reach = std::ceil(0.5 * this->EdgePass->GetEffectiveLineWidth(renderer)) + 1.0;
   std::ostringstream defines;
   defines << "#define NPR_RADIUS " << static_cast<int>(reach) << "\n#define NPR_REMAPPED_DEPTH "
-          << (gbuffer->GetDepthRemapped() ? 1 : 0) << "\n";
+          << (this->EdgePass->GetGBufferPass()->GetDepthRemapped() ? 1 : 0) << "\n";
+  return defines.str();
+}
+
+std::string vtkNPRDrawingPass::GetCompositeKey(vtkRenderer* renderer)
+{
+  // The strokes follow the frame's signature; their texture's version is the update count.
+  std::ostringstream key;
+  key.precision(17);
+  key << this->GetDrawingDefines(renderer) << this->Internal->StrokeUpdates << " "
+      << this->FaceColor[0] << " " << this->FaceColor[1] << " " << this->FaceColor[2];
+  return key.str();
+}
+
+void vtkNPRDrawingPass::GetCompositeRectangle(vtkRenderer*, int rect[4])
+{
+  vtkTextureObject* depth = this->EdgePass->GetGBufferPass()->GetDepthTexture();
+  rect[0] = rect[1] = 0;
+  rect[2] = static_cast<int>(depth->GetWidth()) - 1;
+  rect[3] = static_cast<int>(depth->GetHeight()) - 1;
+}
+
+bool vtkNPRDrawingPass::DrawComposite(const vtkRenderState* state, const int origin[2])
+{
+  Internals& internal = *this->Internal;
+  vtkRenderer* renderer = state->GetRenderer();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   if (internal.CompositeSource.empty())
   {
     internal.CompositeSource = vtkNPRDrawingFS;
@@ -151,35 +186,31 @@ void vtkNPRDrawingPass::Render(const vtkRenderState* state)
       internal.CompositeSource, "//NPR::NearestDepth", vtkNPRNearestDepth);
   }
   vtkShaderProgram* program =
-    internal.Composite.Ready(window, internal.CompositeSource, defines.str());
+    internal.Composite.Ready(window, internal.CompositeSource, this->GetDrawingDefines(renderer));
   if (!program)
   {
     vtkErrorMacro("the drawing composite shader did not compile");
-    return;
+    return false;
   }
+  vtkNPRGBufferPass* gbuffer = this->EdgePass->GetGBufferPass();
+  vtkTextureObject* depth = gbuffer->GetDepthTexture();
   internal.StrokeTexture->Activate();
   depth->Activate();
   program->SetUniformi("strokeTexture", internal.StrokeTexture->GetTextureUnit());
   program->SetUniformi("depthTexture", depth->GetTextureUnit());
   program->SetUniform3f("faceColor", this->FaceColor);
-  int origin[2] = { 0, 0 };
-  vtkNPRViewportOrigin(state, origin);
   program->SetUniform2i("viewportOrigin", origin);
   if (gbuffer->GetDepthRemapped())
   {
     program->SetUniform2f("nprDepthRemap", gbuffer->GetDepthRemap());
   }
-  vtkNPRCompositeState compositeState(glState);
-  compositeState.Apply(origin, width, height);
-  glState->vtkglDisable(GL_SCISSOR_TEST);
   internal.Composite.Render();
   internal.StrokeTexture->Deactivate();
   depth->Deactivate();
-  this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
-  vtkOpenGLCheckErrorMacro("failed after vtkNPRDrawingPass::Render");
+  return true;
 }
 
-void vtkNPRDrawingPass::ReleaseGraphicsResources(vtkWindow* window)
+void vtkNPRDrawingPass::ReleaseEffectResources(vtkWindow* window)
 {
   Internals& internal = *this->Internal;
   internal.Composite.Release(window);

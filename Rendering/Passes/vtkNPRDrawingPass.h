@@ -33,24 +33,24 @@
 #ifndef vtkNPRDrawingPass_h
 #define vtkNPRDrawingPass_h
 
-#include "vtkRenderPass.h"
+#include "vtkNPRImageEffectPass.h"
 #include "vtkRenderingNPRModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
+#include <string> // for std::string
 
 class vtkNPRDrawingLines;
 class vtkNPREdgePass;
+class vtkNPRGBufferPass;
+class vtkRenderer;
 class vtkPolyData;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRDrawingPass : public vtkRenderPass
+class VTKRENDERINGNPR_EXPORT vtkNPRDrawingPass : public vtkNPRImageEffectPass
 {
 public:
   static vtkNPRDrawingPass* New();
-  vtkTypeMacro(vtkNPRDrawingPass, vtkRenderPass);
+  vtkTypeMacro(vtkNPRDrawingPass, vtkNPRImageEffectPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  void Render(const vtkRenderState* state) override;
-  void ReleaseGraphicsResources(vtkWindow* window) override;
 
   ///@{
   /**
@@ -126,6 +126,14 @@ protected:
   vtkNPRDrawingPass();
   ~vtkNPRDrawingPass() override;
 
+  // The steps of the frame (vtkNPRImageEffectPass).
+  vtkNPRGBufferPass* GetGBuffer() override;
+  bool UpdateImages(const vtkRenderState* state) override;
+  std::string GetCompositeKey(vtkRenderer* renderer) override;
+  void GetCompositeRectangle(vtkRenderer* renderer, int rect[4]) override;
+  bool DrawComposite(const vtkRenderState* state, const int origin[2]) override;
+  void ReleaseEffectResources(vtkWindow* window) override;
+
   vtkNPREdgePass* EdgePass = nullptr;
   bool HiddenLines = false;
   double FaceColor[3] = { 1.0, 1.0, 1.0 };
@@ -137,6 +145,10 @@ protected:
 private:
   vtkNPRDrawingPass(const vtkNPRDrawingPass&) = delete;
   void operator=(const vtkNPRDrawingPass&) = delete;
+
+  // The strokes of the meshes for this renderer, rasterised at width x height; false on error.
+  bool UpdateStrokes(vtkRenderer* renderer, int width, int height);
+  std::string GetDrawingDefines(vtkRenderer* renderer) const;
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

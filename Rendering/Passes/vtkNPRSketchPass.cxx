@@ -11,11 +11,11 @@
 #include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkNPRQuadProgram.h"
+#include "vtkNPRRenderTarget.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLError.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkPointData.h"
@@ -219,7 +219,8 @@ struct vtkNPRSketchPass::Internals
 {
   vtkNPRQuadProgram Sketch;
   std::string Source;
-  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
+  vtkNPRRenderTarget Target;
+  vtkTextureObject* Noise = nullptr; // this frame's: the screen tile or the surface noise field
   vtkTextureObject* CoverageTexture = nullptr;
   // What the coverage texture was computed from: the G-buffer's content and the edge pass's
   // settings, at a line width and size; unchanged frames reuse it.
@@ -259,8 +260,7 @@ vtkNPRSketchPass::~vtkNPRSketchPass()
   for (vtkObject* object : { static_cast<vtkObject*>(this->Internal->CoverageTexture),
          static_cast<vtkObject*>(this->Internal->NoiseTexture),
          static_cast<vtkObject*>(this->Internal->SurfaceNoiseTexture),
-         static_cast<vtkObject*>(this->Internal->NoiseFieldTexture),
-         static_cast<vtkObject*>(this->Internal->Framebuffer) })
+         static_cast<vtkObject*>(this->Internal->NoiseFieldTexture) })
   {
     if (object)
     {
@@ -360,31 +360,36 @@ void vtkNPRSketchPass::GetDisplacement(
   displacement[1] = amplitude * (m[2] * n[0] + m[3] * n[1]);
 }
 
-void vtkNPRSketchPass::Render(const vtkRenderState* state)
+vtkNPRGBufferPass* vtkNPRSketchPass::GetGBuffer()
 {
-  vtkOpenGLClearErrorMacro();
-  this->NumberOfRenderedProps = 0;
   vtkNPRGBufferPass* gbuffer = this->EdgePass ? this->EdgePass->GetGBufferPass() : nullptr;
   if (!gbuffer)
   {
     vtkWarningMacro("no edge pass with a G-buffer: nothing drawn");
-    return;
   }
-  if (gbuffer->GetLastRenderWasSelection() || !gbuffer->GetHasContent())
-  {
-    return; // a picking render, or nothing was drawn
-  }
+  return gbuffer;
+}
+
+bool vtkNPRSketchPass::UpdateImages(const vtkRenderState* state)
+{
+  vtkRenderer* renderer = state->GetRenderer();
+  this->UpdateCoverage(state);
+  const double reach =
+    this->GetEffectiveUncertainty(renderer) + this->EdgePass->GetEffectiveLineWidth(renderer) + 1.0;
+  this->Internal->Noise = this->NoiseSpace == SURFACE
+    ? this->RenderSurfaceNoise(state, reach, this->GetSurfaceNoiseBlock(renderer))
+    : this->PrepareScreenNoise(static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow()));
+  return this->Internal->Noise != nullptr;
+}
+
+void vtkNPRSketchPass::UpdateCoverage(const vtkRenderState* state)
+{
+  Internals& internal = *this->Internal;
   vtkRenderer* renderer = state->GetRenderer();
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  vtkOpenGLState* glState = window->GetState();
-  Internals& internal = *this->Internal;
-  vtkTextureObject* color = gbuffer->GetColorTexture();
-  vtkTextureObject* depth = gbuffer->GetDepthTexture();
-  const int width = depth->GetWidth();
-  const int height = depth->GetHeight();
-
-  // ---- The lines' coverage and depth, unperturbed, into a texture of the G-buffer's size,
-  // recomputed only when the G-buffer or the line settings changed ----
+  vtkNPRGBufferPass* gbuffer = this->EdgePass->GetGBufferPass();
+  const int width = gbuffer->GetDepthTexture()->GetWidth();
+  const int height = gbuffer->GetDepthTexture()->GetHeight();
   if (!internal.CoverageTexture)
   {
     internal.CoverageTexture =
@@ -393,85 +398,125 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
     internal.CoverageTexture->SetFormat(GL_RGBA);
     internal.CoverageTexture->SetDataType(GL_FLOAT);
     internal.CoverageTexture->Allocate2D(width, height, 4, VTK_FLOAT);
-    internal.Framebuffer = vtkOpenGLFramebufferObject::New();
-    internal.Framebuffer->SetContext(window);
   }
   const double lineWidth = this->EdgePass->GetEffectiveLineWidth(renderer);
-  const bool coverageCurrent = internal.CoverageValid &&
-    internal.CoverageContentVersion == gbuffer->GetContentVersion() &&
+  if (internal.CoverageValid && internal.CoverageContentVersion == gbuffer->GetContentVersion() &&
     internal.CoverageEdgeTime == this->EdgePass->GetMTime() &&
     internal.CoverageLineWidth == lineWidth &&
     internal.CoverageTexture->GetWidth() == static_cast<unsigned int>(width) &&
-    internal.CoverageTexture->GetHeight() == static_cast<unsigned int>(height);
-  if (!coverageCurrent)
-  {
-    internal.CoverageTexture->Resize(width, height);
-    vtkOpenGLState::ScopedglViewport viewportSaver(glState);
-    vtkOpenGLState::ScopedglClearColor clearColorSaver(glState);
-    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
-    glState->PushFramebufferBindings();
-    internal.Framebuffer->Bind();
-    internal.Framebuffer->AddColorAttachment(0, internal.CoverageTexture);
-    internal.Framebuffer->ActivateDrawBuffers(1);
-    internal.Framebuffer->StartNonOrtho(width, height);
-    glState->vtkglViewport(0, 0, width, height);
-    glState->vtkglDisable(GL_SCISSOR_TEST);
-    glState->vtkglClearColor(0.0, 0.0, 0.0, 1.0); // no line, far depth
-    glState->vtkglClear(GL_COLOR_BUFFER_BIT);
-    this->EdgePass->RenderLineCoverage(state);
-    internal.Framebuffer->RemoveColorAttachments(1);
-    glState->PopFramebufferBindings();
-    internal.CoverageValid = true;
-    internal.CoverageContentVersion = gbuffer->GetContentVersion();
-    internal.CoverageEdgeTime = this->EdgePass->GetMTime();
-    internal.CoverageLineWidth = lineWidth;
-  }
-
-  // ---- The noise: the screen tile, or the surface noise of each block of pixels ----
-  const bool surfaceNoise = this->NoiseSpace == SURFACE;
-  const double amplitude = this->GetEffectiveUncertainty(renderer);
-  const int block = this->GetSurfaceNoiseBlock(renderer);
-  vtkTextureObject* noiseTexture = surfaceNoise
-    ? this->RenderSurfaceNoise(state, amplitude + lineWidth + 1.0, block)
-    : this->PrepareScreenNoise(window);
-  if (!noiseTexture)
+    internal.CoverageTexture->GetHeight() == static_cast<unsigned int>(height))
   {
     return;
   }
+  // The lines' coverage and depth, unperturbed, at the G-buffer's size.
+  internal.CoverageTexture->Resize(width, height);
+  {
+    vtkNPRRenderTarget::Scope target(
+      internal.Target, window, { internal.CoverageTexture }, nullptr, width, height);
+    target.Clear(0.0, 0.0, 0.0, 1.0); // no line, far depth
+    this->EdgePass->RenderLineCoverage(state);
+  }
+  internal.CoverageValid = true;
+  internal.CoverageContentVersion = gbuffer->GetContentVersion();
+  internal.CoverageEdgeTime = this->EdgePass->GetMTime();
+  internal.CoverageLineWidth = lineWidth;
+}
 
-  // ---- The sketch into the current framebuffer ----
+std::string vtkNPRSketchPass::GetSketchDefines() const
+{
   std::ostringstream defines;
   defines << "#define NPR_PAPER " << (this->Paper ? 1 : 0) << "\n#define NPR_REMAPPED_DEPTH "
-          << (gbuffer->GetDepthRemapped() ? 1 : 0) << "\n#define NPR_SURFACE_NOISE "
-          << (surfaceNoise ? 1 : 0) << "\n";
+          << (this->EdgePass->GetGBufferPass()->GetDepthRemapped() ? 1 : 0)
+          << "\n#define NPR_SURFACE_NOISE " << (this->NoiseSpace == SURFACE ? 1 : 0) << "\n";
+  return defines.str();
+}
+
+std::string vtkNPRSketchPass::GetCompositeKey(vtkRenderer* renderer)
+{
+  // The images follow the G-buffer's content (in the frame's key) and these settings.
+  std::ostringstream key;
+  key.precision(17);
+  key << this->GetSketchDefines() << this->GetMTime() << " " << this->EdgePass->GetMTime() << " "
+      << this->GetEffectiveUncertainty(renderer) << " "
+      << this->EdgePass->GetEffectiveLineWidth(renderer) << " "
+      << this->GetEffectiveNoiseScale(renderer) << " " << this->GetSurfaceNoiseBlock(renderer)
+      << " " << this->Internal->Noise;
+  return key.str();
+}
+
+void vtkNPRSketchPass::GetCompositeRectangle(vtkRenderer* renderer, int rect[4])
+{
+  vtkNPRGBufferPass* gbuffer = this->EdgePass->GetGBufferPass();
+  const int width = gbuffer->GetDepthTexture()->GetWidth();
+  const int height = gbuffer->GetDepthTexture()->GetHeight();
+  if (this->Paper)
+  {
+    rect[0] = rect[1] = 0;
+    rect[2] = width - 1;
+    rect[3] = height - 1;
+    return;
+  }
+  // The props' projected bounds, grown by the largest displacement.
+  const int* content = gbuffer->GetContentRectangle();
+  const int grow = static_cast<int>(std::ceil(this->GetEffectiveUncertainty(renderer))) + 1;
+  rect[0] = std::max(0, content[0] - grow);
+  rect[1] = std::max(0, content[1] - grow);
+  rect[2] = std::max(rect[0] - 1, std::min(width - 1, content[2] + grow));
+  rect[3] = std::max(rect[1] - 1, std::min(height - 1, content[3] + grow));
+}
+
+bool vtkNPRSketchPass::DrawComposite(const vtkRenderState* state, const int origin[2])
+{
+  Internals& internal = *this->Internal;
+  vtkRenderer* renderer = state->GetRenderer();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   if (internal.Source.empty())
   {
     internal.Source = vtkNPRSketchFS;
     vtkShaderProgram::Substitute(internal.Source, "//NPR::LineColor", vtkNPRLineColor);
     vtkShaderProgram::Substitute(internal.Source, "//NPR::WindowDepth", vtkNPRWindowDepth);
   }
-  vtkShaderProgram* program = internal.Sketch.Ready(window, internal.Source, defines.str());
+  vtkShaderProgram* program =
+    internal.Sketch.Ready(window, internal.Source, this->GetSketchDefines());
   if (!program)
   {
     vtkErrorMacro("the sketch shader did not compile");
-    return;
+    return false;
   }
-  color->Activate();
-  depth->Activate();
-  internal.CoverageTexture->Activate();
-  noiseTexture->Activate();
-  program->SetUniformi("colorTexture", color->GetTextureUnit());
-  program->SetUniformi("depthTexture", depth->GetTextureUnit());
-  program->SetUniformi("coverageTexture", internal.CoverageTexture->GetTextureUnit());
-  program->SetUniformi("noiseTexture", noiseTexture->GetTextureUnit());
-  if (surfaceNoise)
+  vtkNPRGBufferPass* gbuffer = this->EdgePass->GetGBufferPass();
+  vtkTextureObject* textures[4] = { gbuffer->GetColorTexture(), gbuffer->GetDepthTexture(),
+    internal.CoverageTexture, internal.Noise };
+  for (vtkTextureObject* texture : textures)
   {
-    program->SetUniformf("noiseBlock", static_cast<float>(block));
+    texture->Activate();
+  }
+  this->SetSketchUniforms(program, renderer, origin);
+  internal.Sketch.Render();
+  for (vtkTextureObject* texture : textures)
+  {
+    texture->Deactivate();
+  }
+  return true;
+}
+
+void vtkNPRSketchPass::SetSketchUniforms(
+  vtkShaderProgram* program, vtkRenderer* renderer, const int origin[2])
+{
+  Internals& internal = *this->Internal;
+  vtkNPRGBufferPass* gbuffer = this->EdgePass->GetGBufferPass();
+  program->SetUniformi("colorTexture", gbuffer->GetColorTexture()->GetTextureUnit());
+  program->SetUniformi("depthTexture", gbuffer->GetDepthTexture()->GetTextureUnit());
+  program->SetUniformi("coverageTexture", internal.CoverageTexture->GetTextureUnit());
+  program->SetUniformi("noiseTexture", internal.Noise->GetTextureUnit());
+  if (this->NoiseSpace == SURFACE)
+  {
+    program->SetUniformf("noiseBlock", static_cast<float>(this->GetSurfaceNoiseBlock(renderer)));
   }
   else
   {
     program->SetUniformf("noiseScale", static_cast<float>(this->GetEffectiveNoiseScale(renderer)));
   }
+  const double amplitude = this->GetEffectiveUncertainty(renderer);
   for (int which = 0; which < 2; ++which)
   {
     double m[4];
@@ -487,38 +532,11 @@ void vtkNPRSketchPass::Render(const vtkRenderState* state)
   program->SetUniform3f("silhouetteColor", this->EdgePass->GetSilhouetteColor());
   program->SetUniform3f("creaseColor", this->EdgePass->GetCreaseColor());
   program->SetUniform3f("contourColor", this->EdgePass->GetContourColor());
-  int origin[2];
-  vtkNPRViewportOrigin(state, origin);
   program->SetUniform2i("viewportOrigin", origin);
   if (gbuffer->GetDepthRemapped())
   {
     program->SetUniform2f("nprDepthRemap", gbuffer->GetDepthRemap());
   }
-
-  vtkNPRCompositeState compositeState(glState);
-  compositeState.Apply(origin, width, height);
-  if (this->Paper)
-  {
-    glState->vtkglScissor(origin[0], origin[1], width, height);
-  }
-  else
-  {
-    // The props' projected bounds, grown by the largest displacement.
-    const int* rect = gbuffer->GetContentRectangle();
-    const int grow = static_cast<int>(std::ceil(amplitude)) + 1;
-    const int x0 = std::max(0, rect[0] - grow), y0 = std::max(0, rect[1] - grow);
-    const int x1 = std::min(width - 1, rect[2] + grow), y1 = std::min(height - 1, rect[3] + grow);
-    glState->vtkglScissor(
-      origin[0] + x0, origin[1] + y0, std::max(0, x1 - x0 + 1), std::max(0, y1 - y0 + 1));
-  }
-  internal.Sketch.Render();
-
-  color->Deactivate();
-  depth->Deactivate();
-  internal.CoverageTexture->Deactivate();
-  noiseTexture->Deactivate();
-  this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
-  vtkOpenGLCheckErrorMacro("failed after vtkNPRSketchPass::Render");
 }
 
 vtkTextureObject* vtkNPRSketchPass::PrepareScreenNoise(vtkOpenGLRenderWindow* window)
@@ -556,7 +574,6 @@ vtkTextureObject* vtkNPRSketchPass::RenderSurfaceNoise(
   Internals& internal = *this->Internal;
   vtkRenderer* renderer = state->GetRenderer();
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  vtkOpenGLState* glState = window->GetState();
   vtkNPRGBufferPass* gbuffer = this->EdgePass->GetGBufferPass();
   vtkTextureObject* depth = gbuffer->GetDepthTexture();
   const int width = (static_cast<int>(depth->GetWidth()) + block - 1) / block;
@@ -570,21 +587,38 @@ vtkTextureObject* vtkNPRSketchPass::RenderSurfaceNoise(
     internal.NoiseFieldTexture->SetDataType(GL_FLOAT);
     internal.NoiseFieldTexture->Allocate2D(width, height, 2, VTK_FLOAT);
   }
-  const bool current = internal.NoiseFieldValid &&
+  if (internal.NoiseFieldValid &&
     internal.NoiseFieldContentVersion == gbuffer->GetContentVersion() &&
     internal.NoiseFieldTime == this->GetMTime() &&
     internal.NoiseFieldEdgeTime == this->EdgePass->GetMTime() &&
     internal.NoiseFieldBlock == block &&
     internal.NoiseFieldTexture->GetWidth() == static_cast<unsigned int>(width) &&
-    internal.NoiseFieldTexture->GetHeight() == static_cast<unsigned int>(height);
-  if (current)
+    internal.NoiseFieldTexture->GetHeight() == static_cast<unsigned int>(height))
   {
     return internal.NoiseFieldTexture;
   }
+  vtkShaderProgram* program = this->ReadyNoiseFieldProgram(window, renderer);
+  if (!program)
+  {
+    return nullptr;
+  }
+  internal.NoiseFieldTexture->Resize(width, height);
+  this->DrawNoiseField(state, program, reach, block);
+  internal.NoiseFieldValid = true;
+  internal.NoiseFieldContentVersion = gbuffer->GetContentVersion();
+  internal.NoiseFieldTime = this->GetMTime();
+  internal.NoiseFieldEdgeTime = this->EdgePass->GetMTime();
+  internal.NoiseFieldBlock = block;
+  return internal.NoiseFieldTexture;
+}
 
-  vtkTextureObject* tile = this->PrepareSurfaceNoiseTile(window);
+vtkShaderProgram* vtkNPRSketchPass::ReadyNoiseFieldProgram(
+  vtkOpenGLRenderWindow* window, vtkRenderer* renderer)
+{
+  Internals& internal = *this->Internal;
   std::ostringstream defines;
-  defines << "#define NPR_REMAPPED_DEPTH " << (gbuffer->GetDepthRemapped() ? 1 : 0)
+  defines << "#define NPR_REMAPPED_DEPTH "
+          << (this->EdgePass->GetGBufferPass()->GetDepthRemapped() ? 1 : 0)
           << "\n#define NPR_PERSPECTIVE "
           << (renderer->GetActiveCamera()->GetParallelProjection() ? 0 : 1) << "\n";
   if (internal.NoiseFieldSource.empty())
@@ -598,36 +632,32 @@ vtkTextureObject* vtkNPRSketchPass::RenderSurfaceNoise(
   if (!program)
   {
     vtkErrorMacro("the sketch's surface noise shader did not compile");
-    return nullptr;
   }
-  internal.NoiseFieldTexture->Resize(width, height);
-  vtkOpenGLState::ScopedglViewport viewportSaver(glState);
-  vtkOpenGLState::ScopedglScissor scissorSaver(glState);
-  vtkOpenGLState::ScopedglClearColor clearColorSaver(glState);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(glState, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(glState, GL_DEPTH_TEST);
-  glState->PushFramebufferBindings();
-  internal.Framebuffer->Bind();
-  internal.Framebuffer->AddColorAttachment(0, internal.NoiseFieldTexture);
-  internal.Framebuffer->ActivateDrawBuffers(1);
-  internal.Framebuffer->StartNonOrtho(width, height);
-  glState->vtkglViewport(0, 0, width, height);
-  glState->vtkglDisable(GL_BLEND);
-  glState->vtkglDisable(GL_DEPTH_TEST);
+  return program;
+}
+
+void vtkNPRSketchPass::DrawNoiseField(
+  const vtkRenderState* state, vtkShaderProgram* program, double reach, int block)
+{
+  Internals& internal = *this->Internal;
+  vtkRenderer* renderer = state->GetRenderer();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  vtkNPRGBufferPass* gbuffer = this->EdgePass->GetGBufferPass();
+  vtkTextureObject* depth = gbuffer->GetDepthTexture();
+  vtkTextureObject* tile = this->PrepareSurfaceNoiseTile(window);
+  const int width = internal.NoiseFieldTexture->GetWidth();
+  const int height = internal.NoiseFieldTexture->GetHeight();
+  vtkNPRRenderTarget::Scope target(
+    internal.Target, window, { internal.NoiseFieldTexture }, nullptr, width, height);
+  target.Clear(0.0, 0.0, 0.0, 0.0); // no displacement where nothing is near
   // Only the blocks within reach of the props' projected bounds: elsewhere no line or fill can
   // land, and most of this pass's work is the search for a surface from the empty blocks.
-  const int* rect = gbuffer->GetContentRectangle();
+  const int* content = gbuffer->GetContentRectangle();
   const int grow = static_cast<int>(std::ceil(reach)) + 2 * block;
-  const int x0 = std::max(0, (rect[0] - grow) / block);
-  const int y0 = std::max(0, (rect[1] - grow) / block);
-  const int x1 = std::min(width - 1, (rect[2] + grow) / block);
-  const int y1 = std::min(height - 1, (rect[3] + grow) / block);
-  glState->vtkglDisable(GL_SCISSOR_TEST);
-  glState->vtkglClearColor(0.0, 0.0, 0.0, 0.0); // no displacement where nothing is near
-  glState->vtkglClear(GL_COLOR_BUFFER_BIT);
-  glState->vtkglEnable(GL_SCISSOR_TEST);
-  glState->vtkglScissor(x0, y0, std::max(0, x1 - x0 + 1), std::max(0, y1 - y0 + 1));
+  const int blocks[4] = { std::max(0, (content[0] - grow) / block),
+    std::max(0, (content[1] - grow) / block), std::min(width - 1, (content[2] + grow) / block),
+    std::min(height - 1, (content[3] + grow) / block) };
+  target.ScissorTo(blocks);
   depth->Activate();
   tile->Activate();
   program->SetUniformi("depthTexture", depth->GetTextureUnit());
@@ -641,14 +671,6 @@ vtkTextureObject* vtkNPRSketchPass::RenderSurfaceNoise(
   internal.NoiseField.Render();
   depth->Deactivate();
   tile->Deactivate();
-  internal.Framebuffer->RemoveColorAttachments(1);
-  glState->PopFramebufferBindings();
-  internal.NoiseFieldValid = true;
-  internal.NoiseFieldContentVersion = gbuffer->GetContentVersion();
-  internal.NoiseFieldTime = this->GetMTime();
-  internal.NoiseFieldEdgeTime = this->EdgePass->GetMTime();
-  internal.NoiseFieldBlock = block;
-  return internal.NoiseFieldTexture;
 }
 
 vtkTextureObject* vtkNPRSketchPass::PrepareSurfaceNoiseTile(vtkOpenGLRenderWindow* window)
@@ -722,9 +744,10 @@ void vtkNPRSketchPass::SetSurfaceNoiseUniforms(
   program->SetUniformf("noiseReach", static_cast<float>(reach));
 }
 
-void vtkNPRSketchPass::ReleaseGraphicsResources(vtkWindow* window)
+void vtkNPRSketchPass::ReleaseEffectResources(vtkWindow* window)
 {
   Internals& internal = *this->Internal;
+  internal.Noise = nullptr;
   internal.CoverageValid = false;
   internal.NoiseFieldValid = false;
   internal.Sketch.Release(window);
@@ -739,12 +762,7 @@ void vtkNPRSketchPass::ReleaseGraphicsResources(vtkWindow* window)
       *texture = nullptr;
     }
   }
-  if (internal.Framebuffer)
-  {
-    internal.Framebuffer->ReleaseGraphicsResources(window);
-    internal.Framebuffer->Delete();
-    internal.Framebuffer = nullptr;
-  }
+  internal.Target.ReleaseGraphicsResources(window);
 }
 
 void vtkNPRSketchPass::PrintSelf(ostream& os, vtkIndent indent)

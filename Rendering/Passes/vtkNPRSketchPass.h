@@ -54,27 +54,26 @@
 #ifndef vtkNPRSketchPass_h
 #define vtkNPRSketchPass_h
 
-#include "vtkRenderPass.h"
+#include "vtkNPRImageEffectPass.h"
 #include "vtkRenderingNPRModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
+#include <string> // for std::string
 
 class vtkImageData;
 class vtkNPREdgePass;
+class vtkNPRGBufferPass;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRSketchPass : public vtkRenderPass
+class VTKRENDERINGNPR_EXPORT vtkNPRSketchPass : public vtkNPRImageEffectPass
 {
 public:
   static vtkNPRSketchPass* New();
-  vtkTypeMacro(vtkNPRSketchPass, vtkRenderPass);
+  vtkTypeMacro(vtkNPRSketchPass, vtkNPRImageEffectPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  void Render(const vtkRenderState* state) override;
-  void ReleaseGraphicsResources(vtkWindow* window) override;
 
   ///@{
   /**
@@ -179,6 +178,14 @@ protected:
   vtkNPRSketchPass();
   ~vtkNPRSketchPass() override;
 
+  // The steps of the frame (vtkNPRImageEffectPass).
+  vtkNPRGBufferPass* GetGBuffer() override;
+  bool UpdateImages(const vtkRenderState* state) override;
+  std::string GetCompositeKey(vtkRenderer* renderer) override;
+  void GetCompositeRectangle(vtkRenderer* renderer, int rect[4]) override;
+  bool DrawComposite(const vtkRenderState* state, const int origin[2]) override;
+  void ReleaseEffectResources(vtkWindow* window) override;
+
   vtkNPREdgePass* EdgePass = nullptr;
   double Uncertainty = 3.0;
   unsigned int NoiseSeed = 1;
@@ -193,11 +200,19 @@ private:
   vtkNPRSketchPass(const vtkNPRSketchPass&) = delete;
   void operator=(const vtkNPRSketchPass&) = delete;
 
+  // The lines' coverage and depth (vtkNPREdgePass::RenderLineCoverage), drawn when the G-buffer or
+  // the edge pass's settings changed.
+  void UpdateCoverage(const vtkRenderState* state);
+  std::string GetSketchDefines() const;
+  void SetSketchUniforms(vtkShaderProgram* program, vtkRenderer* renderer, const int origin[2]);
   vtkTextureObject* PrepareScreenNoise(vtkOpenGLRenderWindow* window);
   vtkTextureObject* PrepareSurfaceNoiseTile(vtkOpenGLRenderWindow* window);
   // The surface noise of each block x block pixels, drawn when the G-buffer or the settings
   // changed; null when its shader did not compile.
   vtkTextureObject* RenderSurfaceNoise(const vtkRenderState* state, double reach, int block);
+  vtkShaderProgram* ReadyNoiseFieldProgram(vtkOpenGLRenderWindow* window, vtkRenderer* renderer);
+  void DrawNoiseField(
+    const vtkRenderState* state, vtkShaderProgram* program, double reach, int block);
   int GetSurfaceNoiseBlock(vtkRenderer* renderer) const;
   void SetSurfaceNoiseUniforms(
     vtkShaderProgram* program, vtkRenderer* renderer, int height, double reach);

@@ -4,7 +4,7 @@
 // frame reuses the G-buffer and the line image, every kind of change redraws once, a line setting
 // recomputes the lines only; only the channels the lines need are written, and nothing for an
 // empty renderer or the shaded style; an unchanged frame copies back the kept composite, bit for
-// bit, and only where that is safe.
+// bit, and only where that is safe, in every style that composites (edges, sketch, drawing).
 //
 // usage: TestEdgePassGBuffer CASE [DATA_DIR]   (CASE: see the table at the end of this file)
 #include "nprTesting.h"
@@ -14,8 +14,12 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLightCollection.h"
+#include "vtkNPRDrawingPass.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
+#include "vtkNPRImageEffectPass.h"
+#include "vtkNPRPass.h"
+#include "vtkNPRSketchPass.h"
 #include "vtkNew.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -172,23 +176,34 @@ std::vector<float> WindowDepths(Scene& scene)
     depths->GetPointer(0), depths->GetPointer(0) + scene.Width * scene.Height);
 }
 
-int KeptComposite()
+// A style's effect pass and the settings whose change must composite again.
+struct KeptStyle
+{
+  int Style;
+  std::function<vtkNPRImageEffectPass*(Scene&)> Effect;
+  std::vector<std::pair<const char*, std::function<void(Scene&)>>> Settings;
+};
+
+// Every frame in which nothing changed is copied back bit for bit (colour and depth); a change
+// of the camera, the background or a setting composites again, as if nothing had been kept.
+int KeptCompositeOf(const KeptStyle& style)
 {
   Scene scene(300, 200);
+  scene.Pass->SetStyle(style.Style);
   vtkSmartPointer<vtkSphereSource> sphere = NewSphere();
   nprAddActor(scene.Renderer, sphere->GetOutputPort(), Grey);
   scene.Renderer->ResetCamera();
-  vtkNPREdgePass* edges = scene.Edges();
+  vtkNPRImageEffectPass* effect = style.Effect(scene);
   const nprImageTolerance exact = { 0, 0.0 };
 
   auto first = scene.Render();
   auto second = scene.Render(); // unchanged: composited again, and kept
   const std::vector<float> composited = WindowDepths(scene);
-  NPR_CHECK(edges->GetNumberOfKeptCompositeRestores() == 0,
+  NPR_CHECK(effect->GetNumberOfKeptCompositeRestores() == 0,
     "the first unchanged frame had nothing kept to restore, yet restored");
   auto third = scene.Render(); // copied back
-  NPR_CHECK(edges->GetNumberOfKeptCompositeRestores() == 1,
-    "the second unchanged frame was not copied back: " << edges->GetNumberOfKeptCompositeRestores()
+  NPR_CHECK(effect->GetNumberOfKeptCompositeRestores() == 1,
+    "the second unchanged frame was not copied back: " << effect->GetNumberOfKeptCompositeRestores()
                                                        << " restores");
   NPR_CHECK(nprCompareImages(third, first, exact).DifferingPixels == 0,
     "the copied-back frame differs from the composited one");
@@ -206,47 +221,70 @@ int KeptComposite()
   scene.Camera()->Azimuth(20);
   scene.Camera()->Elevation(10);
   auto moved = scene.Render();
-  NPR_CHECK(edges->GetNumberOfKeptCompositeRestores() == 1, "a changed frame was copied back");
+  NPR_CHECK(effect->GetNumberOfKeptCompositeRestores() == 1, "a changed frame was copied back");
   NPR_CHECK(nprCompareImages(moved, first, exact).DifferingPixels > 100, "the camera did not move");
   auto movedAgain = scene.Render();
-  NPR_CHECK(edges->GetNumberOfKeptCompositeRestores() == 2,
+  NPR_CHECK(effect->GetNumberOfKeptCompositeRestores() == 2,
     "the frame after a change was not copied back from the changed frame's copy");
   NPR_CHECK(nprCompareImages(movedAgain, moved, exact).DifferingPixels == 0,
     "the copy of a changed frame differs from it");
 
   // What the composite draws over, or with, changed: composited again, as if nothing were kept.
-  const std::pair<const char*, std::function<void()>> changes[] = {
-    { "background colour", [&] { scene.Renderer->SetBackground(0.2, 0.3, 0.4); } },
+  std::vector<std::pair<const char*, std::function<void(Scene&)>>> changes = {
+    { "background colour", [](Scene& s) { s.Renderer->SetBackground(0.2, 0.3, 0.4); } },
     { "gradient background",
-      [&]
+      [](Scene& s)
       {
-        scene.Renderer->SetBackground2(0.9, 0.5, 0.1);
-        scene.Renderer->GradientBackgroundOn();
+        s.Renderer->SetBackground2(0.9, 0.5, 0.1);
+        s.Renderer->GradientBackgroundOn();
       } },
-    { "silhouette colour", [&] { edges->SetSilhouetteColor(1.0, 0.0, 0.0); } },
-    { "line width", [&] { edges->SetLineWidth(3.0); } },
   };
+  changes.insert(changes.end(), style.Settings.begin(), style.Settings.end());
   for (const auto& change : changes)
   {
     scene.Render(); // kept
-    const int restores = edges->GetNumberOfKeptCompositeRestores();
-    change.second();
+    const int restores = effect->GetNumberOfKeptCompositeRestores();
+    change.second(scene);
     auto changed = scene.Render();
-    NPR_CHECK(edges->GetNumberOfKeptCompositeRestores() == restores,
+    NPR_CHECK(effect->GetNumberOfKeptCompositeRestores() == restores,
       "a change of " << change.first << " was copied back from the frame before");
-    edges->KeepUnchangedCompositeOff();
+    effect->KeepUnchangedCompositeOff();
     auto reference = scene.Render();
-    edges->KeepUnchangedCompositeOn();
+    effect->KeepUnchangedCompositeOn();
     NPR_CHECK(nprCompareImages(changed, reference, exact).DifferingPixels == 0,
       "after a change of " << change.first << " the frame differs from one drawn in full");
   }
-  edges->KeepUnchangedCompositeOff();
-  const int restores = edges->GetNumberOfKeptCompositeRestores();
+  effect->KeepUnchangedCompositeOff();
+  const int restores = effect->GetNumberOfKeptCompositeRestores();
   scene.Render();
   scene.Render();
-  NPR_CHECK(edges->GetNumberOfKeptCompositeRestores() == restores,
+  NPR_CHECK(effect->GetNumberOfKeptCompositeRestores() == restores,
     "KeepUnchangedCompositeOff still copied back");
   return nprTestResult();
+}
+
+int KeptComposite()
+{
+  return KeptCompositeOf({ vtkNPRPass::EDGES, [](Scene& s) { return s.Edges(); },
+    { { "silhouette colour", [](Scene& s) { s.Edges()->SetSilhouetteColor(1.0, 0.0, 0.0); } },
+      { "line width", [](Scene& s) { s.Edges()->SetLineWidth(3.0); } } } });
+}
+
+int KeptCompositeSketch()
+{
+  return KeptCompositeOf({ vtkNPRPass::SKETCH, [](Scene& s) { return s.Sketch(); },
+    { { "silhouette colour", [](Scene& s) { s.Edges()->SetSilhouetteColor(1.0, 0.0, 0.0); } },
+      { "uncertainty", [](Scene& s) { s.Sketch()->SetUncertainty(5.0); } },
+      { "noise seed", [](Scene& s) { s.Sketch()->SetNoiseSeed(7); } },
+      { "paper", [](Scene& s) { s.Sketch()->PaperOn(); } } } });
+}
+
+int KeptCompositeDrawing()
+{
+  return KeptCompositeOf({ vtkNPRPass::DRAWING, [](Scene& s) { return s.Pass->GetDrawingPass(); },
+    { { "face colour", [](Scene& s) { s.Pass->GetDrawingPass()->SetFaceColor(0.9, 0.8, 0.7); } },
+      { "line width", [](Scene& s) { s.Edges()->SetLineWidth(3.0); } },
+      { "hidden lines", [](Scene& s) { s.Pass->GetDrawingPass()->HiddenLinesOn(); } } } });
 }
 
 // Where what lies under the composite is not the renderer's own clear, nothing is kept: a
@@ -296,6 +334,8 @@ int main(int argc, char* argv[])
     { "channels", Channels },
     { "kept-composite", KeptComposite },
     { "kept-composite-unsafe", KeptCompositeUnsafe },
+    { "kept-composite-sketch", KeptCompositeSketch },
+    { "kept-composite-drawing", KeptCompositeDrawing },
   };
   return nprRunTestCase(argc, argv, cases);
 }
