@@ -152,7 +152,9 @@ SPEED_METHODS = (
     "vtkNPRPass edges, silhouettes only", "vtkNPRPass edges, every line type off",
     "vtkNPRPass edges, creases from face normals", "vtkNPRPass edges, smooth silhouettes on",
     "vtkNPRPass edges, suggestive contours on", "vtkNPRPass inked, 1 px wireframe",
-    "vtkNPRPass edges, unchanged frame drawn again", "vtkSobelGradientMagnitudePass",
+    "vtkNPRPass edges, unchanged frame drawn again",
+    "vtkNPRPass sketch, unchanged frame drawn again",
+    "vtkNPRPass drawing, unchanged frame drawn again", "vtkSobelGradientMagnitudePass",
     "vtkOutlineGlowPass", "vtkSSAOPass", "vtkEDLShading",
     "vtkPolyDataSilhouette re-extracted + surface",
     "vtkNPRFeatureLines per camera change (SetCamera + Update)")

@@ -32,9 +32,9 @@ With --drawing: each scene's technical drawing written as SVG and PDF by a new e
 size, strokes against feature edges, the files rasterised by rsvg-convert and pdftoppm against the
 reference mask), and the drawing style's frame times; writes OUT/drawing.csv and OUT/drawing.md
 (default scenes cad,rotor,bunny,isosurface,bunny1m, size 1920x1080).
-With --speed: the plain VTK frame, every style, an unchanged edges frame and VTK's own passes
-(vtkSobelGradientMagnitudePass, vtkOutlineGlowPass, vtkSSAOPass, vtkEDLShading, and
-vtkPolyDataSilhouette re-extracted every frame), interleaved frame by frame in one window while
+With --speed: the plain VTK frame, every style, unchanged edges, sketch and drawing frames and
+VTK's own passes (vtkSobelGradientMagnitudePass, vtkOutlineGlowPass, vtkSSAOPass, vtkEDLShading,
+and vtkPolyDataSilhouette re-extracted every frame), interleaved frame by frame in one window while
 the camera turns 1 degree per frame, and vtkNPRFeatureLines per camera change; writes
 OUT/speed.csv and OUT/speed.md (default scenes bunny1m,box, sizes 1920x1080,1024x768, 30 frames,
 3 runs; --quick: box, 320x240, 2 frames, 1 run).

@@ -165,6 +165,10 @@ std::vector<SpeedMethod> MakeMethods()
   // Its own pass, so that the edges method above draws every frame from scratch.
   methods.push_back(
     { "unchanged", "vtkNPRPass edges, unchanged frame drawn again", NPRStyle("edges"), true });
+  methods.push_back({ "unchanged-sketch", "vtkNPRPass sketch, unchanged frame drawn again",
+    NPRStyle("sketch"), true });
+  methods.push_back({ "unchanged-drawing", "vtkNPRPass drawing, unchanged frame drawn again",
+    NPRStyle("drawing"), true });
   methods.push_back(
     { "sobel", "vtkSobelGradientMagnitudePass", OverRenderSteps<vtkSobelGradientMagnitudePass>() });
   methods.push_back({ "glow", "vtkOutlineGlowPass", OverRenderSteps<vtkOutlineGlowPass>() });
