@@ -127,6 +127,69 @@ bool LabelClasses(std::string& svg, const vtkNPRStrokeCounts& counts)
   svg.swap(out);
   return true;
 }
+
+// The renderer's part of its window, rendered again.
+vtkSmartPointer<vtkImageData> GrabRaster(vtkRenderer* renderer)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(renderer->GetRenderWindow());
+  grab->SetViewport(renderer->GetViewport());
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOn();
+  grab->Update();
+  return grab->GetOutput();
+}
+
+// A Cairo surface of the format that writes into `bytes`.
+cairo_surface_t* CreateSurface(int format, std::string& bytes, int width, int height)
+{
+  cairo_surface_t* surface = nullptr;
+  switch (format)
+  {
+    case vtkNPRDrawingExporter::SVG:
+      surface = cairo_svg_surface_create_for_stream(AppendToString, &bytes, width, height);
+      cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PT);
+      break;
+    case vtkNPRDrawingExporter::PDF:
+      surface = cairo_pdf_surface_create_for_stream(AppendToString, &bytes, width, height);
+      cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "vtkNPR");
+      break;
+    default:
+      surface = cairo_ps_surface_create_for_stream(AppendToString, &bytes, width, height);
+      cairo_ps_surface_set_eps(surface, format == vtkNPRDrawingExporter::EPS ? 1 : 0);
+      break;
+  }
+  return surface;
+}
+
+// Paints the raster over the whole width x height of `cr`.
+void PaintRaster(cairo_t* cr, vtkImageData* raster, int width, int height)
+{
+  const int* dimensions = raster->GetDimensions();
+  const int rw = dimensions[0], rh = dimensions[1];
+  cairo_surface_t* image = cairo_image_surface_create(CAIRO_FORMAT_RGB24, rw, rh);
+  unsigned char* data = cairo_image_surface_get_data(image);
+  const int stride = cairo_image_surface_get_stride(image);
+  const auto* rgb = static_cast<const unsigned char*>(raster->GetScalarPointer());
+  const int components = raster->GetNumberOfScalarComponents();
+  for (int j = 0; j < rh; ++j) // VTK's row 0 is the bottom, Cairo's the top
+  {
+    const unsigned char* in = rgb + static_cast<size_t>(rh - 1 - j) * rw * components;
+    auto* out = reinterpret_cast<std::uint32_t*>(data + static_cast<size_t>(j) * stride);
+    for (int i = 0; i < rw; ++i, in += components)
+    {
+      out[i] = 0xff000000u | (std::uint32_t(in[0]) << 16) | (std::uint32_t(in[1]) << 8) | in[2];
+    }
+  }
+  cairo_surface_mark_dirty(image);
+  cairo_save(cr);
+  cairo_scale(cr, static_cast<double>(width) / rw, static_cast<double>(height) / rh);
+  cairo_set_source_surface(cr, image, 0, 0);
+  cairo_paint(cr);
+  cairo_restore(cr);
+  cairo_surface_destroy(image);
+}
 }
 
 struct vtkNPRDrawingExporter::Internals
@@ -246,6 +309,18 @@ bool vtkNPRDrawingExporter::Fail(unsigned long code, const std::string& message)
   return false;
 }
 
+// What one Write() draws and where, resolved before any work.
+struct vtkNPRDrawingExporter::Target
+{
+  std::string Path;
+  int Format = -1;
+  vtkRenderer* Renderer = nullptr;
+  int Width = 0, Height = 0;
+  vtkNPREdgePass* Edges = nullptr;
+  vtkNPRStrokeStyle Style;
+  bool DrawingStyle = false; // the renderer's vtkNPRPass draws the drawing style
+};
+
 bool vtkNPRDrawingExporter::Write()
 {
   Internals& internal = *this->Internal;
@@ -256,13 +331,43 @@ bool vtkNPRDrawingExporter::Write()
   internal.StrokesTime = internal.WriteTime = 0.0;
 
   // What to write, and where: checked before any work.
+  Target target;
+  if (!this->CheckPath(target) || !this->FindRenderer(target))
+  {
+    return false;
+  }
+  this->ResolveStyle(target);
+  // The raster under the lines: the renderer's part of the window, rendered again.
+  vtkSmartPointer<vtkImageData> raster;
+  if (target.Renderer->GetRenderWindow() &&
+    (this->EmbedImage == 1 || (this->EmbedImage == -1 && !target.DrawingStyle)))
+  {
+    raster = GrabRaster(target.Renderer);
+  }
+  if (!this->ComputeStrokes(target))
+  {
+    return false;
+  }
+  // Painting, into memory: the file is written only once everything succeeded.
+  const Clock::time_point start = Clock::now();
+  std::string bytes;
+  if (!this->Paint(target, raster, bytes) || !this->WriteFile(target.Path, bytes))
+  {
+    return false;
+  }
+  internal.WriteTime = Seconds(start);
+  return true;
+}
+
+bool vtkNPRDrawingExporter::CheckPath(Target& target)
+{
   if (!this->FileName || !*this->FileName)
   {
     return this->Fail(vtkErrorCode::NoFileNameError, "no file name");
   }
-  const std::string path = this->FileName;
-  const int format = GetFormatFromFileName(this->FileName);
-  if (format < 0)
+  const std::string path = target.Path = this->FileName;
+  target.Format = GetFormatFromFileName(this->FileName);
+  if (target.Format < 0)
   {
     return this->Fail(vtkErrorCode::FileFormatError,
       path + ": unsupported extension (supported: " + GetSupportedExtensions() + ")");
@@ -278,6 +383,11 @@ bool vtkNPRDrawingExporter::Write()
     return this->Fail(
       vtkErrorCode::CannotOpenFileError, path + ": no such directory: " + parent.string());
   }
+  return true;
+}
+
+bool vtkNPRDrawingExporter::FindRenderer(Target& target)
+{
   vtkRenderer* renderer = this->Renderer;
   if (!renderer && this->RenderWindow)
   {
@@ -287,11 +397,10 @@ bool vtkNPRDrawingExporter::Write()
   {
     return this->Fail(vtkErrorCode::UnknownError, "no renderer (SetRenderer or SetRenderWindow)");
   }
-  vtkRenderWindow* window = renderer->GetRenderWindow();
   int width = this->Size[0], height = this->Size[1];
   if (width <= 0 || height <= 0)
   {
-    const int* size = window ? renderer->GetSize() : nullptr;
+    const int* size = renderer->GetRenderWindow() ? renderer->GetSize() : nullptr;
     width = size ? size[0] : 0;
     height = size ? size[1] : 0;
   }
@@ -300,131 +409,97 @@ bool vtkNPRDrawingExporter::Write()
     return this->Fail(
       vtkErrorCode::UnknownError, "no size: set Size or put the renderer in a window with a size");
   }
+  target.Renderer = renderer;
+  target.Width = width;
+  target.Height = height;
+  return true;
+}
 
-  // The style: explicit passes, else the renderer's vtkNPRPass, else the defaults.
-  vtkNPRPass* npr = vtkNPRPass::SafeDownCast(renderer->GetPass());
+void vtkNPRDrawingExporter::ResolveStyle(Target& target)
+{
+  // Explicit passes, else the renderer's vtkNPRPass, else the defaults.
+  vtkNPRPass* npr = vtkNPRPass::SafeDownCast(target.Renderer->GetPass());
   vtkNPRDrawingPass* drawing = this->DrawingPass;
-  vtkNPREdgePass* edges = this->EdgePass;
+  target.Edges = this->EdgePass;
   if (npr)
   {
     drawing = drawing ? drawing : npr->GetDrawingPass();
-    edges = edges ? edges : npr->GetEdgePass();
+    target.Edges = target.Edges ? target.Edges : npr->GetEdgePass();
   }
-  const bool drawingStyle =
+  target.DrawingStyle =
     npr && std::strcmp(vtkNPRPass::GetStyleName(npr->GetStyle()), "drawing") == 0;
-  const vtkNPRStrokeStyle style = vtkNPRMakeStrokeStyle(drawing, edges, renderer);
+  target.Style = vtkNPRMakeStrokeStyle(drawing, target.Edges, target.Renderer);
+}
 
-  // The raster under the lines: the renderer's part of the window, rendered again.
-  vtkSmartPointer<vtkImageData> raster;
-  if (window && (this->EmbedImage == 1 || (this->EmbedImage == -1 && !drawingStyle)))
-  {
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
-    grab->SetViewport(renderer->GetViewport());
-    grab->SetInputBufferTypeToRGB();
-    grab->ReadFrontBufferOff();
-    grab->ShouldRerenderOn();
-    grab->Update();
-    raster = grab->GetOutput();
-  }
-
-  // The strokes.
-  Clock::time_point start = Clock::now();
-  vtkNPRDrawingLines* lines = internal.Lines;
-  lines->SetRenderer(renderer);
-  lines->SetSize(width, height);
+bool vtkNPRDrawingExporter::ComputeStrokes(const Target& target)
+{
+  const Clock::time_point start = Clock::now();
+  const vtkNPRStrokeStyle& style = target.Style;
+  vtkNPRDrawingLines* lines = this->Internal->Lines;
+  lines->SetRenderer(target.Renderer);
+  lines->SetSize(target.Width, target.Height);
   lines->SetSilhouettes(style.Silhouettes);
   lines->SetBoundaries(style.Silhouettes);
   lines->SetCreases(style.Creases);
   lines->SetNonManifoldEdges(style.Creases);
-  if (edges)
+  if (target.Edges)
   {
-    lines->SetCreaseAngle(edges->GetCreaseAngle());
+    lines->SetCreaseAngle(target.Edges->GetCreaseAngle());
   }
   lines->SetHiddenLines(style.HiddenLines);
   if (!lines->Update())
   {
     return this->Fail(vtkErrorCode::UnknownError, "cannot compute the strokes");
   }
-  internal.StrokesTime = Seconds(start);
+  this->Internal->StrokesTime = Seconds(start);
+  return true;
+}
 
-  // Painting, into memory: the file is written only once everything succeeded.
-  start = Clock::now();
-  std::string bytes;
-  cairo_surface_t* surface = nullptr;
-  switch (format)
-  {
-    case SVG:
-      surface = cairo_svg_surface_create_for_stream(AppendToString, &bytes, width, height);
-      cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PT);
-      break;
-    case PDF:
-      surface = cairo_pdf_surface_create_for_stream(AppendToString, &bytes, width, height);
-      cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "vtkNPR");
-      break;
-    default:
-      surface = cairo_ps_surface_create_for_stream(AppendToString, &bytes, width, height);
-      cairo_ps_surface_set_eps(surface, format == EPS ? 1 : 0);
-      break;
-  }
+bool vtkNPRDrawingExporter::Paint(const Target& target, vtkImageData* raster, std::string& bytes)
+{
+  Internals& internal = *this->Internal;
+  cairo_surface_t* surface = CreateSurface(target.Format, bytes, target.Width, target.Height);
   cairo_t* cr = cairo_create(surface);
   double background[3];
-  renderer->GetBackground(background);
+  target.Renderer->GetBackground(background);
   cairo_set_source_rgb(cr, background[0], background[1], background[2]);
   cairo_paint(cr);
   if (raster)
   {
-    const int* dimensions = raster->GetDimensions();
-    const int rw = dimensions[0], rh = dimensions[1];
-    cairo_surface_t* image = cairo_image_surface_create(CAIRO_FORMAT_RGB24, rw, rh);
-    unsigned char* data = cairo_image_surface_get_data(image);
-    const int stride = cairo_image_surface_get_stride(image);
-    const auto* rgb = static_cast<const unsigned char*>(raster->GetScalarPointer());
-    const int components = raster->GetNumberOfScalarComponents();
-    for (int j = 0; j < rh; ++j) // VTK's row 0 is the bottom, Cairo's the top
-    {
-      const unsigned char* in = rgb + static_cast<size_t>(rh - 1 - j) * rw * components;
-      auto* out = reinterpret_cast<std::uint32_t*>(data + static_cast<size_t>(j) * stride);
-      for (int i = 0; i < rw; ++i, in += components)
-      {
-        out[i] = 0xff000000u | (std::uint32_t(in[0]) << 16) | (std::uint32_t(in[1]) << 8) | in[2];
-      }
-    }
-    cairo_surface_mark_dirty(image);
-    cairo_save(cr);
-    cairo_scale(cr, static_cast<double>(width) / rw, static_cast<double>(height) / rh);
-    cairo_set_source_surface(cr, image, 0, 0);
-    cairo_paint(cr);
-    cairo_restore(cr);
-    cairo_surface_destroy(image);
+    PaintRaster(cr, raster, target.Width, target.Height);
     internal.Embedded = true;
   }
   std::string error;
-  bool painted = vtkNPRPaintStrokes(cr, lines->GetStrokes(), style, height, internal.Counts, error);
+  bool painted = vtkNPRPaintStrokes(
+    cr, internal.Lines->GetStrokes(), target.Style, target.Height, internal.Counts, error);
   cairo_destroy(cr);
   cairo_surface_finish(surface);
   const cairo_status_t status = cairo_surface_status(surface);
   cairo_surface_destroy(surface);
   if (!painted)
   {
-    return this->Fail(vtkErrorCode::UnknownError, path + ": " + error);
+    return this->Fail(vtkErrorCode::UnknownError, target.Path + ": " + error);
   }
   if (status != CAIRO_STATUS_SUCCESS)
   {
     return this->Fail(
-      vtkErrorCode::UnknownError, path + ": Cairo: " + cairo_status_to_string(status));
+      vtkErrorCode::UnknownError, target.Path + ": Cairo: " + cairo_status_to_string(status));
   }
-  if (format == SVG)
+  if (target.Format == SVG)
   {
     internal.Labelled = LabelClasses(bytes, internal.Counts);
     if (!internal.Labelled)
     {
-      vtkWarningMacro(<< path << ": Cairo's SVG has not the expected form (Cairo "
+      vtkWarningMacro(<< target.Path << ": Cairo's SVG has not the expected form (Cairo "
                       << cairo_version_string()
                       << "): the strokes are written without their class groups");
     }
   }
+  return true;
+}
 
+bool vtkNPRDrawingExporter::WriteFile(const std::string& path, const std::string& bytes)
+{
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
   if (!file)
   {
@@ -438,7 +513,6 @@ bool vtkNPRDrawingExporter::Write()
     std::remove(path.c_str()); // no partial file
     return this->Fail(vtkErrorCode::OutOfDiskSpaceError, path + ": cannot write the file");
   }
-  internal.WriteTime = Seconds(start);
   return true;
 }
 

@@ -45,6 +45,7 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for the error message
 
+class vtkImageData;
 class vtkNPRDrawingLines;
 class vtkNPRDrawingPass;
 class vtkNPREdgePass;
@@ -174,6 +175,15 @@ private:
   void operator=(const vtkNPRDrawingExporter&) = delete;
 
   bool Fail(unsigned long code, const std::string& message);
+
+  // The steps of Write(); each but ResolveStyle() returns false after Fail().
+  struct Target;
+  bool CheckPath(Target& target);
+  bool FindRenderer(Target& target);
+  void ResolveStyle(Target& target);
+  bool ComputeStrokes(const Target& target);
+  bool Paint(const Target& target, vtkImageData* raster, std::string& bytes);
+  bool WriteFile(const std::string& path, const std::string& bytes);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

@@ -8,6 +8,7 @@
 #include "vtkNPRFrameSignature.h"
 #include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
+#include "vtkNPRShaderHook.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLError.h"
@@ -43,7 +44,9 @@ struct vtkNPRGBufferPass::Internals
   // Depth-only mode: geometry from depth, and the copy back into the caller's framebuffer.
   vtkNPRQuadProgram DepthGeometry;
   vtkNPRQuadProgram Copy;
-  vtkNPRShaderCheck Check;
+  // Our code after lighting, where the normal and position are in scope. (The draw sets its
+  // Window under the name it had as the shader check.)
+  vtkNPRShaderHook Check{ "GBuffer", "//VTK::Light::Impl", "the G-buffer output" };
   vtkNPRRenderTarget Target;
 };
 
@@ -431,15 +434,8 @@ void vtkNPRGBufferPass::CopyBack(const vtkRenderState* state, int width, int hei
 bool vtkNPRGBufferPass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
 {
-  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
-  {
-    // A tag of our own right after lighting, where the normal and position are in scope; filled
-    // in after VTK's own replacements (PostReplaceShaderValues) when we know what the shader has.
-    vtkNPRInsertAfterShaderTag(
-      fragmentShader, "//VTK::Light::Impl", "//NPR::GBuffer::Impl", this, "fragment");
-    vtkNPRInsertAfterShaderTag(
-      fragmentShader, "//VTK::Output::Dec", "//NPR::GBuffer::Dec", this, "fragment");
-  }
+  // Filled in after VTK's own replacements, when we know what the shader has.
+  this->Internal->Check.InsertTags(this, fragmentShader, mapper);
   return true;
 }
 
@@ -447,36 +443,30 @@ bool vtkNPRGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
   std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper,
   vtkProp* prop)
 {
-  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) ||
-    fragmentShader.find("//NPR::GBuffer::Impl") == std::string::npos)
+  vtkNPRShaderHook& hook = this->Internal->Check;
+  if (!hook.IsTagged(fragmentShader, mapper))
   {
     return true;
   }
   if (vtkNPRKeepsOwnLook(mapper, prop))
   {
     // Not geometry: drawn after the effect (vtkNPRPass), so left out here.
-    vtkShaderProgram::Substitute(fragmentShader, "//NPR::GBuffer::Dec", "", false);
-    vtkShaderProgram::Substitute(fragmentShader, "//NPR::GBuffer::Impl", "  discard;\n", false);
+    hook.Fill(fragmentShader, "", "  discard;\n");
     return true;
   }
-  const std::string fragmentBefore = fragmentShader;
-  const bool mapperNormal = fragmentShader.find("normalVCVSOutput") != std::string::npos;
-  const bool vertexVC = fragmentShader.find("in vec4 vertexVCVSOutput;") != std::string::npos;
-  std::string defines = std::string("#define NPR_WRITE_NORMALS ") +
-    (this->WritesNormals ? "1" : "0") + "\n#define NPR_WRITE_OBJECT_IDS " +
-    (this->WritesObjectIds ? "1" : "0") + "\n#define NPR_WRITE_FACE_NORMALS " +
-    (this->WritesFaceNormals ? "1" : "0") + "\n#define NPR_HAVE_MAPPER_NORMAL " +
-    (mapperNormal ? "1" : "0") + "\n#define NPR_HAVE_VERTEX_VC " + (vertexVC ? "1" : "0") +
-    "\n#define NPR_ENCODING " + std::to_string(this->WrittenEncoding) +
-    "\n#define NPR_REMAPPED_DEPTH " + (this->DepthRemapped ? "1" : "0") +
-    "\n#define NPR_PERSPECTIVE " + (this->Perspective ? "1" : "0") + "\n";
-  vtkShaderProgram::Substitute(
-    fragmentShader, "//NPR::GBuffer::Dec", defines + vtkNPRGBufferDecl, false);
-  vtkShaderProgram::Substitute(fragmentShader, "//NPR::GBuffer::Impl", vtkNPRGBufferImpl, false);
+  const std::string defines = vtkNPRShaderHook::Defines({
+    { "NPR_WRITE_NORMALS", this->WritesNormals },
+    { "NPR_WRITE_OBJECT_IDS", this->WritesObjectIds },
+    { "NPR_WRITE_FACE_NORMALS", this->WritesFaceNormals },
+    { "NPR_HAVE_MAPPER_NORMAL", fragmentShader.find("normalVCVSOutput") != std::string::npos },
+    { "NPR_HAVE_VERTEX_VC", fragmentShader.find("in vec4 vertexVCVSOutput;") != std::string::npos },
+    { "NPR_ENCODING", this->WrittenEncoding },
+    { "NPR_REMAPPED_DEPTH", this->DepthRemapped },
+    { "NPR_PERSPECTIVE", this->Perspective },
+  });
   // If not: colour and depth as VTK draws them; the effects see what it covers as background.
-  this->Internal->Check.KeepOrRevert(this, prop, "the G-buffer output", vertexShader,
-    geometryShader, fragmentShader, vertexShader, fragmentBefore,
-    { "//NPR::GBuffer::Dec", "//NPR::GBuffer::Impl" });
+  hook.Apply(this, prop, { vertexShader, geometryShader, fragmentShader },
+    defines + vtkNPRGBufferDecl, vtkNPRGBufferImpl);
   return true;
 }
 

@@ -7,6 +7,7 @@
 #include "vtkGlyph3DMapper.h"
 #include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
+#include "vtkNPRShaderHook.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLPolyDataMapper.h"
@@ -51,15 +52,15 @@ bool vtkNPRCallsInkHooks(vtkMapper* mapper)
 }
 }
 
+// The ink's code after texturing: the colour is final there.
 vtkNPRInkPass::vtkNPRInkPass()
-  : Check(new vtkNPRShaderCheck)
+  : Hook(new vtkNPRShaderHook("Ink", "//VTK::TCoord::Impl", "the ink"))
 {
 }
 
 vtkNPRInkPass::~vtkNPRInkPass()
 {
   this->SetDelegatePass(nullptr);
-  delete this->Check;
 }
 
 double vtkNPRInkPass::GetEffectiveLineWidth(vtkRenderer* renderer) const
@@ -81,9 +82,61 @@ void vtkNPRInkPass::Render(const vtkRenderState* state)
     return; // a picking render
   }
   vtkRenderer* renderer = state->GetRenderer();
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  vtkOpenGLState* glState = window->GetState();
+  // Half of the wireframe lies under the front faces: draw it twice the visible width.
+  const double visibleWidth = this->GetEffectiveLineWidth(renderer);
+  const double drawnWidth = this->DrawableLineWidth(2.0 * visibleWidth);
+  if (this->CoverageOnly)
+  {
+    this->ClearMask(renderer);
+  }
+  this->Hook->Window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  this->PreRender(state); // the mappers now call this pass's shader hooks
+  this->DrawBackFaceInk(state, drawnWidth);
+  this->DrawFilledFaces(state, visibleWidth);
+  this->PostRender(state);
+  vtkOpenGLCheckErrorMacro("failed after vtkNPRInkPass::Render");
+}
 
+double vtkNPRInkPass::DrawableLineWidth(double width)
+{
+  if (this->WidestLine <= 0.0)
+  {
+    float range[2] = { 1.0f, 1.0f };
+    glGetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, range);
+    this->WidestLine = std::max(1.0f, range[1]);
+  }
+  const double widest = this->WidestLine;
+  if (width > widest)
+  {
+    if (!this->WarnedAboutWidth)
+    {
+      vtkWarningMacro("ink lines of " << width << " pixels are drawn " << widest
+                                      << " wide, the most this OpenGL draws");
+      this->WarnedAboutWidth = true;
+    }
+    return widest;
+  }
+  return width;
+}
+
+void vtkNPRInkPass::ClearMask(vtkRenderer* renderer)
+{
+  // A mask: the background black too.
+  vtkOpenGLState* glState =
+    static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
+  int width, height, x, y;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(glState);
+  vtkOpenGLState::ScopedglScissor scissorSaver(glState);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
+  glState->vtkglEnable(GL_SCISSOR_TEST);
+  glState->vtkglScissor(x, y, width, height);
+  glState->vtkglClearColor(0.0, 0.0, 0.0, 1.0);
+  glState->vtkglClear(GL_COLOR_BUFFER_BIT);
+}
+
+void vtkNPRInkPass::DrawBackFaceInk(const vtkRenderState* state, double lineWidth)
+{
   // Ink only for the surfaces whose mapper calls this pass's shader hooks: any other prop would be
   // drawn as a wireframe in its own colours.
   std::vector<vtkProp*> inked;
@@ -95,67 +148,34 @@ void vtkNPRInkPass::Render(const vtkRenderState* state)
       inked.push_back(actor);
     }
   }
-
-  // Half of the wireframe lies under the front faces: draw it twice the visible width.
-  const double visibleWidth = this->GetEffectiveLineWidth(renderer);
-  if (this->WidestLine <= 0.0)
+  if (inked.empty())
   {
-    float range[2] = { 1.0f, 1.0f };
-    glGetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, range);
-    this->WidestLine = std::max(1.0f, range[1]);
+    return;
   }
-  const double widest = this->WidestLine;
-  double drawnWidth = 2.0 * visibleWidth;
-  if (drawnWidth > widest)
-  {
-    if (!this->WarnedAboutWidth)
-    {
-      vtkWarningMacro("ink lines of " << drawnWidth << " pixels are drawn " << widest
-                                      << " wide, the most this OpenGL draws");
-      this->WarnedAboutWidth = true;
-    }
-    drawnWidth = widest;
-  }
+  vtkRenderer* renderer = state->GetRenderer();
+  vtkOpenGLState* glState =
+    static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
+  vtkRenderState inkState(renderer);
+  inkState.SetPropArrayAndCount(inked.data(), static_cast<int>(inked.size()));
+  inkState.SetFrameBuffer(state->GetFrameBuffer());
+  inkState.SetRequiredKeys(state->GetRequiredKeys());
+  this->DrawMode = DrawInk;
+  glState->vtkglLineWidth(static_cast<float>(lineWidth));
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  // Front faces are culled by SetShaderParameters(), after each actor's property has set its
+  // own culling; the shader's discard gives the same image without culling, slower.
+  this->InkDrawState = glState;
+  this->DelegatePass->Render(&inkState);
+  this->InkDrawState = nullptr;
+  glState->vtkglDisable(GL_CULL_FACE); // as a property without culling leaves it
+  glState->vtkglCullFace(GL_BACK);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glState->vtkglLineWidth(1.0f);
+}
 
-  if (this->CoverageOnly)
-  {
-    // A mask: the background black too.
-    int width, height, x, y;
-    renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-    vtkOpenGLState::ScopedglClearColor clearColorSaver(glState);
-    vtkOpenGLState::ScopedglScissor scissorSaver(glState);
-    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(glState, GL_SCISSOR_TEST);
-    glState->vtkglEnable(GL_SCISSOR_TEST);
-    glState->vtkglScissor(x, y, width, height);
-    glState->vtkglClearColor(0.0, 0.0, 0.0, 1.0);
-    glState->vtkglClear(GL_COLOR_BUFFER_BIT);
-  }
-
-  this->Check->Window = window;
-  this->PreRender(state); // the mappers now call this pass's shader hooks
-
-  // 1. The back faces' wireframe in ink.
-  if (!inked.empty())
-  {
-    vtkRenderState inkState(renderer);
-    inkState.SetPropArrayAndCount(inked.data(), static_cast<int>(inked.size()));
-    inkState.SetFrameBuffer(state->GetFrameBuffer());
-    inkState.SetRequiredKeys(state->GetRequiredKeys());
-    this->DrawMode = DrawInk;
-    glState->vtkglLineWidth(static_cast<float>(drawnWidth));
-    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    // Front faces are culled by SetShaderParameters(), after each actor's property has set its
-    // own culling; the shader's discard gives the same image without culling, slower.
-    this->InkDrawState = glState;
-    this->DelegatePass->Render(&inkState);
-    this->InkDrawState = nullptr;
-    glState->vtkglDisable(GL_CULL_FACE); // as a property without culling leaves it
-    glState->vtkglCullFace(GL_BACK);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    glState->vtkglLineWidth(1.0f);
-  }
-
-  // 2. Every face filled, pulled towards the viewer by the line width's worth of depth slope.
+void vtkNPRInkPass::DrawFilledFaces(const vtkRenderState* state, double visibleWidth)
+{
+  // Pulled towards the viewer by the line width's worth of depth slope.
   this->DrawMode = this->CoverageOnly ? DrawMaskFill : DrawShaded;
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(-static_cast<float>(visibleWidth), -1.0f);
@@ -164,38 +184,23 @@ void vtkNPRInkPass::Render(const vtkRenderState* state)
   glDisable(GL_POLYGON_OFFSET_FILL);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   this->DrawMode = DrawShaded;
-
-  this->PostRender(state);
-  vtkOpenGLCheckErrorMacro("failed after vtkNPRInkPass::Render");
 }
 
 bool vtkNPRInkPass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
 {
-  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
-  {
-    // After texturing: the colour is final there.
-    vtkNPRInsertAfterShaderTag(
-      fragmentShader, "//VTK::TCoord::Impl", "//NPR::Ink::Impl", this, "fragment");
-    vtkNPRInsertAfterShaderTag(
-      fragmentShader, "//VTK::Output::Dec", "//NPR::Ink::Dec", this, "fragment");
-  }
+  this->Hook->InsertTags(this, fragmentShader, mapper);
   return true;
 }
 
 bool vtkNPRInkPass::PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
   std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  if (fragmentShader.find("//NPR::Ink::Impl") != std::string::npos)
+  if (this->Hook->IsTagged(fragmentShader, mapper))
   {
-    const std::string fragmentBefore = fragmentShader;
-    vtkShaderProgram::Substitute(fragmentShader, "//NPR::Ink::Dec", vtkNPRInkDecl, false);
     // Lines and points are not inked: absent from the ink draw, as VTK draws them in the other.
-    vtkShaderProgram::Substitute(fragmentShader, "//NPR::Ink::Impl",
-      vtkNPRKeepsOwnLook(mapper, prop) ? "  if (nprInkMode == 1) { discard; }\n" : vtkNPRInkImpl,
-      false);
-    this->Check->KeepOrRevert(this, prop, "the ink", vertexShader, geometryShader, fragmentShader,
-      vertexShader, fragmentBefore, { "//NPR::Ink::Dec", "//NPR::Ink::Impl" });
+    this->Hook->Apply(this, prop, { vertexShader, geometryShader, fragmentShader }, vtkNPRInkDecl,
+      vtkNPRKeepsOwnLook(mapper, prop) ? "  if (nprInkMode == 1) { discard; }\n" : vtkNPRInkImpl);
   }
   return true;
 }

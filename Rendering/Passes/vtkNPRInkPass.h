@@ -44,10 +44,12 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkRenderingNPRModule.h" // for export macro
 
+#include <memory> // for std::unique_ptr
+
 class vtkRenderer;
 
 class vtkOpenGLState;
-class vtkNPRShaderCheck;
+class vtkNPRShaderHook;
 
 class VTKRENDERINGNPR_EXPORT vtkNPRInkPass : public vtkOpenGLRenderPass
 {
@@ -111,6 +113,12 @@ protected:
   vtkNPRInkPass();
   ~vtkNPRInkPass() override;
 
+  // The steps of Render().
+  double DrawableLineWidth(double width); // at most what this OpenGL draws (warns once)
+  void ClearMask(vtkRenderer* renderer);  // CoverageOnly: the background black
+  void DrawBackFaceInk(const vtkRenderState* state, double lineWidth);
+  void DrawFilledFaces(const vtkRenderState* state, double visibleWidth);
+
   enum DrawModes
   {
     DrawShaded = 0,  // as VTK draws it
@@ -124,7 +132,7 @@ protected:
   bool CoverageOnly = false;
   int DrawMode = DrawShaded;
   bool WarnedAboutWidth = false;
-  vtkNPRShaderCheck* Check; // tries the ink's shaders before VTK uses them
+  std::unique_ptr<vtkNPRShaderHook> Hook; // the ink's code in the mappers' shaders
   // GL_ALIASED_LINE_WIDTH_RANGE's upper end, read once per context (0: not read yet). Not VTK's
   // cached GetMaximumHardwareLineWidth(): some windows (ParaView's X window on VTK 9.2) leave it 1.
   double WidestLine = 0.0;

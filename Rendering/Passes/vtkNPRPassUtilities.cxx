@@ -6,19 +6,16 @@
 #include "vtkHardwareSelector.h"
 #include "vtkNPROpaquePass.h"
 #include "vtkNPROpenGL.h"
-#include "vtkNew.h"
 #include "vtkObject.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLShaderCache.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderbuffer.h"
 #include "vtkRenderer.h"
-#include "vtkShader.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
@@ -127,8 +124,8 @@ double vtkNPREffectiveLineWidth(vtkRenderer* renderer, double width)
 
 namespace
 {
-// The primitive a mapper has bound and the cache's last substitutions are protected members of
-// VTK 9.1-9.6; a pointer to member taken through a derived class reads them.
+// The primitive a mapper has bound is a protected member of VTK 9.1-9.6; a pointer to member taken
+// through a derived class reads them.
 struct nprMapperAccess : public vtkOpenGLPolyDataMapper
 {
   static int BoundMode(vtkOpenGLPolyDataMapper* mapper, int representation)
@@ -144,30 +141,6 @@ struct nprMapperAccess : public vtkOpenGLPolyDataMapper
   }
 };
 
-struct nprShaderCacheAccess : public vtkOpenGLShaderCache
-{
-  // VTK 9.1-9.3: vertex, fragment, geometry; later also the tessellation stages. The member's
-  // type picks the overload, so no version check.
-  using Replace3 = unsigned int (vtkOpenGLShaderCache::*)(std::string&, std::string&, std::string&);
-  using Replace5 = unsigned int (vtkOpenGLShaderCache::*)(
-    std::string&, std::string&, std::string&, std::string&, std::string&);
-  static void Call(vtkOpenGLShaderCache* cache, Replace3 replace, std::string& vertex,
-    std::string& fragment, std::string& geometry)
-  {
-    (cache->*replace)(vertex, fragment, geometry);
-  }
-  static void Call(vtkOpenGLShaderCache* cache, Replace5 replace, std::string& vertex,
-    std::string& fragment, std::string& geometry)
-  {
-    std::string control, evaluation;
-    (cache->*replace)(vertex, fragment, geometry, control, evaluation);
-  }
-  static void Replace(
-    vtkOpenGLShaderCache* cache, std::string& vertex, std::string& fragment, std::string& geometry)
-  {
-    Call(cache, &nprShaderCacheAccess::ReplaceShaderValues, vertex, fragment, geometry);
-  }
-};
 }
 
 vtkProp* vtkNPRUserProp(vtkProp* prop)
@@ -209,64 +182,6 @@ bool vtkNPRKeepsOwnLook(vtkAbstractMapper* mapper, vtkProp* prop)
   const int mode =
     nprMapperAccess::BoundMode(polyDataMapper, actor->GetProperty()->GetRepresentation());
   return mode == GL_LINES || mode == GL_POINTS;
-}
-
-bool vtkNPRShaderCheck::Compiles(
-  const std::string& vertex, const std::string& geometry, const std::string& fragment)
-{
-  if (!this->Window || !this->Window->GetShaderCache())
-  {
-    return true;
-  }
-  const std::string key = vertex + '\0' + geometry + '\0' + fragment;
-  const auto known = this->Known.find(key);
-  if (known != this->Known.end())
-  {
-    return known->second;
-  }
-  std::string sources[3] = { vertex, geometry, fragment };
-  nprShaderCacheAccess::Replace(this->Window->GetShaderCache(), sources[0], sources[2], sources[1]);
-  const vtkShader::Type types[3] = { vtkShader::Vertex, vtkShader::Geometry, vtkShader::Fragment };
-  bool compiles = true;
-  for (int i = 0; i < 3 && compiles; ++i)
-  {
-    if (sources[i].empty())
-    {
-      continue;
-    }
-    vtkNew<vtkShader> shader;
-    shader->SetType(types[i]);
-    shader->SetSource(sources[i]);
-    compiles = shader->Compile();
-    shader->Cleanup();
-  }
-  this->Known[key] = compiles;
-  return compiles;
-}
-
-bool vtkNPRShaderCheck::KeepOrRevert(vtkObject* pass, vtkProp* prop, const char* what,
-  std::string& vertex, const std::string& geometry, std::string& fragment,
-  const std::string& vertexBefore, std::string fragmentBefore,
-  std::initializer_list<const char*> tags)
-{
-  if (this->Compiles(vertex, geometry, fragment))
-  {
-    return true;
-  }
-  for (const char* tag : tags)
-  {
-    vtkShaderProgram::Substitute(fragmentBefore, tag, "", false);
-  }
-  vertex = vertexBefore;
-  fragment = fragmentBefore;
-  vtkProp* userProp = vtkNPRUserProp(prop);
-  const std::string name = userProp ? userProp->GetClassName() : "prop";
-  if (this->Warned.insert(name).second)
-  {
-    vtkWarningWithObjectMacro(pass,
-      << what << " does not compile with the shader of a " << name << ": it is drawn without it");
-  }
-  return false;
 }
 
 namespace

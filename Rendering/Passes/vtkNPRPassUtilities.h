@@ -6,10 +6,7 @@
 
 #include "vtkOpenGLState.h" // for the scoped state savers
 
-#include <initializer_list> // for the tags
-#include <set>              // for std::set
-#include <string>           // for std::string
-#include <unordered_map>    // for std::unordered_map
+#include <string> // for std::string
 
 class vtkAbstractMapper;
 class vtkObject;
@@ -63,30 +60,6 @@ bool vtkNPRIsAnnotation(vtkProp* prop);
 // representation), or anything drawn for an annotation (vtkNPRIsAnnotation of vtkNPRUserProp).
 // Valid from the mapper's shader hooks (its bound primitive).
 bool vtkNPRKeepsOwnLook(vtkAbstractMapper* mapper, vtkProp* prop);
-
-// Tries a pass's changed shaders before VTK uses them: VTK 9.1 crashes on a shader that does not
-// compile. Compiles them the way VTK's shader cache would (results kept per source), and warns
-// once per pass and prop class when they do not, so that the prop is drawn as VTK draws it.
-class vtkNPRShaderCheck
-{
-public:
-  // The window of the frame being drawn (whose context the hooks run in).
-  vtkOpenGLRenderWindow* Window = nullptr;
-  // Whether the three stages compile (an empty geometry shader is none). Without a window, true.
-  bool Compiles(
-    const std::string& vertex, const std::string& geometry, const std::string& fragment);
-  // Keeps the shaders a pass filled in when they compile. Otherwise puts back the sources the pass
-  // started from (`vertexBefore`, `fragmentBefore`, with its own `tags` emptied) and warns once per
-  // prop class that `pass` could not apply `what`: the prop is drawn as VTK draws it. Returns
-  // whether the pass's code was kept.
-  bool KeepOrRevert(vtkObject* pass, vtkProp* prop, const char* what, std::string& vertex,
-    const std::string& geometry, std::string& fragment, const std::string& vertexBefore,
-    std::string fragmentBefore, std::initializer_list<const char*> tags);
-
-private:
-  std::unordered_map<std::string, bool> Known;
-  std::set<std::string> Warned;
-};
 
 // The state a full-screen depth-sprite composite changes, restored when this goes out of scope.
 // Apply() sets what the composites need: the viewport (callers such as ParaView's image-processing

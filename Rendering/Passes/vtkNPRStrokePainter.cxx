@@ -113,29 +113,13 @@ vtkNPRStrokeStyle vtkNPRMakeStrokeStyle(
   return style;
 }
 
-bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeStyle& style,
-  double height, vtkNPRStrokeCounts& counts, std::string& error)
+namespace
 {
-  counts.fill(0);
-  vtkCellArray* lines = strokes ? strokes->GetLines() : nullptr;
-  if (!lines || lines->GetNumberOfCells() == 0)
-  {
-    return true; // nothing to paint: an empty drawing
-  }
-  vtkDataArray* coordinates = strokes->GetPointData()->GetArray("ImageCoordinates");
-  vtkDataArray* types = strokes->GetCellData()->GetArray("FeatureType");
-  vtkDataArray* hidden = strokes->GetCellData()->GetArray("Hidden");
-  if (!coordinates || coordinates->GetNumberOfComponents() < 2 || !types || !hidden ||
-    types->GetNumberOfTuples() < lines->GetNumberOfCells() ||
-    hidden->GetNumberOfTuples() < lines->GetNumberOfCells())
-  {
-    error = "the strokes lack their ImageCoordinates, FeatureType or Hidden arrays";
-    return false;
-  }
-
-  // The strokes of each class, in their order in the poly data.
-  std::vector<vtkIdType> byClass[NPR_STROKE_CLASSES];
-  const vtkIdType cells = lines->GetNumberOfCells();
+// The strokes of each class, in their order in the poly data; those the style leaves out in none.
+void SortStrokes(vtkPolyData* strokes, vtkDataArray* types, vtkDataArray* hidden,
+  const vtkNPRStrokeStyle& style, std::vector<vtkIdType> byClass[NPR_STROKE_CLASSES])
+{
+  const vtkIdType cells = strokes->GetLines()->GetNumberOfCells();
   // Cells of the Lines array are numbered after the vertices in a vtkPolyData's cell data.
   const vtkIdType firstLine = strokes->GetNumberOfVerts();
   for (vtkIdType cell = 0; cell < cells; ++cell)
@@ -157,6 +141,85 @@ bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeSty
       byClass[VisibleClass(type)].push_back(cell);
     }
   }
+}
+
+// The colour, width and dashes of a class's strokes.
+void SetPen(cairo_t* cr, const vtkNPRStrokeStyle& style, int strokeClass)
+{
+  const double* color = style.SilhouetteColor;
+  double width = style.LineWidth;
+  if (strokeClass == NPR_STROKES_HIDDEN)
+  {
+    color = style.HiddenLineColor;
+    width = style.HiddenLineWidth;
+    const double dashes[2] = { style.DashLength, style.GapLength };
+    cairo_set_dash(cr, dashes, 2, 0.0);
+  }
+  else
+  {
+    cairo_set_dash(cr, nullptr, 0, 0.0);
+    if (strokeClass == NPR_STROKES_CREASE || strokeClass == NPR_STROKES_NON_MANIFOLD)
+    {
+      color = style.CreaseColor;
+    }
+  }
+  cairo_set_source_rgb(cr, color[0], color[1], color[2]);
+  cairo_set_line_width(cr, width);
+}
+
+// One stroke's path, through the point ids of a cell, with y flipped; false for an empty cell.
+bool TraceStroke(
+  cairo_t* cr, vtkIdType size, const vtkIdType* ids, vtkDataArray* coordinates, double height)
+{
+  if (size < 1)
+  {
+    return false;
+  }
+  // A closed loop repeats its first point id last.
+  const bool closed = size >= 3 && ids[size - 1] == ids[0];
+  const vtkIdType last = closed ? size - 1 : size;
+  for (vtkIdType k = 0; k < last; ++k)
+  {
+    const double x = coordinates->GetComponent(ids[k], 0);
+    const double y = height - coordinates->GetComponent(ids[k], 1);
+    if (k == 0)
+    {
+      cairo_move_to(cr, x, y);
+    }
+    else
+    {
+      cairo_line_to(cr, x, y);
+    }
+  }
+  if (closed)
+  {
+    cairo_close_path(cr);
+  }
+  return true;
+}
+}
+
+bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeStyle& style,
+  double height, vtkNPRStrokeCounts& counts, std::string& error)
+{
+  counts.fill(0);
+  vtkCellArray* lines = strokes ? strokes->GetLines() : nullptr;
+  if (!lines || lines->GetNumberOfCells() == 0)
+  {
+    return true; // nothing to paint: an empty drawing
+  }
+  vtkDataArray* coordinates = strokes->GetPointData()->GetArray("ImageCoordinates");
+  vtkDataArray* types = strokes->GetCellData()->GetArray("FeatureType");
+  vtkDataArray* hidden = strokes->GetCellData()->GetArray("Hidden");
+  if (!coordinates || coordinates->GetNumberOfComponents() < 2 || !types || !hidden ||
+    types->GetNumberOfTuples() < lines->GetNumberOfCells() ||
+    hidden->GetNumberOfTuples() < lines->GetNumberOfCells())
+  {
+    error = "the strokes lack their ImageCoordinates, FeatureType or Hidden arrays";
+    return false;
+  }
+  std::vector<vtkIdType> byClass[NPR_STROKE_CLASSES];
+  SortStrokes(strokes, types, hidden, style, byClass);
 
   cairo_save(cr);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
@@ -164,56 +227,17 @@ bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeSty
   auto iterator = vtk::TakeSmartPointer(lines->NewIterator());
   for (int strokeClass = 0; strokeClass < NPR_STROKE_CLASSES; ++strokeClass)
   {
-    const double* color = style.SilhouetteColor;
-    double width = style.LineWidth;
-    if (strokeClass == NPR_STROKES_HIDDEN)
-    {
-      color = style.HiddenLineColor;
-      width = style.HiddenLineWidth;
-      const double dashes[2] = { style.DashLength, style.GapLength };
-      cairo_set_dash(cr, dashes, 2, 0.0);
-    }
-    else
-    {
-      cairo_set_dash(cr, nullptr, 0, 0.0);
-      if (strokeClass == NPR_STROKES_CREASE || strokeClass == NPR_STROKES_NON_MANIFOLD)
-      {
-        color = style.CreaseColor;
-      }
-    }
-    cairo_set_source_rgb(cr, color[0], color[1], color[2]);
-    cairo_set_line_width(cr, width);
+    SetPen(cr, style, strokeClass);
     for (vtkIdType cell : byClass[strokeClass])
     {
       vtkIdType size;
       const vtkIdType* ids;
       iterator->GetCellAtId(cell, size, ids);
-      if (size < 1)
+      if (TraceStroke(cr, size, ids, coordinates, height))
       {
-        continue;
+        cairo_stroke(cr); // one path per stroke: an SVG <path> each
+        ++counts[strokeClass];
       }
-      // A closed loop repeats its first point id last.
-      const bool closed = size >= 3 && ids[size - 1] == ids[0];
-      const vtkIdType last = closed ? size - 1 : size;
-      for (vtkIdType k = 0; k < last; ++k)
-      {
-        const double x = coordinates->GetComponent(ids[k], 0);
-        const double y = height - coordinates->GetComponent(ids[k], 1);
-        if (k == 0)
-        {
-          cairo_move_to(cr, x, y);
-        }
-        else
-        {
-          cairo_line_to(cr, x, y);
-        }
-      }
-      if (closed)
-      {
-        cairo_close_path(cr);
-      }
-      cairo_stroke(cr); // one path per stroke: an SVG <path> each
-      ++counts[strokeClass];
     }
   }
   cairo_restore(cr);

@@ -9,6 +9,7 @@
 #include "vtkMath.h"
 #include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
+#include "vtkNPRShaderHook.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLPolyDataMapper.h"
@@ -52,7 +53,8 @@ struct vtkNPRToonPass::Internals
   float Intensity[MaximumNumberOfLights];
   bool WarnedAboutLights = false;
   std::string ShaderSettings;
-  vtkNPRShaderCheck Check;
+  // Our code right after VTK's lighting.
+  vtkNPRShaderHook Hook{ "Toon", "//VTK::Light::Impl", "toon shading" };
 };
 
 vtkStandardNewMacro(vtkNPRToonPass);
@@ -229,7 +231,7 @@ void vtkNPRToonPass::Render(const vtkRenderState* state)
   vtkRenderer* renderer = state->GetRenderer();
 
   this->UpdateTable(renderer->GetRenderWindow());
-  this->Internal->Check.Window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  this->Internal->Hook.Window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   this->UpdateLights(state);
   // What is compiled into the shaders: the mappers rebuild them when it changes.
   const std::string settings = std::string(this->PerVertex ? "v" : "p") +
@@ -264,60 +266,62 @@ bool IsLitPolyDataShader(const std::string& fragmentShader)
     fragmentShader.find("float specularPower") != std::string::npos &&
     fragmentShader.find("albedo") == std::string::npos;
 }
+
+// Whether VTK's vertex shader computes the normal and position the per-vertex lighting needs.
+bool IsPerVertexCapable(const std::string& vertexShader, const std::string& geometryShader)
+{
+  return geometryShader.empty() &&
+    vertexShader.find("normalVCVSOutput = normalMatrix * normalMC") != std::string::npos &&
+    vertexShader.find("vertexVCVSOutput = MCVCMatrix * vertexMC") != std::string::npos &&
+    vertexShader.find("//VTK::Light::Impl") != std::string::npos;
+}
+
+// Highlights only for actors that have some: the Phong term is a third of the shader's cost on
+// llvmpipe. (A change of the property rebuilds the mapper's shaders.)
+bool HasHighlights(const std::string& fragmentShader, vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  return actor && actor->GetProperty()->GetSpecular() > 0.0 &&
+    fragmentShader.find("vec3 specularColor") != std::string::npos &&
+    fragmentShader.find("float specularPower") != std::string::npos;
+}
 }
 
 bool vtkNPRToonPass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
 {
-  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
-  {
-    // Tags of our own right after VTK's lighting, filled in once VTK's code is in place.
-    vtkNPRInsertAfterShaderTag(
-      fragmentShader, "//VTK::Light::Impl", "//NPR::Toon::Impl", this, "fragment");
-    vtkNPRInsertAfterShaderTag(
-      fragmentShader, "//VTK::Output::Dec", "//NPR::Toon::Dec", this, "fragment");
-  }
+  // Filled in once VTK's code is in place.
+  this->Internal->Hook.InsertTags(this, fragmentShader, mapper);
   return true;
 }
 
 bool vtkNPRToonPass::PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
   std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) ||
-    fragmentShader.find("//NPR::Toon::Impl") == std::string::npos)
+  vtkNPRShaderHook& hook = this->Internal->Hook;
+  if (!hook.IsTagged(fragmentShader, mapper))
   {
     return true;
   }
   // Lines and points keep their own colours: no bands on them.
   if (!IsLitPolyDataShader(fragmentShader) || vtkNPRKeepsOwnLook(mapper, prop))
   {
-    vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Impl", "", false);
-    vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Dec", "", false);
+    hook.Fill(fragmentShader, "", "");
     return true;
   }
-  const std::string vertexBefore = vertexShader;
-  const std::string fragmentBefore = fragmentShader;
-  const bool perVertex = this->PerVertex && geometryShader.empty() &&
-    vertexShader.find("normalVCVSOutput = normalMatrix * normalMC") != std::string::npos &&
-    vertexShader.find("vertexVCVSOutput = MCVCMatrix * vertexMC") != std::string::npos &&
-    vertexShader.find("//VTK::Light::Impl") != std::string::npos;
-  // Highlights only for actors that have some: the Phong term is a third of the shader's cost
-  // on llvmpipe. (A change of the property rebuilds the mapper's shaders.)
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  const bool specular = this->Specular && actor && actor->GetProperty()->GetSpecular() > 0.0 &&
-    fragmentShader.find("vec3 specularColor") != std::string::npos &&
-    fragmentShader.find("float specularPower") != std::string::npos;
-  const bool vertexVC = fragmentShader.find("vec4 vertexVC = ") != std::string::npos;
+  const vtkNPRShaderHook::Shaders shaders{ vertexShader, geometryShader, fragmentShader };
+  const vtkNPRShaderHook::Sources before(shaders);
+  const bool perVertex = this->PerVertex && IsPerVertexCapable(vertexShader, geometryShader);
   const Internals& internal = *this->Internal;
-  const std::string defines = std::string("#define NPR_TOON_PER_VERTEX ") +
-    (perVertex ? "1" : "0") + "\n#define NPR_TOON_SPECULAR " + (specular ? "1" : "0") +
-    "\n#define NPR_TOON_HAVE_VERTEX_VC " + (vertexVC ? "1" : "0") + "\n#define NPR_TOON_LIGHTS " +
-    std::to_string(internal.LightCount) + "\n#define NPR_TOON_LIGHT_ARRAY " +
-    std::to_string(std::max(1, internal.LightCount)) + "\n#define NPR_TOON_POSITIONAL " +
-    (internal.AnyPositional ? "1" : "0") + "\n";
-  vtkShaderProgram::Substitute(
-    fragmentShader, "//NPR::Toon::Dec", defines + vtkNPRToonLighting + vtkNPRToonDecl, false);
-  vtkShaderProgram::Substitute(fragmentShader, "//NPR::Toon::Impl", vtkNPRToonImpl, false);
+  const std::string defines = vtkNPRShaderHook::Defines({
+    { "NPR_TOON_PER_VERTEX", perVertex },
+    { "NPR_TOON_SPECULAR", this->Specular && HasHighlights(fragmentShader, prop) },
+    { "NPR_TOON_HAVE_VERTEX_VC", fragmentShader.find("vec4 vertexVC = ") != std::string::npos },
+    { "NPR_TOON_LIGHTS", internal.LightCount },
+    { "NPR_TOON_LIGHT_ARRAY", std::max(1, internal.LightCount) },
+    { "NPR_TOON_POSITIONAL", internal.AnyPositional },
+  });
+  hook.Fill(fragmentShader, defines + vtkNPRToonLighting + vtkNPRToonDecl, vtkNPRToonImpl);
   if (perVertex)
   {
     vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Dec",
@@ -327,8 +331,7 @@ bool vtkNPRToonPass::PostReplaceShaderValues(std::string& vertexShader, std::str
       std::string("//VTK::Light::Impl\n") + vtkNPRToonVertexImpl, false);
   }
   // If not: the prop as VTK draws it, rather than no prop (or a crash).
-  this->Internal->Check.KeepOrRevert(this, prop, "toon shading", vertexShader, geometryShader,
-    fragmentShader, vertexBefore, fragmentBefore, { "//NPR::Toon::Impl", "//NPR::Toon::Dec" });
+  hook.KeepOrRevert(this, prop, shaders, before);
   return true;
 }
 
