@@ -46,7 +46,7 @@ struct vtkNPRGBufferPass::Internals
   vtkNPRQuadProgram Copy;
   // Our code after lighting, where the normal and position are in scope. (The draw sets its
   // Window under the name it had as the shader check.)
-  vtkNPRShaderHook Check{ "GBuffer", "//VTK::Light::Impl", "the G-buffer output" };
+  vtkNPRShaderHook Hook{ "GBuffer", "//VTK::Light::Impl", "the G-buffer output" };
   vtkNPRRenderTarget Target;
 };
 
@@ -332,7 +332,7 @@ void vtkNPRGBufferPass::UpdateProjection(vtkRenderer* renderer, int width, int h
 void vtkNPRGBufferPass::DrawGeometry(const vtkRenderState* state, int width, int height)
 {
   auto* window = static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow());
-  this->Internal->Check.Window = window;
+  this->Internal->Hook.Window = window;
   this->HasLinePrimitives = false; // SetShaderParameters() sees them
   this->PreRender(state);          // the mappers now call this pass's shader hooks
   {
@@ -435,7 +435,7 @@ bool vtkNPRGBufferPass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
 {
   // Filled in after VTK's own replacements, when we know what the shader has.
-  this->Internal->Check.InsertTags(this, fragmentShader, mapper);
+  this->Internal->Hook.InsertTags(this, fragmentShader, mapper);
   return true;
 }
 
@@ -443,7 +443,7 @@ bool vtkNPRGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
   std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper,
   vtkProp* prop)
 {
-  vtkNPRShaderHook& hook = this->Internal->Check;
+  vtkNPRShaderHook& hook = this->Internal->Hook;
   if (!hook.IsTagged(fragmentShader, mapper))
   {
     return true;
