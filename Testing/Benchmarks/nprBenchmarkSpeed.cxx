@@ -12,9 +12,11 @@
 #include "vtkCamera.h"
 #include "vtkEDLShading.h"
 #include "vtkNPREdgePass.h"
+#include "vtkNPRGBufferPass.h"
 #include "vtkNPRInkPass.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRRenderWindowFactory.h"
+#include "vtkOpaquePass.h"
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkOutlineGlowPass.h"
 #include "vtkPolyDataSilhouette.h"
@@ -124,6 +126,19 @@ vtkSmartPointer<vtkRenderPass> OverRenderSteps()
   return pass;
 }
 
+// A vtkRenderStepsPass whose opaque step is the edge style's G-buffer pass alone.
+vtkSmartPointer<vtkRenderPass> GBufferAlone()
+{
+  vtkNew<vtkNPRGBufferPass> gbuffer;
+  vtkNew<vtkOpaquePass> opaque;
+  gbuffer->SetDelegatePass(opaque);
+  gbuffer->NormalsRequestedOn();
+  gbuffer->ObjectIdsRequestedOn();
+  auto steps = vtkSmartPointer<vtkRenderStepsPass>::New();
+  steps->SetOpaquePass(gbuffer);
+  return steps;
+}
+
 std::vector<SpeedMethod> MakeMethods()
 {
   std::vector<SpeedMethod> methods;
@@ -147,6 +162,10 @@ std::vector<SpeedMethod> MakeMethods()
   };
   methods.push_back({ "edges-silhouettes", "vtkNPRPass edges, silhouettes only", edgesWith(true) });
   methods.push_back({ "edges-floor", "vtkNPRPass edges, every line type off", edgesWith(false) });
+  // The bound under the floor: the G-buffer drawn as the edge style draws it (normals, ids) and
+  // nothing shown from it, so the floor's difference to it is the copy into the window.
+  methods.push_back(
+    { "gbuffer-only", "vtkNPRGBufferPass alone (drawn, not shown)", GBufferAlone() });
   // What the optional line tests cost: creases from the face normals (the G-buffer's geometry
   // attachment RGBA32F instead of RG32F), smooth silhouettes, suggestive contours.
   auto faceCreases = NPRStyle("edges");
