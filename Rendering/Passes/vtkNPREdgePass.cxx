@@ -103,9 +103,8 @@ struct LineFilter
 struct vtkNPREdgePass::Internals
 {
   vtkNPRQuadProgram Detect;
-  // The composite's programs by output (lines over the colour, the mask, each type's coverage and
-  // depth for vtkNPRSketchPass) and part (every pixel, the surfaces, the background's lines).
-  vtkNPRQuadProgram Composite[3][3];
+  vtkNPRQuadProgram Composite; // lines over the colour, or the mask
+  vtkNPRQuadProgram Coverage;  // each type's coverage and depth, for vtkNPRSketchPass
   std::string CompositeSource;
   vtkNPRRenderTarget Target;
   vtkTextureObject* LineTexture = nullptr;
@@ -347,6 +346,8 @@ bool vtkNPREdgePass::DrawComposite(const vtkRenderState* state, const int origin
 bool vtkNPREdgePass::DrawLines(const vtkRenderState* state, const int origin[2], int output)
 {
   Internals& internal = *this->Internal;
+  vtkRenderer* renderer = state->GetRenderer();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   if (internal.CompositeSource.empty())
   {
     internal.CompositeSource = vtkNPREdgeCompositeFS;
@@ -354,6 +355,15 @@ bool vtkNPREdgePass::DrawLines(const vtkRenderState* state, const int origin[2],
     vtkShaderProgram::Substitute(internal.CompositeSource, "//NPR::WindowDepth", vtkNPRWindowDepth);
     vtkShaderProgram::Substitute(
       internal.CompositeSource, "//NPR::NearestDepth", vtkNPRNearestDepth);
+  }
+  vtkNPRQuadProgram& composite =
+    output == OutputLineCoverage ? internal.Coverage : internal.Composite;
+  vtkShaderProgram* program =
+    composite.Ready(window, internal.CompositeSource, this->GetCompositeDefines(renderer, output));
+  if (!program)
+  {
+    vtkErrorMacro("the line composite shader did not compile");
+    return false;
   }
   vtkNPRGBufferPass* gbuffer = this->GBufferPass;
   vtkTextureObject* color = gbuffer->GetColorTexture();
@@ -365,43 +375,14 @@ bool vtkNPREdgePass::DrawLines(const vtkRenderState* state, const int origin[2],
   {
     internal.LineTexture->Activate();
   }
-  // The mask is one part; lines over the colour or the coverage are the surfaces, then the lines
-  // reaching past them onto the background (their depth the nearest surface's).
-  bool drawn = true;
-  for (const int part : { output == OutputMask ? 0 : 1, 2 })
-  {
-    if (part == 2 && (output == OutputMask || !lines))
-    {
-      break;
-    }
-    drawn = drawn && this->DrawCompositePart(state, origin, output, part);
-  }
+  this->SetCompositeUniforms(program, origin);
+  composite.Render();
   color->Deactivate();
   depth->Deactivate();
   if (lines)
   {
     internal.LineTexture->Deactivate();
   }
-  return drawn;
-}
-
-bool vtkNPREdgePass::DrawCompositePart(
-  const vtkRenderState* state, const int origin[2], int output, int part)
-{
-  Internals& internal = *this->Internal;
-  vtkRenderer* renderer = state->GetRenderer();
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  vtkNPRQuadProgram& composite = internal.Composite[output][part];
-  vtkShaderProgram* program = composite.Ready(window, internal.CompositeSource,
-    this->GetCompositeDefines(renderer, output) + "#define NPR_PART " + std::to_string(part) +
-      "\n");
-  if (!program)
-  {
-    vtkErrorMacro("the line composite shader did not compile");
-    return false;
-  }
-  this->SetCompositeUniforms(program, origin);
-  composite.Render();
   return true;
 }
 
@@ -439,13 +420,8 @@ void vtkNPREdgePass::ReleaseEffectResources(vtkWindow* window)
 {
   Internals& internal = *this->Internal;
   internal.Detect.Release(window);
-  for (auto& programs : internal.Composite)
-  {
-    for (vtkNPRQuadProgram& program : programs)
-    {
-      program.Release(window);
-    }
-  }
+  internal.Composite.Release(window);
+  internal.Coverage.Release(window);
   if (internal.LineTexture)
   {
     internal.LineTexture->ReleaseGraphicsResources(window);

@@ -340,7 +340,6 @@ private:
   // The composite of the lines (and colour and depth, or the mask, or the coverage).
   std::string GetCompositeDefines(vtkRenderer* renderer, int output);
   bool DrawLines(const vtkRenderState* state, const int origin[2], int output);
-  bool DrawCompositePart(const vtkRenderState* state, const int origin[2], int output, int part);
   void SetCompositeUniforms(vtkShaderProgram* program, const int origin[2]);
 
   struct Internals;

@@ -12,9 +12,7 @@
 // since the filter averages the staircase of the one-pixel line.
 //
 // Outputs (NPR_OUTPUT): 0 lines over the colour; 1 the coverage alone as grey (an edge mask);
-// 2 each type's coverage and the depth the lines are drawn at (for vtkNPRSketchPass). Parts
-// (NPR_PART): 0 every pixel (the mask); 1 the surfaces (every pixel for output 2); 2 the lines
-// on the background, after part 1.
+// 2 each type's coverage and the depth the lines are drawn at (for vtkNPRSketchPass).
 //NPR::Defines
 in vec2 texCoord;
 uniform sampler2D lineTexture;  // linear filtering
@@ -33,23 +31,10 @@ uniform float coverageSlope;    // |P'(w/2)|
 void main()
 {
   vec4 coverage = vec4(0.0);
+#if !NPR_LINES
   if (texCoord.x < -1.0)
   {
     discard; // never: texCoord is read so that VTK does not warn about an unread input
-  }
-  ivec2 p = ivec2(gl_FragCoord.xy) - viewportOrigin;
-  float depth = texelFetch(depthTexture, p, 0).r;
-  // Two parts (NPR_PART 1, 2) where lines can reach past the surfaces: a discard that a whole
-  // block of pixels takes ends llvmpipe's work on it, where a branch would run both sides.
-#if NPR_PART == 1 && NPR_OUTPUT == 0
-  if (depth >= 1.0)
-  {
-    discard; // the background: part 2's
-  }
-#elif NPR_PART == 2
-  if (depth < 1.0)
-  {
-    discard; // on a surface: part 1's
   }
 #endif
 #if NPR_LINES
@@ -64,34 +49,44 @@ void main()
   coverage = step(vec4(coverageLevel), lines);
 #endif
 #endif
-  float anyLine = max(max(coverage.r, coverage.g), max(coverage.b, coverage.a));
-  bool onLine = anyLine > 0.0;
-#if NPR_PART == 2
-  if (!onLine)
+  ivec2 p = ivec2(gl_FragCoord.xy) - viewportOrigin;
+  float depth = texelFetch(depthTexture, p, 0).r;
+#if !NPR_LINES && NPR_OUTPUT == 0
+  if (depth >= 1.0)
   {
-    discard; // background without a line: nothing to write
+    // Background and no line: nothing to write. First, so that a whole block of such pixels ends
+    // llvmpipe's work on it at one fetch (a branch would not: llvmpipe runs both of its sides).
+    discard;
   }
 #endif
+  float anyLine = max(max(coverage.r, coverage.g), max(coverage.b, coverage.a));
+  bool onLine = anyLine > 0.0;
 #if NPR_OUTPUT == 1
   gl_FragData[0] = vec4(vec3(anyLine), 1.0);
   gl_FragDepth = nprWindowDepth(depth);
 #elif NPR_OUTPUT == 2
-  // Suggestive contours go with the silhouettes: the sketch has three line types. The lines on
-  // the background are drawn at the nearest surface's depth (part 2 writes them over part 1's).
-#if NPR_PART == 2
-  float lineDepth = nprNearestDepth(p);
+  // Suggestive contours go with the silhouettes: the sketch has three line types.
+  gl_FragData[0] = vec4(max(coverage.r, coverage.a), coverage.gb,
+    depth < 1.0 || !onLine ? depth : nprNearestDepth(p));
 #else
-  float lineDepth = depth;
+  if (depth < 1.0)
+  {
+    // On a surface.
+    gl_FragData[0] = vec4(nprLinesOver(texelFetch(colorTexture, p, 0).rgb, coverage), 1.0);
+    gl_FragDepth = nprWindowDepth(depth);
+  }
+#if NPR_LINES
+  else
+  {
+    // Background: only the parts of wide or anti-aliased lines that reach past a surface, blended
+    // over the window's background at the depth of the nearest surface they belong to.
+    if (!onLine)
+    {
+      discard;
+    }
+    gl_FragData[0] = nprLinesAlone(coverage);
+    gl_FragDepth = nprWindowDepth(nprNearestDepth(p));
+  }
 #endif
-  gl_FragData[0] = vec4(max(coverage.r, coverage.a), coverage.gb, lineDepth);
-#elif NPR_PART == 1
-  // On a surface.
-  gl_FragData[0] = vec4(nprLinesOver(texelFetch(colorTexture, p, 0).rgb, coverage), 1.0);
-  gl_FragDepth = nprWindowDepth(depth);
-#elif NPR_PART == 2
-  // Background: only the parts of wide or anti-aliased lines that reach past a surface, blended
-  // over the window's background at the depth of the nearest surface they belong to.
-  gl_FragData[0] = nprLinesAlone(coverage);
-  gl_FragDepth = nprWindowDepth(nprNearestDepth(p));
 #endif
 }
