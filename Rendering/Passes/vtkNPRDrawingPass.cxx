@@ -167,10 +167,7 @@ std::string vtkNPRDrawingPass::GetCompositeKey(vtkRenderer* renderer)
 
 void vtkNPRDrawingPass::GetCompositeRectangle(vtkRenderer*, int rect[4])
 {
-  vtkTextureObject* depth = this->EdgePass->GetGBufferPass()->GetDepthTexture();
-  rect[0] = rect[1] = 0;
-  rect[2] = static_cast<int>(depth->GetWidth()) - 1;
-  rect[3] = static_cast<int>(depth->GetHeight()) - 1;
+  GetWholeRectangle(this->EdgePass->GetGBufferPass(), rect);
 }
 
 bool vtkNPRDrawingPass::DrawComposite(const vtkRenderState* state, const int origin[2])

@@ -162,18 +162,17 @@ bool vtkNPREdgePass::UpdateImages(const vtkRenderState* state)
 void vtkNPREdgePass::RenderLineCoverage(const vtkRenderState* state)
 {
   this->NumberOfRenderedProps = 0;
-  vtkNPRGBufferPass* gbuffer = this->GBufferPass;
-  if (!gbuffer || gbuffer->GetLastRenderWasSelection() || !gbuffer->GetHasContent() ||
-    !this->UpdateImages(state))
+  vtkNPRGBufferPass* gbuffer = this->GetReadyGBuffer(state);
+  if (!gbuffer)
   {
     return;
   }
-  // Plain values into the caller's target, from its origin; it has no depth buffer.
+  // Plain values into the caller's target, from its origin; it has no depth buffer. Only the
+  // content rectangle: the caller cleared the rest.
   vtkOpenGLState* glState =
     static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow())->GetState();
   const int origin[2] = { 0, 0 };
-  int rect[4];
-  this->GetCompositeRectangle(state->GetRenderer(), rect);
+  const int* rect = gbuffer->GetContentRectangle();
   vtkNPRCompositeState compositeState(glState);
   compositeState.Apply(
     origin, gbuffer->GetDepthTexture()->GetWidth(), gbuffer->GetDepthTexture()->GetHeight());
@@ -309,11 +308,7 @@ void vtkNPREdgePass::GetCompositeRectangle(vtkRenderer*, int rect[4])
 {
   if (this->CoverageOnly)
   {
-    // A mask is black everywhere else.
-    vtkTextureObject* depth = this->GBufferPass->GetDepthTexture();
-    rect[0] = rect[1] = 0;
-    rect[2] = static_cast<int>(depth->GetWidth()) - 1;
-    rect[3] = static_cast<int>(depth->GetHeight()) - 1;
+    GetWholeRectangle(this->GBufferPass, rect); // a mask is black everywhere else
     return;
   }
   // Outside the props' projected bounds there is only background: nothing to write there.
@@ -328,8 +323,9 @@ std::string vtkNPREdgePass::GetCompositeKey(vtkRenderer* renderer)
   }
   std::ostringstream key;
   key.precision(17);
+  // The line image's settings and content change its update count.
   key << this->GetCompositeDefines(renderer, OutputComposite) << this->NumberOfLineImageUpdates
-      << " " << this->Internal->LineImageSettings << " " << this->GetEffectiveLineWidth(renderer);
+      << " " << this->GetEffectiveLineWidth(renderer);
   for (const double* colorValue :
     { this->SilhouetteColor, this->CreaseColor, this->ContourColor, this->SuggestiveContourColor })
   {

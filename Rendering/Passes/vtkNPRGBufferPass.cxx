@@ -243,7 +243,7 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   const int components =
     this->WritesObjectIds || this->WritesFaceNormals ? 4 : (this->WritesNormals ? 2 : 1);
   this->AllocateBuffers(window, width, height, components, this->WrittenEncoding);
-  this->UpdateProjection(state->GetRenderer(), width, height);
+  this->UpdateProjection(state->GetRenderer(), width, height, true);
   this->ComputeContentRectangle(state, width, height);
   this->Internal->FrameProps.assign(
     state->GetPropArray(), state->GetPropArray() + state->GetPropArrayCount());
@@ -298,7 +298,8 @@ void vtkNPRGBufferPass::SetOutputs(bool normals, bool ids, bool faceNormals, int
   }
 }
 
-void vtkNPRGBufferPass::UpdateProjection(vtkRenderer* renderer, int width, int height)
+void vtkNPRGBufferPass::UpdateProjection(
+  vtkRenderer* renderer, int width, int height, bool mayRemapDepth)
 {
   this->Viewport[0] = 0.0f;
   this->Viewport[1] = 0.0f;
@@ -318,7 +319,7 @@ void vtkNPRGBufferPass::UpdateProjection(vtkRenderer* renderer, int width, int h
   const double* clippingRange = camera->GetClippingRange();
   this->PackedDepthRange[0] = static_cast<float>(clippingRange[0]);
   this->PackedDepthRange[1] = static_cast<float>(clippingRange[1]);
-  const bool remap = this->Perspective && clippingRange[0] > 0.0 &&
+  const bool remap = mayRemapDepth && this->Perspective && clippingRange[0] > 0.0 &&
     clippingRange[1] > MaximumPlainDepthRatio * clippingRange[0];
   if (remap != this->DepthRemapped)
   {
@@ -374,9 +375,8 @@ void vtkNPRGBufferPass::RenderDepthOnly(const vtkRenderState* state, int width, 
     this->DelegatePass->Render(state);
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   }
-  // The delegate set the camera: the projection it drew with, and the usual depth.
-  this->UpdateProjection(renderer, width, height);
-  this->DepthRemapped = false;
+  // The delegate set the camera: the projection it drew with; it wrote the usual depth.
+  this->UpdateProjection(renderer, width, height, false);
   this->DeriveGeometryFromDepth(window, width, height);
   this->CopyBack(state, width, height);
   this->HasContent = true;

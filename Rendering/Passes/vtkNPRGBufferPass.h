@@ -265,7 +265,9 @@ protected:
   static int CountOpaqueProps(const vtkRenderState* state);
   void UpdateOutputs(int opaqueProps);
   void SetOutputs(bool normals, bool ids, bool faceNormals, int encoding);
-  void UpdateProjection(vtkRenderer* renderer, int width, int height);
+  // The camera's matrices, projection type and depth range; with mayRemapDepth, the log depth
+  // for far/near ratios above 1e4 (not in depth-only mode, where the delegate writes the depth).
+  void UpdateProjection(vtkRenderer* renderer, int width, int height, bool mayRemapDepth);
   void DrawGeometry(const vtkRenderState* state, int width, int height);
   void DeriveGeometryFromDepth(vtkOpenGLRenderWindow* window, int width, int height);
   void CopyBack(const vtkRenderState* state, int width, int height);

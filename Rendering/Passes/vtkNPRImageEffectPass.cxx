@@ -37,11 +37,10 @@ void vtkNPRImageEffectPass::Render(const vtkRenderState* state)
 {
   vtkOpenGLClearErrorMacro();
   this->NumberOfRenderedProps = 0;
-  vtkNPRGBufferPass* gbuffer = this->GetGBuffer();
-  if (!gbuffer || gbuffer->GetLastRenderWasSelection() || !gbuffer->GetHasContent() ||
-    !this->UpdateImages(state))
+  vtkNPRGBufferPass* gbuffer = this->GetReadyGBuffer(state);
+  if (!gbuffer)
   {
-    return; // no input, a picking render, nothing was drawn, or an error (reported)
+    return;
   }
   vtkRenderer* renderer = state->GetRenderer();
   int origin[2];
@@ -71,6 +70,25 @@ void vtkNPRImageEffectPass::Render(const vtkRenderState* state)
   }
   this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
   vtkOpenGLCheckErrorMacro("failed after the composite");
+}
+
+vtkNPRGBufferPass* vtkNPRImageEffectPass::GetReadyGBuffer(const vtkRenderState* state)
+{
+  vtkNPRGBufferPass* gbuffer = this->GetGBuffer();
+  if (!gbuffer || gbuffer->GetLastRenderWasSelection() || !gbuffer->GetHasContent() ||
+    !this->UpdateImages(state))
+  {
+    return nullptr; // no input, a picking render, nothing was drawn, or an error (reported)
+  }
+  return gbuffer;
+}
+
+void vtkNPRImageEffectPass::GetWholeRectangle(vtkNPRGBufferPass* gbuffer, int rect[4])
+{
+  vtkTextureObject* depth = gbuffer->GetDepthTexture();
+  rect[0] = rect[1] = 0;
+  rect[2] = static_cast<int>(depth->GetWidth()) - 1;
+  rect[3] = static_cast<int>(depth->GetHeight()) - 1;
 }
 
 bool vtkNPRImageEffectPass::RestoreUnchanged(vtkRenderer* renderer, const int windowRect[4])

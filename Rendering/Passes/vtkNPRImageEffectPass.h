@@ -83,6 +83,12 @@ protected:
   // Frees the subclass's own textures and programs.
   virtual void ReleaseEffectResources(vtkWindow* window) = 0;
 
+  // The frame's guard and first step, for Render() and a subclass's other outputs: the G-buffer,
+  // with content and not from a picking render, once UpdateImages() succeeded; null otherwise.
+  vtkNPRGBufferPass* GetReadyGBuffer(const vtkRenderState* state);
+  // The whole G-buffer as a rectangle x0, y0, x1, y1.
+  static void GetWholeRectangle(vtkNPRGBufferPass* gbuffer, int rect[4]);
+
   bool KeepUnchangedComposite = true;
   int NumberOfKeptCompositeRestores = 0;
 

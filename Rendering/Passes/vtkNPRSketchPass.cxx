@@ -447,13 +447,11 @@ std::string vtkNPRSketchPass::GetCompositeKey(vtkRenderer* renderer)
 void vtkNPRSketchPass::GetCompositeRectangle(vtkRenderer* renderer, int rect[4])
 {
   vtkNPRGBufferPass* gbuffer = this->EdgePass->GetGBufferPass();
-  const int width = gbuffer->GetDepthTexture()->GetWidth();
-  const int height = gbuffer->GetDepthTexture()->GetHeight();
+  int whole[4];
+  GetWholeRectangle(gbuffer, whole);
   if (this->Paper)
   {
-    rect[0] = rect[1] = 0;
-    rect[2] = width - 1;
-    rect[3] = height - 1;
+    std::copy_n(whole, 4, rect);
     return;
   }
   // The props' projected bounds, grown by the largest displacement.
@@ -461,8 +459,8 @@ void vtkNPRSketchPass::GetCompositeRectangle(vtkRenderer* renderer, int rect[4])
   const int grow = static_cast<int>(std::ceil(this->GetEffectiveUncertainty(renderer))) + 1;
   rect[0] = std::max(0, content[0] - grow);
   rect[1] = std::max(0, content[1] - grow);
-  rect[2] = std::max(rect[0] - 1, std::min(width - 1, content[2] + grow));
-  rect[3] = std::max(rect[1] - 1, std::min(height - 1, content[3] + grow));
+  rect[2] = std::max(rect[0] - 1, std::min(whole[2], content[2] + grow));
+  rect[3] = std::max(rect[1] - 1, std::min(whole[3], content[3] + grow));
 }
 
 bool vtkNPRSketchPass::DrawComposite(const vtkRenderState* state, const int origin[2])
