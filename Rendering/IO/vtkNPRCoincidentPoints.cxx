@@ -1,0 +1,283 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkNPRCoincidentPoints.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <utility>
+#include <vector>
+
+namespace
+{
+using Coordinates = std::array<double, 3>;
+
+// A key of the point's coordinates, equal for equal coordinates: 0 and -0 alike, as
+// vtkMergePoints compares them.
+uint64_t HashCoordinates(const Coordinates& p)
+{
+  uint64_t hash = 0x9e3779b97f4a7c15ULL;
+  for (double value : p)
+  {
+    value = value == 0.0 ? 0.0 : value;
+    uint64_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    hash ^= bits + 0x9e3779b97f4a7c15ULL + (hash << 6) + (hash >> 2);
+    hash ^= hash >> 31;
+    hash *= 0xbf58476d1ce4e5b9ULL;
+  }
+  return hash ^ (hash >> 29);
+}
+
+// For every point, the lowest-numbered point with exactly its coordinates: the points sorted
+// by key on every core, then each run of equal keys split by coordinates (distinct points share
+// a key only by a rare collision, so a run holds few groups however many points it has).
+std::vector<vtkIdType> FindRepresentatives(vtkPoints* points)
+{
+  const vtkIdType count = points->GetNumberOfPoints();
+  vtkDataArray* data = points->GetData();
+  std::vector<std::pair<uint64_t, vtkIdType>> keys(static_cast<size_t>(count));
+  vtkSMPTools::For(0, count,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      Coordinates p;
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        data->GetTuple(i, p.data());
+        keys[static_cast<size_t>(i)] = { HashCoordinates(p), i };
+      }
+    });
+  vtkSMPTools::Sort(keys.begin(), keys.end());
+
+  std::vector<vtkIdType> representative(static_cast<size_t>(count));
+  std::vector<std::pair<Coordinates, vtkIdType>> groups;
+  for (size_t start = 0; start < keys.size();)
+  {
+    size_t end = start + 1;
+    while (end < keys.size() && keys[end].first == keys[start].first)
+    {
+      ++end;
+    }
+    groups.clear();
+    for (size_t k = start; k < end; ++k) // in increasing point order: the first is the lowest
+    {
+      const vtkIdType id = keys[k].second;
+      Coordinates p;
+      data->GetTuple(id, p.data());
+      auto group = groups.begin();
+      while (group != groups.end() &&
+        !(group->first[0] == p[0] && group->first[1] == p[1] && group->first[2] == p[2]))
+      {
+        ++group;
+      }
+      if (group == groups.end())
+      {
+        groups.push_back({ p, id });
+        group = groups.end() - 1;
+      }
+      representative[static_cast<size_t>(id)] = group->second;
+    }
+    start = end;
+  }
+  return representative;
+}
+
+// Output point numbers in the order the cells first use the merged points, with the input point
+// of each one's first use (its coordinates and point data).
+class Renumbering
+{
+public:
+  explicit Renumbering(std::vector<vtkIdType> representative)
+    : Representative(std::move(representative))
+    , Numbers(this->Representative.size(), -1)
+  {
+  }
+
+  // The output number of input point id, -1 for a point that does not exist.
+  vtkIdType Map(vtkIdType id)
+  {
+    if (id < 0 || id >= static_cast<vtkIdType>(this->Representative.size()))
+    {
+      return -1;
+    }
+    vtkIdType& number = this->Numbers[static_cast<size_t>(this->Representative[id])];
+    if (number < 0)
+    {
+      number = static_cast<vtkIdType>(this->FirstUse.size());
+      this->FirstUse.push_back(id);
+    }
+    return number;
+  }
+
+  std::vector<vtkIdType> FirstUse;
+
+private:
+  std::vector<vtkIdType> Representative;
+  std::vector<vtkIdType> Numbers;
+};
+
+enum CellKind
+{
+  Verts,
+  Lines,
+  Polys,
+  Strips
+};
+
+// The cells kept of one kind and the input cell each came from.
+struct KeptCells
+{
+  std::vector<vtkIdType> Offsets{ 0 };
+  std::vector<vtkIdType> Connectivity;
+  std::vector<vtkIdType> Sources;
+
+  void Add(const vtkIdType* ids, size_t size, vtkIdType source)
+  {
+    this->Connectivity.insert(this->Connectivity.end(), ids, ids + size);
+    this->Offsets.push_back(static_cast<vtkIdType>(this->Connectivity.size()));
+    this->Sources.push_back(source);
+  }
+
+  vtkSmartPointer<vtkCellArray> Build() const
+  {
+    vtkNew<vtkIdTypeArray> offsets, connectivity;
+    offsets->SetNumberOfValues(static_cast<vtkIdType>(this->Offsets.size()));
+    std::copy(this->Offsets.begin(), this->Offsets.end(), offsets->GetPointer(0));
+    connectivity->SetNumberOfValues(static_cast<vtkIdType>(this->Connectivity.size()));
+    std::copy(this->Connectivity.begin(), this->Connectivity.end(), connectivity->GetPointer(0));
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    cells->SetData(offsets, connectivity);
+    return cells;
+  }
+};
+
+// Renumbers the cells of one kind into kept, by vtkCleanPolyData's rules: repeated consecutive
+// points (and a polygon's or strip's closing repeat) removed, a cell kept as its own kind with
+// enough points left, as the smaller kind only when it had no more points to begin with.
+bool MergeCells(vtkCellArray* cells, CellKind kind, Renumbering& numbers, vtkIdType& cellId,
+  std::array<KeptCells, 4>& kept)
+{
+  static const size_t fewest[4] = { 1, 2, 3, 4 };
+  std::vector<vtkIdType> merged;
+  vtkIdType size = 0;
+  const vtkIdType* ids = nullptr;
+  for (cells->InitTraversal(); cells->GetNextCell(size, ids); ++cellId)
+  {
+    merged.clear();
+    for (vtkIdType k = 0; k < size; ++k)
+    {
+      const vtkIdType number = numbers.Map(ids[k]);
+      if (number < 0)
+      {
+        return false;
+      }
+      if (kind == Verts || merged.empty() || number != merged.back())
+      {
+        merged.push_back(number);
+      }
+    }
+    size_t left = merged.size();
+    if (left > (kind == Polys ? 2u : 1u) && (kind == Polys || kind == Strips) &&
+      merged.front() == merged.back())
+    {
+      --left;
+    }
+    if (left >= fewest[kind])
+    {
+      kept[kind].Add(merged.data(), left, cellId);
+    }
+    else if (left >= 1 && left == static_cast<size_t>(size))
+    {
+      kept[left - 1].Add(merged.data(), left, cellId);
+    }
+  }
+  return true;
+}
+
+vtkSmartPointer<vtkIdList> ToIdList(const std::vector<vtkIdType>& ids)
+{
+  auto list = vtkSmartPointer<vtkIdList>::New();
+  list->SetNumberOfIds(static_cast<vtkIdType>(ids.size()));
+  std::copy(ids.begin(), ids.end(), list->GetPointer(0));
+  return list;
+}
+
+vtkSmartPointer<vtkIdList> Sequence(size_t count)
+{
+  auto list = vtkSmartPointer<vtkIdList>::New();
+  list->SetNumberOfIds(static_cast<vtkIdType>(count));
+  for (size_t i = 0; i < count; ++i)
+  {
+    list->SetId(static_cast<vtkIdType>(i), static_cast<vtkIdType>(i));
+  }
+  return list;
+}
+
+// The merged points: coordinates and point data of each one's first use.
+void WritePoints(vtkPolyData* input, const Renumbering& numbers, vtkPolyData* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(static_cast<vtkIdType>(numbers.FirstUse.size()));
+  input->GetPoints()->GetData()->GetTuples(ToIdList(numbers.FirstUse), points->GetData());
+  output->SetPoints(points);
+  vtkPointData* pointData = output->GetPointData();
+  pointData->CopyAllocate(input->GetPointData(), points->GetNumberOfPoints());
+  pointData->CopyData(
+    input->GetPointData(), ToIdList(numbers.FirstUse), Sequence(numbers.FirstUse.size()));
+}
+
+// The kept cells, and their cell data in vtkPolyData's order: vertices, lines, polygons, strips.
+void WriteCells(vtkPolyData* input, const std::array<KeptCells, 4>& kept, vtkPolyData* output)
+{
+  output->SetVerts(kept[Verts].Build());
+  output->SetLines(kept[Lines].Build());
+  output->SetPolys(kept[Polys].Build());
+  output->SetStrips(kept[Strips].Build());
+  std::vector<vtkIdType> sources;
+  for (const KeptCells& cells : kept)
+  {
+    sources.insert(sources.end(), cells.Sources.begin(), cells.Sources.end());
+  }
+  vtkCellData* cellData = output->GetCellData();
+  cellData->CopyAllOn(vtkDataSetAttributes::COPYTUPLE);
+  cellData->CopyAllocate(input->GetCellData(), static_cast<vtkIdType>(sources.size()));
+  cellData->CopyData(input->GetCellData(), ToIdList(sources), Sequence(sources.size()));
+}
+}
+
+std::string vtkNPRCoincidentPoints::Merge(vtkPolyData* input, vtkPolyData* output)
+{
+  output->Initialize();
+  if (!input->GetPoints() || input->GetNumberOfPoints() == 0)
+  {
+    return "";
+  }
+  Renumbering numbers(FindRepresentatives(input->GetPoints()));
+  std::array<KeptCells, 4> kept;
+  vtkIdType cellId = 0;
+  const std::pair<vtkCellArray*, CellKind> kinds[] = { { input->GetVerts(), Verts },
+    { input->GetLines(), Lines }, { input->GetPolys(), Polys }, { input->GetStrips(), Strips } };
+  for (const auto& cells : kinds)
+  {
+    if (cells.first && !MergeCells(cells.first, cells.second, numbers, cellId, kept))
+    {
+      return "cell " + std::to_string(cellId) + " names a point past the " +
+        std::to_string(input->GetNumberOfPoints()) + " points";
+    }
+  }
+  WritePoints(input, numbers, output);
+  WriteCells(input, kept, output);
+  return "";
+}
