@@ -6,6 +6,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNPRCoincidentPoints.h"
+#include "vtkNPRSplitNormals.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -78,7 +79,13 @@ int vtkNPRShadingNormals::RequestData(
     return 0;
   }
   vtkTimerLog::MarkStartEvent("vtkNPRShadingNormals: normals");
-  vtkNew<vtkPolyDataNormals> normals;
+  if (vtkNPRSplitNormals::Compute(merged, this->FeatureAngle, output))
+  {
+    vtkTimerLog::MarkEndEvent("vtkNPRShadingNormals: normals");
+    this->ComputedNormals = true;
+    return 1;
+  }
+  vtkNew<vtkPolyDataNormals> normals; // triangle strips
   normals->SetInputData(merged);
   normals->SetFeatureAngle(this->FeatureAngle);
   normals->SplittingOn();

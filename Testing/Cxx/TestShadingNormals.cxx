@@ -23,6 +23,7 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkSphereSource.h"
+#include "vtkStripper.h"
 #include "vtkTriangleFilter.h"
 
 #include <cmath>
@@ -328,6 +329,11 @@ int MatchesClean()
 {
   CheckMatchesClean("every merge rule", EveryMergeRule());
   CheckFirstUseData(EveryMergeRule());
+  vtkNew<vtkStripper> strips; // strips: vtkPolyDataNormals' path
+  strips->SetInputData(Sphere());
+  strips->Update();
+  strips->GetOutput()->GetPointData()->SetNormals(nullptr);
+  CheckMatchesClean("sphere as strips", strips->GetOutput());
   for (const char* model : { "bunny.ply", "rotor.ply", "cad_part.vtp" })
   {
     vtkSmartPointer<vtkNPRModelReader> reader = nprReadTestModel(model);

@@ -1,0 +1,399 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkNPRSplitNormals.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolygon.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace
+{
+// The polygons as offsets and connectivity, read in place.
+struct Polygons
+{
+  vtkIdType Count = 0;
+  const vtkIdType* Offsets = nullptr;
+  const vtkIdType* Connectivity = nullptr;
+  vtkSmartPointer<vtkCellArray> Storage; // a 64-bit copy when the input's is 32-bit
+
+  explicit Polygons(vtkCellArray* polys)
+    : Storage(polys)
+  {
+    if (!polys->IsStorage64Bit())
+    {
+      this->Storage = vtkSmartPointer<vtkCellArray>::New();
+      this->Storage->DeepCopy(polys);
+      this->Storage->ConvertTo64BitStorage();
+    }
+    static_assert(sizeof(vtkIdType) == sizeof(vtkTypeInt64), "64-bit ids");
+    this->Count = this->Storage->GetNumberOfCells();
+    this->Offsets =
+      reinterpret_cast<const vtkIdType*>(this->Storage->GetOffsetsArray64()->GetPointer(0));
+    this->Connectivity =
+      reinterpret_cast<const vtkIdType*>(this->Storage->GetConnectivityArray64()->GetPointer(0));
+  }
+
+  vtkIdType Size(vtkIdType face) const { return this->Offsets[face + 1] - this->Offsets[face]; }
+  const vtkIdType* Points(vtkIdType face) const { return this->Connectivity + this->Offsets[face]; }
+  vtkIdType Corners() const { return this->Offsets[this->Count]; }
+};
+
+// The faces around each point in increasing order, once per corner, as vtkCellLinks lists them.
+struct PointFaces
+{
+  std::vector<vtkIdType> Offsets;
+  std::vector<vtkIdType> Faces;
+
+  PointFaces(const Polygons& polygons, vtkIdType pointCount)
+    : Offsets(static_cast<size_t>(pointCount) + 1, 0)
+    , Faces(static_cast<size_t>(polygons.Corners()))
+  {
+    for (vtkIdType k = 0; k < polygons.Corners(); ++k)
+    {
+      ++this->Offsets[static_cast<size_t>(polygons.Connectivity[k]) + 1];
+    }
+    for (size_t p = 1; p < this->Offsets.size(); ++p)
+    {
+      this->Offsets[p] += this->Offsets[p - 1];
+    }
+    std::vector<vtkIdType> next(this->Offsets.begin(), this->Offsets.end() - 1);
+    for (vtkIdType face = 0; face < polygons.Count; ++face)
+    {
+      for (vtkIdType k = 0; k < polygons.Size(face); ++k)
+      {
+        this->Faces[static_cast<size_t>(next[polygons.Points(face)[k]]++)] = face;
+      }
+    }
+  }
+};
+
+// Each face's unit normal (vtkPolygon::ComputeNormal, kept as float as vtkPolyDataNormals keeps
+// it), on every core.
+std::vector<float> FaceNormals(vtkPoints* points, const Polygons& polygons)
+{
+  std::vector<float> normals(3 * static_cast<size_t>(polygons.Count));
+  vtkSMPTools::For(0, polygons.Count,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double n[3];
+      for (vtkIdType face = begin; face < end; ++face)
+      {
+        vtkPolygon::ComputeNormal(
+          points, static_cast<int>(polygons.Size(face)), polygons.Points(face), n);
+        for (int c = 0; c < 3; ++c)
+        {
+          normals[3 * static_cast<size_t>(face) + c] = static_cast<float>(n[c]);
+        }
+      }
+    });
+  return normals;
+}
+
+// The regions of faces around one point, found as vtkPolyDataNormals::MarkAndSplit finds them:
+// from each face not yet in a region, a walk across the point's two edges of it, on through the
+// next face across each edge while exactly one face shares the edge, it is in no region yet, and
+// its normal is within the feature angle.
+class FanSplitter
+{
+public:
+  FanSplitter(const Polygons& polygons, const PointFaces& links, const std::vector<float>& normals,
+    double cosAngle)
+    : Polys(polygons)
+    , Links(links)
+    , Normals(normals)
+    , CosAngle(cosAngle)
+  {
+  }
+
+  // Writes the region of each of the point's link entries; returns the number of regions.
+  int Split(vtkIdType point, int* regions) const
+  {
+    const vtkIdType* faces = this->Links.Faces.data() + this->Links.Offsets[point];
+    const vtkIdType count = this->Links.Offsets[point + 1] - this->Links.Offsets[point];
+    std::fill(regions, regions + count, -1);
+    int regionCount = 0;
+    for (vtkIdType j = 0; j < count; ++j)
+    {
+      const vtkIdType slot = Slot(faces, count, faces[j]);
+      if (regions[slot] >= 0)
+      {
+        continue;
+      }
+      regions[slot] = regionCount;
+      vtkIdType neighbours[2];
+      NeighbourPoints(faces[j], point, neighbours);
+      for (vtkIdType neighbour : neighbours)
+      {
+        this->Walk(point, faces, count, faces[j], neighbour, regionCount, regions);
+      }
+      ++regionCount;
+    }
+    for (vtkIdType j = 1; j < count; ++j) // a face listed twice: both entries in its region
+    {
+      regions[j] = faces[j] == faces[j - 1] ? regions[j - 1] : regions[j];
+    }
+    return regionCount;
+  }
+
+private:
+  // The first entry of face in the point's sorted list.
+  static vtkIdType Slot(const vtkIdType* faces, vtkIdType count, vtkIdType face)
+  {
+    return std::lower_bound(faces, faces + count, face) - faces;
+  }
+
+  // The point's two neighbours in the face, as vtkPolyDataNormals picks them.
+  void NeighbourPoints(vtkIdType face, vtkIdType point, vtkIdType neighbours[2]) const
+  {
+    const vtkIdType size = this->Polys.Size(face);
+    const vtkIdType* pts = this->Polys.Points(face);
+    const vtkIdType spot = std::find(pts, pts + size, point) - pts;
+    neighbours[0] = spot == size - 1 ? pts[spot - 1] : pts[spot + 1];
+    neighbours[1] = spot == 0 ? pts[size - 1] : (spot == size - 1 ? pts[0] : pts[spot - 1]);
+  }
+
+  // The point's other neighbour in face: not the one the walk came from.
+  vtkIdType NextNeighbour(vtkIdType face, vtkIdType point, vtkIdType from) const
+  {
+    const vtkIdType size = this->Polys.Size(face);
+    const vtkIdType* pts = this->Polys.Points(face);
+    const vtkIdType spot = std::find(pts, pts + size, point) - pts;
+    const vtkIdType after = spot == size - 1 ? pts[spot - 1] : pts[spot + 1];
+    const vtkIdType before =
+      spot == 0 ? pts[size - 1] : (spot == size - 1 ? pts[0] : pts[spot - 1]);
+    return after != from ? after : before;
+  }
+
+  // The faces other than face that share the edge (point, neighbour), counted once per entry of
+  // the point's list (as vtkPolyData::GetCellEdgeNeighbors counts them); the first in found.
+  vtkIdType EdgeNeighbours(const vtkIdType* faces, vtkIdType count, vtkIdType face,
+    vtkIdType neighbour, vtkIdType& found) const
+  {
+    vtkIdType shared = 0;
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      const vtkIdType* pts = this->Polys.Points(faces[k]);
+      if (faces[k] != face &&
+        std::find(pts, pts + this->Polys.Size(faces[k]), neighbour) !=
+          pts + this->Polys.Size(faces[k]))
+      {
+        found = shared++ == 0 ? faces[k] : found;
+      }
+    }
+    return shared;
+  }
+
+  double Dot(vtkIdType a, vtkIdType b) const
+  {
+    const float* na = this->Normals.data() + 3 * a;
+    const float* nb = this->Normals.data() + 3 * b;
+    const double x[3] = { na[0], na[1], na[2] }, y[3] = { nb[0], nb[1], nb[2] };
+    return vtkMath::Dot(x, y);
+  }
+
+  void Walk(vtkIdType point, const vtkIdType* faces, vtkIdType count, vtkIdType face,
+    vtkIdType neighbour, int region, int* regions) const
+  {
+    while (face >= 0)
+    {
+      vtkIdType next = -1;
+      if (this->EdgeNeighbours(faces, count, face, neighbour, next) != 1 ||
+        regions[Slot(faces, count, next)] >= 0 || !(this->Dot(face, next) > this->CosAngle))
+      {
+        return; // a boundary, a non-manifold edge, a region met, or a crease
+      }
+      regions[Slot(faces, count, next)] = region;
+      neighbour = this->NextNeighbour(next, point, neighbour);
+      face = next;
+    }
+  }
+
+  const Polygons& Polys;
+  const PointFaces& Links;
+  const std::vector<float>& Normals;
+  const double CosAngle;
+};
+
+// The regions of every point's link entries, and each point's number of regions.
+struct Split
+{
+  std::vector<int> Regions;
+  std::vector<int> RegionCounts;
+  std::vector<vtkIdType> FirstAdded; // the output number of each point's region 1
+  vtkIdType OutputPoints = 0;
+};
+
+Split SplitFans(const Polygons& polygons, const PointFaces& links,
+  const std::vector<float>& normals, double featureAngle, vtkIdType pointCount)
+{
+  Split split;
+  split.Regions.resize(links.Faces.size());
+  split.RegionCounts.resize(static_cast<size_t>(pointCount));
+  const FanSplitter splitter(
+    polygons, links, normals, std::cos(vtkMath::RadiansFromDegrees(featureAngle)));
+  vtkSMPTools::For(0, pointCount,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        split.RegionCounts[static_cast<size_t>(p)] =
+          splitter.Split(p, split.Regions.data() + links.Offsets[static_cast<size_t>(p)]);
+      }
+    });
+  // Points added in point order, and region order within a point, as vtkPolyDataNormals adds
+  // them.
+  split.FirstAdded.resize(static_cast<size_t>(pointCount));
+  split.OutputPoints = pointCount;
+  for (size_t p = 0; p < split.FirstAdded.size(); ++p)
+  {
+    split.FirstAdded[p] = split.OutputPoints;
+    split.OutputPoints += std::max(split.RegionCounts[p] - 1, 0);
+  }
+  return split;
+}
+
+// The output number of the point in a face of the given region.
+vtkIdType SplitPoint(const Split& split, vtkIdType point, int region)
+{
+  return region <= 0 ? point : split.FirstAdded[static_cast<size_t>(point)] + region - 1;
+}
+
+// The polygons with each point replaced by its region's copy.
+vtkSmartPointer<vtkCellArray> SplitPolygons(
+  const Polygons& polygons, const PointFaces& links, const Split& split, vtkIdType pointCount)
+{
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfValues(polygons.Count + 1);
+  std::copy(polygons.Offsets, polygons.Offsets + polygons.Count + 1, offsets->GetPointer(0));
+  connectivity->SetNumberOfValues(polygons.Corners());
+  vtkIdType* corners = connectivity->GetPointer(0);
+  std::copy(polygons.Connectivity, polygons.Connectivity + polygons.Corners(), corners);
+  vtkSMPTools::For(0, pointCount,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        for (vtkIdType k = links.Offsets[p]; k < links.Offsets[p + 1]; ++k)
+        {
+          const int region = split.Regions[static_cast<size_t>(k)];
+          const vtkIdType face = links.Faces[static_cast<size_t>(k)];
+          for (vtkIdType c = polygons.Offsets[face]; region > 0 && c < polygons.Offsets[face + 1];
+               ++c)
+          {
+            corners[c] = polygons.Connectivity[c] == p ? SplitPoint(split, p, region) : corners[c];
+          }
+        }
+      }
+    });
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(offsets, connectivity);
+  return cells;
+}
+
+// Each output point's normal: the sum of its faces' normals in face order, as float, normalised.
+vtkSmartPointer<vtkFloatArray> PointNormals(const PointFaces& links, const Split& split,
+  const std::vector<float>& faceNormals, vtkIdType pointCount)
+{
+  auto normals = vtkSmartPointer<vtkFloatArray>::New();
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(split.OutputPoints);
+  float* out = normals->GetPointer(0);
+  vtkSMPThreadLocal<std::vector<std::array<float, 3>>> scratch;
+  vtkSMPTools::For(0, pointCount,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      std::vector<std::array<float, 3>>& sums = scratch.Local();
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        sums.assign(static_cast<size_t>(std::max(split.RegionCounts[static_cast<size_t>(p)], 1)),
+          { 0.f, 0.f, 0.f });
+        for (vtkIdType k = links.Offsets[p]; k < links.Offsets[p + 1]; ++k)
+        {
+          const float* n = faceNormals.data() + 3 * links.Faces[static_cast<size_t>(k)];
+          std::array<float, 3>& sum = sums[static_cast<size_t>(split.Regions[k])];
+          sum = { sum[0] + n[0], sum[1] + n[1], sum[2] + n[2] };
+        }
+        for (size_t r = 0; r < sums.size(); ++r)
+        {
+          const std::array<float, 3>& s = sums[r];
+          const double length =
+            std::sqrt(static_cast<double>(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]));
+          float* target = out + 3 * SplitPoint(split, p, static_cast<int>(r));
+          for (int c = 0; c < 3; ++c)
+          {
+            target[c] = length != 0.0 ? static_cast<float>(s[c] / length) : s[c];
+          }
+        }
+      }
+    });
+  return normals;
+}
+
+// The output points: the input's, then the copies in the order they were added, each with its
+// point data.
+void WritePoints(vtkPolyData* input, const Split& split, vtkPolyData* output)
+{
+  vtkNew<vtkIdList> sources, targets;
+  sources->SetNumberOfIds(split.OutputPoints);
+  targets->SetNumberOfIds(split.OutputPoints);
+  for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
+  {
+    sources->SetId(p, p);
+    for (int r = 1; r < split.RegionCounts[static_cast<size_t>(p)]; ++r)
+    {
+      sources->SetId(SplitPoint(split, p, r), p);
+    }
+  }
+  for (vtkIdType i = 0; i < split.OutputPoints; ++i)
+  {
+    targets->SetId(i, i);
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(split.OutputPoints);
+  input->GetPoints()->GetData()->GetTuples(sources, points->GetData());
+  output->SetPoints(points);
+  vtkPointData* pointData = output->GetPointData();
+  pointData->CopyNormalsOff();
+  pointData->CopyAllocate(input->GetPointData(), split.OutputPoints);
+  pointData->CopyData(input->GetPointData(), sources, targets);
+}
+}
+
+bool vtkNPRSplitNormals::Compute(vtkPolyData* input, double featureAngle, vtkPolyData* output)
+{
+  if (input->GetNumberOfStrips() > 0 || input->GetNumberOfPolys() == 0 ||
+    input->GetNumberOfPoints() == 0)
+  {
+    return false;
+  }
+  const vtkIdType pointCount = input->GetNumberOfPoints();
+  const Polygons polygons(input->GetPolys());
+  const PointFaces links(polygons, pointCount);
+  const std::vector<float> faceNormals = FaceNormals(input->GetPoints(), polygons);
+  const Split split = SplitFans(polygons, links, faceNormals, featureAngle, pointCount);
+  output->Initialize();
+  WritePoints(input, split, output);
+  output->GetPointData()->SetNormals(PointNormals(links, split, faceNormals, pointCount));
+  output->SetPolys(SplitPolygons(polygons, links, split, pointCount));
+  output->SetVerts(input->GetVerts());
+  output->SetLines(input->GetLines());
+  output->GetCellData()->PassData(input->GetCellData());
+  return true;
+}
