@@ -23,21 +23,8 @@
 
 namespace
 {
-struct PLYProperty
-{
-  std::string Name;
-  int Size = 0;      // bytes of the value, or of each list item
-  int CountSize = 0; // bytes of a list's count; 0 for a scalar property
-  bool Signed = false;
-  bool Float = false;
-};
-
-struct PLYElement
-{
-  std::string Name;
-  long long Count = 0;
-  std::vector<PLYProperty> Properties;
-};
+using PLYProperty = vtkNPRModelFormatChecks::PLYProperty;
+using PLYElement = vtkNPRModelFormatChecks::PLYElement;
 
 // Size in bytes of a PLY scalar type, 0 for an unknown type.
 int TypeSize(const std::string& type, bool& isSigned, bool& isFloat)
@@ -248,16 +235,14 @@ std::string CheckPLYBinaryBody(
 
 }
 
-std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
+std::string vtkNPRModelFormatChecks::ReadPLYHeader(
+  std::istream& in, std::string& format, std::vector<PLYElement>& elements)
 {
-  std::ifstream in(fileName, std::ios::binary);
   std::string line;
   if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0)
   {
     return "malformed PLY file: it does not start with 'ply'";
   }
-  std::string format;
-  std::vector<PLYElement> elements;
   bool ended = false;
   while (!ended && std::getline(in, line))
   {
@@ -328,6 +313,19 @@ std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
   if (!ended)
   {
     return "malformed PLY header: no end_header";
+  }
+  return "";
+}
+
+std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  std::string format;
+  std::vector<PLYElement> elements;
+  const std::string headerError = ReadPLYHeader(in, format, elements);
+  if (!headerError.empty())
+  {
+    return headerError;
   }
   // Without a vertex element of x, y and z, vtkPLYReader uses the file it has just closed.
   const auto vertex = std::find_if(elements.begin(), elements.end(),

@@ -13,6 +13,7 @@
 #include "vtkGLTFReader.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNPRBinaryPLY.h"
 #include "vtkNPRGLTFChecks.h"
 #include "vtkNPRModelFormatChecks.h"
 #include "vtkNPROFFReader.h"
@@ -407,10 +408,20 @@ std::string CheckStructure(
 }
 
 // Runs VTK's reader and makes one polydata of what it read: composite (glTF) and
-// non-polygonal (legacy) data too. Returns why it failed, or "".
+// non-polygonal (legacy) data too. Returns why it failed, or "". A binary PLY file of the common
+// layout is read by vtkNPRBinaryPLY instead, into the same output, many times faster.
 std::string ReadSurface(vtkAlgorithm* reader, const std::string& name, const std::string& extension,
   vtkSmartPointer<vtkPolyData>& surface)
 {
+  if (extension == ".ply")
+  {
+    vtkNew<vtkPolyData> read;
+    if (vtkNPRBinaryPLY::Read(name, read))
+    {
+      surface = read;
+      return "";
+    }
+  }
   MessageCatcher messages(reader);
   reader->Update();
   vtkDataObject* data = reader->GetOutputDataObject(0);
@@ -441,6 +452,13 @@ std::string ReadSurface(vtkAlgorithm* reader, const std::string& name, const std
     extract->Update();
     surface = extract->GetOutput();
   }
+  return "";
+}
+
+// Why what was read cannot be drawn at all, or "".
+std::string CheckSurface(
+  const std::string& name, const std::string& extension, vtkPolyData* surface)
+{
   if (!surface || surface->GetNumberOfCells() == 0 || surface->GetNumberOfPoints() == 0)
   {
     return name + ": contains no geometry (no points or no cells)";
@@ -577,6 +595,10 @@ bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
   vtkTimerLog::MarkStartEvent("vtkNPRModelReader: read");
   vtkSmartPointer<vtkPolyData> surface;
   error = ReadSurface(reader, name, extension, surface);
+  if (error.empty())
+  {
+    error = CheckSurface(name, extension, surface);
+  }
   if (error.empty())
   {
     error = MarkNonFiniteOBJVertices(name, objVertices, surface);
