@@ -198,7 +198,8 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
   }
   else if (!options.Output.empty())
   {
-    nprWriteWindowPNG(window, options.Output, false);
+    // The first frame is what it writes, unless --frames drew others since.
+    nprWriteWindowPNG(window, options.Output, false, options.Frames > 0);
   }
   if (!options.Output.empty())
   {

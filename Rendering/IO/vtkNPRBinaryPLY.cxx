@@ -5,6 +5,8 @@
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkNPRChunkedInput.h"
+#include "vtkNPRIdBuffer.h"
 #include "vtkNPRModelFormatChecks.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -12,6 +14,7 @@
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -175,53 +178,31 @@ long long Integer(const unsigned char* bytes, int size, bool isSigned)
 // a file that ends early.
 bool ReadFaces(std::istream& in, long long count, const PLYProperty& list, vtkPolyData* output)
 {
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfValues(count + 1);
-  vtkIdType* offset = offsets->GetPointer(0);
-  std::vector<vtkIdType> corners;
-  corners.reserve(static_cast<size_t>(count) * 3);
-  std::vector<unsigned char> buffer(1 << 20);
-  size_t position = 0, end = 0;
-  auto take = [&](size_t size) -> const unsigned char*
-  {
-    if (position + size > end)
-    {
-      std::memmove(buffer.data(), buffer.data() + position, end - position);
-      end -= position;
-      position = 0;
-      in.read(reinterpret_cast<char*>(buffer.data() + end),
-        static_cast<std::streamsize>(buffer.size() - end));
-      end += static_cast<size_t>(in.gcount());
-      if (size > end)
-      {
-        return nullptr;
-      }
-    }
-    position += size;
-    return buffer.data() + position - size;
-  };
-  offset[0] = 0;
+  vtkNPRIdBuffer offsets, connectivity;
+  offsets.Reserve(count + 1);
+  offsets.Append(0);
+  connectivity.Reserve(3 * count); // triangles, most often
+  vtkNPRChunkedInput input(in);
+  vtkIdType corners[255];
   for (long long f = 0; f < count; ++f)
   {
-    const unsigned char* countBytes = take(static_cast<size_t>(list.CountSize));
+    const unsigned char* countBytes = input.Take(static_cast<size_t>(list.CountSize));
     const long long size = countBytes ? Integer(countBytes, list.CountSize, false) : -1;
     const unsigned char* items =
-      size >= 0 && size <= 255 ? take(static_cast<size_t>(size * list.Size)) : nullptr;
+      size >= 0 && size <= 255 ? input.Take(static_cast<size_t>(size * list.Size)) : nullptr;
     if (!items)
     {
       return false;
     }
     for (long long k = 0; k < size; ++k)
     {
-      corners.push_back(
-        static_cast<vtkIdType>(Integer(items + k * list.Size, list.Size, list.Signed)));
+      corners[k] = static_cast<vtkIdType>(Integer(items + k * list.Size, list.Size, list.Signed));
     }
-    offset[f + 1] = static_cast<vtkIdType>(corners.size());
+    connectivity.Append(corners, static_cast<vtkIdType>(size));
+    offsets.Append(connectivity.Size());
   }
-  connectivity->SetNumberOfValues(static_cast<vtkIdType>(corners.size()));
-  std::copy(corners.begin(), corners.end(), connectivity->GetPointer(0));
   vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, connectivity);
+  polys->SetData(offsets.Finish(), connectivity.Finish());
   output->SetPolys(polys);
   return true;
 }

@@ -7,6 +7,7 @@
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
+#include "vtkNPRIdBuffer.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -138,26 +139,31 @@ enum CellKind
 // The cells kept of one kind and the input cell each came from.
 struct KeptCells
 {
-  std::vector<vtkIdType> Offsets{ 0 };
-  std::vector<vtkIdType> Connectivity;
+  vtkNPRIdBuffer Offsets;
+  vtkNPRIdBuffer Connectivity;
   std::vector<vtkIdType> Sources;
+
+  KeptCells() { this->Offsets.Append(0); }
+
+  // Room for what one kind of cells keeps at most: no growth as they are added.
+  void Reserve(vtkIdType cells, vtkIdType ids)
+  {
+    this->Offsets.Reserve(cells);
+    this->Connectivity.Reserve(ids);
+    this->Sources.reserve(this->Sources.size() + static_cast<size_t>(cells));
+  }
 
   void Add(const vtkIdType* ids, size_t size, vtkIdType source)
   {
-    this->Connectivity.insert(this->Connectivity.end(), ids, ids + size);
-    this->Offsets.push_back(static_cast<vtkIdType>(this->Connectivity.size()));
+    this->Connectivity.Append(ids, static_cast<vtkIdType>(size));
+    this->Offsets.Append(this->Connectivity.Size());
     this->Sources.push_back(source);
   }
 
-  vtkSmartPointer<vtkCellArray> Build() const
+  vtkSmartPointer<vtkCellArray> Build()
   {
-    vtkNew<vtkIdTypeArray> offsets, connectivity;
-    offsets->SetNumberOfValues(static_cast<vtkIdType>(this->Offsets.size()));
-    std::copy(this->Offsets.begin(), this->Offsets.end(), offsets->GetPointer(0));
-    connectivity->SetNumberOfValues(static_cast<vtkIdType>(this->Connectivity.size()));
-    std::copy(this->Connectivity.begin(), this->Connectivity.end(), connectivity->GetPointer(0));
     auto cells = vtkSmartPointer<vtkCellArray>::New();
-    cells->SetData(offsets, connectivity);
+    cells->SetData(this->Offsets.Finish(), this->Connectivity.Finish());
     return cells;
   }
 };
@@ -168,6 +174,7 @@ struct KeptCells
 bool MergeCells(vtkCellArray* cells, CellKind kind, Renumbering& numbers, vtkIdType& cellId,
   std::array<KeptCells, 4>& kept)
 {
+  kept[kind].Reserve(cells->GetNumberOfCells(), cells->GetNumberOfConnectivityIds());
   static const size_t fewest[4] = { 1, 2, 3, 4 };
   std::vector<vtkIdType> merged;
   vtkIdType size = 0;
@@ -239,7 +246,7 @@ void WritePoints(vtkPolyData* input, const Renumbering& numbers, vtkPolyData* ou
 }
 
 // The kept cells, and their cell data in vtkPolyData's order: vertices, lines, polygons, strips.
-void WriteCells(vtkPolyData* input, const std::array<KeptCells, 4>& kept, vtkPolyData* output)
+void WriteCells(vtkPolyData* input, std::array<KeptCells, 4>& kept, vtkPolyData* output)
 {
   output->SetVerts(kept[Verts].Build());
   output->SetLines(kept[Lines].Build());

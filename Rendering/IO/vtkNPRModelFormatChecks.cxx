@@ -4,6 +4,7 @@
 
 #include "vtkLZ4DataCompressor.h"
 #include "vtkLZMADataCompressor.h"
+#include "vtkNPRChunkedInput.h"
 #include "vtkSmartPointer.h"
 #include "vtkVersionMacros.h"
 #include "vtkZLibDataCompressor.h"
@@ -67,75 +68,19 @@ long long DecodeInteger(unsigned char* bytes, int size, bool isSigned, bool swap
   return static_cast<long long>(raw);
 }
 
-// The bytes of a stream from its position on, read a megabyte at a time: a binary body walked
-// value by value through the stream itself took seconds on a 5M-triangle PLY.
-class ChunkedInput
+// One binary integer from a chunked input; false when the input ends first.
+bool ReadInteger(vtkNPRChunkedInput& input, int size, bool isSigned, bool swap, long long& value)
 {
-public:
-  explicit ChunkedInput(std::istream& in)
-    : In(in)
+  const unsigned char* bytes = input.Take(static_cast<size_t>(size));
+  if (!bytes)
   {
+    return false;
   }
-
-  // The next size bytes (at most 8) into target, or skipped when target is null; false when the
-  // file ends first.
-  bool Take(unsigned char* target, size_t size)
-  {
-    if (this->Position + size > this->End && !this->Refill(size))
-    {
-      return false;
-    }
-    if (target)
-    {
-      std::memcpy(target, this->Buffer.data() + this->Position, size);
-    }
-    this->Position += size;
-    return true;
-  }
-
-  // Skips up to size bytes; returns how many there were.
-  uint64_t Skip(uint64_t size)
-  {
-    const uint64_t buffered = std::min<uint64_t>(size, this->End - this->Position);
-    this->Position += static_cast<size_t>(buffered);
-    uint64_t skipped = buffered;
-    while (skipped < size && this->In)
-    {
-      const uint64_t step = std::min<uint64_t>(size - skipped, uint64_t(1) << 30);
-      this->In.ignore(static_cast<std::streamsize>(step));
-      skipped += static_cast<uint64_t>(this->In.gcount());
-    }
-    return skipped;
-  }
-
-  bool ReadInteger(int size, bool isSigned, bool swap, long long& value)
-  {
-    unsigned char bytes[8];
-    if (!this->Take(bytes, static_cast<size_t>(size)))
-    {
-      return false;
-    }
-    value = DecodeInteger(bytes, size, isSigned, swap);
-    return true;
-  }
-
-private:
-  bool Refill(size_t needed)
-  {
-    const size_t left = this->End - this->Position;
-    std::memmove(this->Buffer.data(), this->Buffer.data() + this->Position, left);
-    this->In.read(reinterpret_cast<char*>(this->Buffer.data() + left),
-      static_cast<std::streamsize>(this->Buffer.size() - left));
-    this->Position = 0;
-    this->End = left + static_cast<size_t>(this->In.gcount());
-    return this->End >= needed;
-  }
-
-  std::istream& In;
-  std::vector<unsigned char> Buffer = std::vector<unsigned char>(1 << 20);
-  size_t Position = 0;
-  size_t End = 0;
-};
+  unsigned char copy[8];
+  std::memcpy(copy, bytes, static_cast<size_t>(size));
+  value = DecodeInteger(copy, size, isSigned, swap);
+  return true;
+}
 
 bool ParseInteger(const std::string& token, long long& value);
 
@@ -162,12 +107,12 @@ std::string TruncatedPLYRow(const PLYElement& element, uint64_t row, uint64_t of
 }
 
 // One property of row i in a binary body: its list count and items, or its value.
-std::string CheckPLYBinaryValue(ChunkedInput& input, const PLYElement& element,
+std::string CheckPLYBinaryValue(vtkNPRChunkedInput& input, const PLYElement& element,
   const PLYProperty& property, long long i, long long vertexCount, bool swap)
 {
   long long items = 1;
   if (property.CountSize &&
-    (!input.ReadInteger(property.CountSize, false, swap, items) || items < 0))
+    (!ReadInteger(input, property.CountSize, false, swap, items) || items < 0))
   {
     return "truncated or malformed PLY file in " + element.Name + " " + std::to_string(i);
   }
@@ -175,8 +120,9 @@ std::string CheckPLYBinaryValue(ChunkedInput& input, const PLYElement& element,
   for (long long k = 0; k < items; ++k)
   {
     long long index = 0;
-    const bool ok = property.Float ? input.Take(nullptr, static_cast<size_t>(property.Size))
-                                   : input.ReadInteger(property.Size, property.Signed, swap, index);
+    const bool ok = property.Float
+      ? input.Take(static_cast<size_t>(property.Size)) != nullptr
+      : ReadInteger(input, property.Size, property.Signed, swap, index);
     if (!ok)
     {
       return "truncated or malformed PLY file in " + element.Name + " " + std::to_string(i) +
@@ -196,7 +142,7 @@ std::string CheckPLYBinaryValue(ChunkedInput& input, const PLYElement& element,
 std::string CheckPLYBinaryBody(
   std::istream& in, const std::vector<PLYElement>& elements, long long vertexCount, bool swap)
 {
-  ChunkedInput input(in);
+  vtkNPRChunkedInput input(in);
   for (const PLYElement& element : elements)
   {
     uint64_t rowSize = 0;

@@ -188,9 +188,13 @@ private:
     for (vtkIdType k = 0; k < count; ++k)
     {
       const vtkIdType* pts = this->Polys.Points(faces[k]);
-      if (faces[k] != face &&
-        std::find(pts, pts + this->Polys.Size(faces[k]), neighbour) !=
-          pts + this->Polys.Size(faces[k]))
+      const vtkIdType size = this->Polys.Size(faces[k]);
+      bool has = false;
+      for (vtkIdType c = 0; c < size; ++c)
+      {
+        has = has || pts[c] == neighbour;
+      }
+      if (has && faces[k] != face)
       {
         found = shared++ == 0 ? faces[k] : found;
       }
