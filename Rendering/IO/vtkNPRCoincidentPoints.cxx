@@ -136,9 +136,10 @@ enum CellKind
   Strips
 };
 
-// The cells kept of one kind and the input cell each came from.
+// The cells kept of one kind and the input cell each came from (kept only for cell data).
 struct KeptCells
 {
+  bool KeepSources = true;
   vtkNPRIdBuffer Offsets;
   vtkNPRIdBuffer Connectivity;
   std::vector<vtkIdType> Sources;
@@ -150,14 +151,18 @@ struct KeptCells
   {
     this->Offsets.Reserve(cells);
     this->Connectivity.Reserve(ids);
-    this->Sources.reserve(this->Sources.size() + static_cast<size_t>(cells));
+    this->Sources.reserve(
+      this->KeepSources ? this->Sources.size() + static_cast<size_t>(cells) : 0);
   }
 
   void Add(const vtkIdType* ids, size_t size, vtkIdType source)
   {
     this->Connectivity.Append(ids, static_cast<vtkIdType>(size));
     this->Offsets.Append(this->Connectivity.Size());
-    this->Sources.push_back(source);
+    if (this->KeepSources)
+    {
+      this->Sources.push_back(source);
+    }
   }
 
   vtkSmartPointer<vtkCellArray> Build()
@@ -252,6 +257,10 @@ void WriteCells(vtkPolyData* input, std::array<KeptCells, 4>& kept, vtkPolyData*
   output->SetLines(kept[Lines].Build());
   output->SetPolys(kept[Polys].Build());
   output->SetStrips(kept[Strips].Build());
+  if (input->GetCellData()->GetNumberOfArrays() == 0)
+  {
+    return;
+  }
   std::vector<vtkIdType> sources;
   for (const KeptCells& cells : kept)
   {
@@ -273,6 +282,10 @@ std::string vtkNPRCoincidentPoints::Merge(vtkPolyData* input, vtkPolyData* outpu
   }
   Renumbering numbers(FindRepresentatives(input->GetPoints()));
   std::array<KeptCells, 4> kept;
+  for (KeptCells& cells : kept)
+  {
+    cells.KeepSources = input->GetCellData()->GetNumberOfArrays() > 0;
+  }
   vtkIdType cellId = 0;
   const std::pair<vtkCellArray*, CellKind> kinds[] = { { input->GetVerts(), Verts },
     { input->GetLines(), Lines }, { input->GetPolys(), Polys }, { input->GetStrips(), Strips } };

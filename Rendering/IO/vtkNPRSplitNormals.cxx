@@ -19,6 +19,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace
@@ -28,7 +30,7 @@ struct Polygons
 {
   vtkIdType Count = 0;
   const vtkIdType* Offsets = nullptr;
-  const vtkIdType* Connectivity = nullptr;
+  vtkIdType* Connectivity = nullptr;
   vtkSmartPointer<vtkCellArray> Storage; // a 64-bit copy when the input's is 32-bit
 
   explicit Polygons(vtkCellArray* polys)
@@ -45,7 +47,7 @@ struct Polygons
     this->Offsets =
       reinterpret_cast<const vtkIdType*>(this->Storage->GetOffsetsArray64()->GetPointer(0));
     this->Connectivity =
-      reinterpret_cast<const vtkIdType*>(this->Storage->GetConnectivityArray64()->GetPointer(0));
+      reinterpret_cast<vtkIdType*>(this->Storage->GetConnectivityArray64()->GetPointer(0));
   }
 
   vtkIdType Size(vtkIdType face) const { return this->Offsets[face + 1] - this->Offsets[face]; }
@@ -53,11 +55,15 @@ struct Polygons
   vtkIdType Corners() const { return this->Offsets[this->Count]; }
 };
 
+// Face numbers in the links: 32 bits, half the memory (meshes of 2^31 faces or more are left to
+// vtkPolyDataNormals).
+using FaceId = int32_t;
+
 // The faces around each point in increasing order, once per corner, as vtkCellLinks lists them.
 struct PointFaces
 {
   std::vector<vtkIdType> Offsets;
-  std::vector<vtkIdType> Faces;
+  std::vector<FaceId> Faces;
 
   PointFaces(const Polygons& polygons, vtkIdType pointCount)
     : Offsets(static_cast<size_t>(pointCount) + 1, 0)
@@ -76,7 +82,8 @@ struct PointFaces
     {
       for (vtkIdType k = 0; k < polygons.Size(face); ++k)
       {
-        this->Faces[static_cast<size_t>(next[polygons.Points(face)[k]]++)] = face;
+        this->Faces[static_cast<size_t>(next[polygons.Points(face)[k]]++)] =
+          static_cast<FaceId>(face);
       }
     }
   }
@@ -123,7 +130,7 @@ public:
   // Writes the region of each of the point's link entries; returns the number of regions.
   int Split(vtkIdType point, int* regions) const
   {
-    const vtkIdType* faces = this->Links.Faces.data() + this->Links.Offsets[point];
+    const FaceId* faces = this->Links.Faces.data() + this->Links.Offsets[point];
     const vtkIdType count = this->Links.Offsets[point + 1] - this->Links.Offsets[point];
     std::fill(regions, regions + count, -1);
     int regionCount = 0;
@@ -152,7 +159,7 @@ public:
 
 private:
   // The first entry of face in the point's sorted list.
-  static vtkIdType Slot(const vtkIdType* faces, vtkIdType count, vtkIdType face)
+  static vtkIdType Slot(const FaceId* faces, vtkIdType count, vtkIdType face)
   {
     return std::lower_bound(faces, faces + count, face) - faces;
   }
@@ -181,7 +188,7 @@ private:
 
   // The faces other than face that share the edge (point, neighbour), counted once per entry of
   // the point's list (as vtkPolyData::GetCellEdgeNeighbors counts them); the first in found.
-  vtkIdType EdgeNeighbours(const vtkIdType* faces, vtkIdType count, vtkIdType face,
+  vtkIdType EdgeNeighbours(const FaceId* faces, vtkIdType count, vtkIdType face,
     vtkIdType neighbour, vtkIdType& found) const
   {
     vtkIdType shared = 0;
@@ -210,7 +217,7 @@ private:
     return vtkMath::Dot(x, y);
   }
 
-  void Walk(vtkIdType point, const vtkIdType* faces, vtkIdType count, vtkIdType face,
+  void Walk(vtkIdType point, const FaceId* faces, vtkIdType count, vtkIdType face,
     vtkIdType neighbour, int region, int* regions) const
   {
     while (face >= 0)
@@ -277,36 +284,26 @@ vtkIdType SplitPoint(const Split& split, vtkIdType point, int region)
   return region <= 0 ? point : split.FirstAdded[static_cast<size_t>(point)] + region - 1;
 }
 
-// The polygons with each point replaced by its region's copy.
-vtkSmartPointer<vtkCellArray> SplitPolygons(
-  const Polygons& polygons, const PointFaces& links, const Split& split, vtkIdType pointCount)
+// The polygons with each point replaced by its region's copy, rewritten in place face by face
+// (each face by one thread), so that the output shares the merged mesh's storage.
+void SplitPolygons(Polygons& polygons, const PointFaces& links, const Split& split)
 {
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfValues(polygons.Count + 1);
-  std::copy(polygons.Offsets, polygons.Offsets + polygons.Count + 1, offsets->GetPointer(0));
-  connectivity->SetNumberOfValues(polygons.Corners());
-  vtkIdType* corners = connectivity->GetPointer(0);
-  std::copy(polygons.Connectivity, polygons.Connectivity + polygons.Corners(), corners);
-  vtkSMPTools::For(0, pointCount,
+  vtkSMPTools::For(0, polygons.Count,
     [&](vtkIdType begin, vtkIdType end)
     {
-      for (vtkIdType p = begin; p < end; ++p)
+      for (vtkIdType face = begin; face < end; ++face)
       {
-        for (vtkIdType k = links.Offsets[p]; k < links.Offsets[p + 1]; ++k)
+        for (vtkIdType c = polygons.Offsets[face]; c < polygons.Offsets[face + 1]; ++c)
         {
-          const int region = split.Regions[static_cast<size_t>(k)];
-          const vtkIdType face = links.Faces[static_cast<size_t>(k)];
-          for (vtkIdType c = polygons.Offsets[face]; region > 0 && c < polygons.Offsets[face + 1];
-               ++c)
-          {
-            corners[c] = polygons.Connectivity[c] == p ? SplitPoint(split, p, region) : corners[c];
-          }
+          const vtkIdType p = polygons.Connectivity[c];
+          const FaceId* first = links.Faces.data() + links.Offsets[p];
+          const FaceId* entry = std::lower_bound(
+            first, links.Faces.data() + links.Offsets[p + 1], static_cast<FaceId>(face));
+          const int region = split.Regions[static_cast<size_t>(entry - links.Faces.data())];
+          polygons.Connectivity[c] = SplitPoint(split, p, region);
         }
       }
     });
-  auto cells = vtkSmartPointer<vtkCellArray>::New();
-  cells->SetData(offsets, connectivity);
-  return cells;
 }
 
 // Each output point's normal: the sum of its faces' normals in face order, as float, normalised.
@@ -353,49 +350,49 @@ vtkSmartPointer<vtkFloatArray> PointNormals(const PointFaces& links, const Split
 // point data.
 void WritePoints(vtkPolyData* input, const Split& split, vtkPolyData* output)
 {
-  vtkNew<vtkIdList> sources, targets;
-  sources->SetNumberOfIds(split.OutputPoints);
-  targets->SetNumberOfIds(split.OutputPoints);
-  for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
+  const vtkIdType count = input->GetNumberOfPoints();
+  vtkNew<vtkIdList> copiedFrom, copies; // the added points only: no list of every point
+  for (vtkIdType p = 0; p < count; ++p)
   {
-    sources->SetId(p, p);
     for (int r = 1; r < split.RegionCounts[static_cast<size_t>(p)]; ++r)
     {
-      sources->SetId(SplitPoint(split, p, r), p);
+      copiedFrom->InsertNextId(p);
+      copies->InsertNextId(SplitPoint(split, p, r));
     }
-  }
-  for (vtkIdType i = 0; i < split.OutputPoints; ++i)
-  {
-    targets->SetId(i, i);
   }
   vtkNew<vtkPoints> points;
   points->SetDataType(input->GetPoints()->GetDataType());
   points->SetNumberOfPoints(split.OutputPoints);
-  input->GetPoints()->GetData()->GetTuples(sources, points->GetData());
+  points->GetData()->InsertTuples(0, count, 0, input->GetPoints()->GetData());
+  points->GetData()->InsertTuples(copies, copiedFrom, input->GetPoints()->GetData());
   output->SetPoints(points);
   vtkPointData* pointData = output->GetPointData();
   pointData->CopyNormalsOff();
   pointData->CopyAllocate(input->GetPointData(), split.OutputPoints);
-  pointData->CopyData(input->GetPointData(), sources, targets);
+  pointData->CopyData(input->GetPointData(), 0, count, 0);
+  pointData->CopyData(input->GetPointData(), copiedFrom, copies);
 }
 }
 
 bool vtkNPRSplitNormals::Compute(vtkPolyData* input, double featureAngle, vtkPolyData* output)
 {
   if (input->GetNumberOfStrips() > 0 || input->GetNumberOfPolys() == 0 ||
-    input->GetNumberOfPoints() == 0)
+    input->GetNumberOfPoints() == 0 ||
+    input->GetNumberOfPolys() >= std::numeric_limits<FaceId>::max())
   {
     return false;
   }
   const vtkIdType pointCount = input->GetNumberOfPoints();
-  const Polygons polygons(input->GetPolys());
+  Polygons polygons(input->GetPolys());
   const PointFaces links(polygons, pointCount);
   const std::vector<float> faceNormals = FaceNormals(input->GetPoints(), polygons);
   const Split split = SplitFans(polygons, links, faceNormals, featureAngle, pointCount);
   output->Initialize();
   WritePoints(input, split, output);
   output->GetPointData()->SetNormals(PointNormals(links, split, faceNormals, pointCount));
-  output->SetPolys(SplitPolygons(polygons, links, split, pointCount));
+  SplitPolygons(polygons, links, split);
+  output->SetPolys(polygons.Storage);
+  input->SetPolys(vtkNew<vtkCellArray>()); // its polygons are the output's now
   output->SetVerts(input->GetVerts());
   output->SetLines(input->GetLines());
   output->GetCellData()->PassData(input->GetCellData());

@@ -22,7 +22,9 @@ class vtkPolyData;
 namespace vtkNPRSplitNormals
 {
 // Writes input with split point normals into output, or returns false (nothing written) for a
-// mesh it does not handle: one with triangle strips, which vtkPolyDataNormals should take.
+// mesh it does not handle: one with triangle strips, which vtkPolyDataNormals should take. The
+// output takes over the input's polygons, rewritten in place (the input is left without them):
+// at 13M triangles a copy would be 400 MB more at the peak.
 bool Compute(vtkPolyData* input, double featureAngle, vtkPolyData* output);
 }
 
