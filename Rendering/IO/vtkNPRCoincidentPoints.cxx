@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -236,18 +237,34 @@ vtkSmartPointer<vtkIdList> Sequence(size_t count)
   return list;
 }
 
-// The merged points: coordinates and point data of each one's first use.
-void WritePoints(vtkPolyData* input, const Renumbering& numbers, vtkPolyData* output)
+// The merged points: coordinates and point data of each one's first use. The coordinates are
+// gathered on every core; id lists (a copy of firstUse and a sequence, 128 MB at 16M triangles)
+// are made only for point data, which a scan's file seldom has.
+void WritePoints(vtkPolyData* input, const std::vector<vtkIdType>& firstUse, vtkPolyData* output)
 {
+  const vtkIdType count = static_cast<vtkIdType>(firstUse.size());
+  vtkDataArray* from = input->GetPoints()->GetData();
   vtkNew<vtkPoints> points;
   points->SetDataType(input->GetPoints()->GetDataType());
-  points->SetNumberOfPoints(static_cast<vtkIdType>(numbers.FirstUse.size()));
-  input->GetPoints()->GetData()->GetTuples(ToIdList(numbers.FirstUse), points->GetData());
+  points->SetNumberOfPoints(count);
+  vtkDataArray* to = points->GetData();
+  vtkSMPTools::For(0, count,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double p[3];
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        from->GetTuple(firstUse[static_cast<size_t>(i)], p);
+        to->SetTuple(i, p);
+      }
+    });
   output->SetPoints(points);
-  vtkPointData* pointData = output->GetPointData();
-  pointData->CopyAllocate(input->GetPointData(), points->GetNumberOfPoints());
-  pointData->CopyData(
-    input->GetPointData(), ToIdList(numbers.FirstUse), Sequence(numbers.FirstUse.size()));
+  if (input->GetPointData()->GetNumberOfArrays() > 0)
+  {
+    vtkPointData* pointData = output->GetPointData();
+    pointData->CopyAllocate(input->GetPointData(), count);
+    pointData->CopyData(input->GetPointData(), ToIdList(firstUse), Sequence(firstUse.size()));
+  }
 }
 
 // The kept cells, and their cell data in vtkPolyData's order: vertices, lines, polygons, strips.
@@ -280,7 +297,7 @@ std::string vtkNPRCoincidentPoints::Merge(vtkPolyData* input, vtkPolyData* outpu
   {
     return "";
   }
-  Renumbering numbers(FindRepresentatives(input->GetPoints()));
+  auto numbers = std::make_unique<Renumbering>(FindRepresentatives(input->GetPoints()));
   std::array<KeptCells, 4> kept;
   for (KeptCells& cells : kept)
   {
@@ -291,13 +308,15 @@ std::string vtkNPRCoincidentPoints::Merge(vtkPolyData* input, vtkPolyData* outpu
     { input->GetLines(), Lines }, { input->GetPolys(), Polys }, { input->GetStrips(), Strips } };
   for (const auto& cells : kinds)
   {
-    if (cells.first && !MergeCells(cells.first, cells.second, numbers, cellId, kept))
+    if (cells.first && !MergeCells(cells.first, cells.second, *numbers, cellId, kept))
     {
       return "cell " + std::to_string(cellId) + " names a point past the " +
         std::to_string(input->GetNumberOfPoints()) + " points";
     }
   }
-  WritePoints(input, numbers, output);
+  const std::vector<vtkIdType> firstUse = std::move(numbers->FirstUse);
+  numbers.reset(); // its maps, 128 MB at 16M triangles, go before the points are written
+  WritePoints(input, firstUse, output);
   WriteCells(input, kept, output);
   return "";
 }

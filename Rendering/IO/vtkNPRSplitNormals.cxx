@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -243,7 +244,8 @@ private:
 // The regions of every point's link entries, and each point's number of regions.
 struct Split
 {
-  std::vector<int> Regions;
+  std::vector<uint8_t> Regions; // a point of more regions is left to vtkPolyDataNormals
+  bool TooManyRegions = false;
   std::vector<int> RegionCounts;
   std::vector<vtkIdType> FirstAdded; // the output number of each point's region 1
   vtkIdType OutputPoints = 0;
@@ -257,15 +259,26 @@ Split SplitFans(const Polygons& polygons, const PointFaces& links,
   split.RegionCounts.resize(static_cast<size_t>(pointCount));
   const FanSplitter splitter(
     polygons, links, normals, std::cos(vtkMath::RadiansFromDegrees(featureAngle)));
+  vtkSMPThreadLocal<std::vector<int>> scratch;
+  std::atomic<bool> tooMany(false);
   vtkSMPTools::For(0, pointCount,
     [&](vtkIdType begin, vtkIdType end)
     {
+      std::vector<int>& regions = scratch.Local();
       for (vtkIdType p = begin; p < end; ++p)
       {
-        split.RegionCounts[static_cast<size_t>(p)] =
-          splitter.Split(p, split.Regions.data() + links.Offsets[static_cast<size_t>(p)]);
+        const vtkIdType first = links.Offsets[static_cast<size_t>(p)];
+        regions.resize(static_cast<size_t>(links.Offsets[static_cast<size_t>(p) + 1] - first));
+        const int count = splitter.Split(p, regions.data());
+        split.RegionCounts[static_cast<size_t>(p)] = count;
+        if (count > std::numeric_limits<uint8_t>::max())
+        {
+          tooMany = true; // written only then: no shared cache line per point
+        }
+        std::copy(regions.begin(), regions.end(), split.Regions.begin() + first);
       }
     });
+  split.TooManyRegions = tooMany;
   // Points added in point order, and region order within a point, as vtkPolyDataNormals adds
   // them.
   split.FirstAdded.resize(static_cast<size_t>(pointCount));
@@ -360,17 +373,18 @@ void WritePoints(vtkPolyData* input, const Split& split, vtkPolyData* output)
       copies->InsertNextId(SplitPoint(split, p, r));
     }
   }
-  vtkNew<vtkPoints> points;
-  points->SetDataType(input->GetPoints()->GetDataType());
+  // The input's points, grown in place (realloc: no second copy of them at the peak).
+  vtkSmartPointer<vtkPoints> points = input->GetPoints();
+  points->Resize(split.OutputPoints);
   points->SetNumberOfPoints(split.OutputPoints);
-  points->GetData()->InsertTuples(0, count, 0, input->GetPoints()->GetData());
-  points->GetData()->InsertTuples(copies, copiedFrom, input->GetPoints()->GetData());
+  points->GetData()->InsertTuples(copies, copiedFrom, points->GetData());
   output->SetPoints(points);
   vtkPointData* pointData = output->GetPointData();
   pointData->CopyNormalsOff();
   pointData->CopyAllocate(input->GetPointData(), split.OutputPoints);
   pointData->CopyData(input->GetPointData(), 0, count, 0);
   pointData->CopyData(input->GetPointData(), copiedFrom, copies);
+  input->SetPoints(nullptr);
 }
 }
 
@@ -387,6 +401,10 @@ bool vtkNPRSplitNormals::Compute(vtkPolyData* input, double featureAngle, vtkPol
   const PointFaces links(polygons, pointCount);
   const std::vector<float> faceNormals = FaceNormals(input->GetPoints(), polygons);
   const Split split = SplitFans(polygons, links, faceNormals, featureAngle, pointCount);
+  if (split.TooManyRegions)
+  {
+    return false;
+  }
   output->Initialize();
   WritePoints(input, split, output);
   output->GetPointData()->SetNormals(PointNormals(links, split, faceNormals, pointCount));

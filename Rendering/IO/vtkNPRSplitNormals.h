@@ -21,10 +21,11 @@ class vtkPolyData;
 
 namespace vtkNPRSplitNormals
 {
-// Writes input with split point normals into output, or returns false (nothing written) for a
-// mesh it does not handle: one with triangle strips, which vtkPolyDataNormals should take. The
-// output takes over the input's polygons, rewritten in place (the input is left without them):
-// at 13M triangles a copy would be 400 MB more at the peak.
+// Writes input with split point normals into output, or returns false (nothing written, the
+// input untouched) for a mesh it does not handle, which vtkPolyDataNormals should take: one with
+// triangle strips, or a point whose faces fall into more than 255 regions. The output takes over
+// the input's points (grown in place) and polygons (rewritten in place), and the input is left
+// without them: at 16M triangles copies would be 600 MB more at the peak.
 bool Compute(vtkPolyData* input, double featureAngle, vtkPolyData* output);
 }
 

@@ -339,8 +339,34 @@ void CheckFirstUseData(vtkPolyData* mesh)
   NPR_CHECK(wrong == 0, wrong << " merged points without their first use's point data");
 }
 
+// A fan of 600 triangles around one point, each creased against the next (rim points alternately
+// above and below): 600 regions at the apex, more than vtkNPRSplitNormals keeps, so
+// vtkPolyDataNormals computes them.
+vtkSmartPointer<vtkPolyData> CreasedFan()
+{
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  const int rim = 600;
+  for (int i = 0; i < rim; ++i)
+  {
+    const double angle = 2.0 * 3.14159265358979 * i / rim;
+    points->InsertNextPoint(std::cos(angle), std::sin(angle), i % 2 ? 0.5 : -0.5);
+  }
+  vtkNew<vtkCellArray> triangles;
+  for (vtkIdType i = 0; i < rim; ++i)
+  {
+    const vtkIdType ids[] = { 0, 1 + i, 1 + (i + 1) % rim };
+    triangles->InsertNextCell(3, ids);
+  }
+  auto fan = vtkSmartPointer<vtkPolyData>::New();
+  fan->SetPoints(points);
+  fan->SetPolys(triangles);
+  return fan;
+}
+
 int MatchesClean()
 {
+  CheckMatchesClean("a fan of 600 regions", CreasedFan());
   CheckMatchesClean("every merge rule", EveryMergeRule());
   CheckFirstUseData(EveryMergeRule());
   vtkNew<vtkStripper> strips; // strips: vtkPolyDataNormals' path
