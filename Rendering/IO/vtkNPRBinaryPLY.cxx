@@ -91,6 +91,21 @@ bool IsPlainFaceElement(const PLYElement& face)
     !face.Properties[0].Float;
 }
 
+// Whether the body can hold what the header counts (the vertex rows and one list count per
+// face), before anything is allocated for them: a mutated count must not ask for gigabytes.
+bool FitsTheFile(
+  std::istream& in, const std::vector<PLYElement>& elements, const VertexLayout& layout)
+{
+  const std::streampos body = in.tellg();
+  in.seekg(0, std::ios::end);
+  const long double left = static_cast<long double>(in.tellg() - body);
+  in.seekg(body);
+  const long double needed =
+    static_cast<long double>(elements[0].Count) * static_cast<long double>(layout.RowSize) +
+    static_cast<long double>(elements[1].Count) * elements[1].Properties[0].CountSize;
+  return body >= 0 && elements[0].Count >= 0 && elements[1].Count >= 0 && needed <= left;
+}
+
 float ReadCoordinate(const unsigned char* row, int offset, bool isDouble)
 {
   if (isDouble)
@@ -176,12 +191,18 @@ long long Integer(const unsigned char* bytes, int size, bool isSigned)
 
 // The faces into the cell array's storage; false for a count over 255 (vtkPLYReader wraps it) or
 // a file that ends early.
-bool ReadFaces(std::istream& in, long long count, const PLYProperty& list, vtkPolyData* output)
+bool ReadFaces(std::istream& in, long long count, const PLYProperty& list, long long vertexCount,
+  vtkPolyData* output)
 {
   vtkNPRIdBuffer offsets, connectivity;
   offsets.Reserve(count + 1);
   offsets.Append(0);
-  connectivity.Reserve(3 * count); // triangles, most often
+  // Room for triangles, the most common faces, but never more ids than the file has bytes for.
+  const std::streampos body = in.tellg();
+  in.seekg(0, std::ios::end);
+  const vtkIdType idsLeft = static_cast<vtkIdType>((in.tellg() - body) / list.Size);
+  in.seekg(body);
+  connectivity.Reserve(std::min<vtkIdType>(3 * count, idsLeft));
   vtkNPRChunkedInput input(in);
   vtkIdType corners[255];
   for (long long f = 0; f < count; ++f)
@@ -197,6 +218,10 @@ bool ReadFaces(std::istream& in, long long count, const PLYProperty& list, vtkPo
     for (long long k = 0; k < size; ++k)
     {
       corners[k] = static_cast<vtkIdType>(Integer(items + k * list.Size, list.Size, list.Signed));
+      if (corners[k] < 0 || corners[k] >= vertexCount)
+      {
+        return false; // CheckPLY names the face
+      }
     }
     connectivity.Append(corners, static_cast<vtkIdType>(size));
     offsets.Append(connectivity.Size());
@@ -217,13 +242,14 @@ bool vtkNPRBinaryPLY::Read(const std::string& fileName, vtkPolyData* output)
   if (!vtkNPRModelFormatChecks::ReadPLYHeader(in, format, elements).empty() ||
     format != "binary_little_endian" || elements.size() != 2 || elements[0].Name != "vertex" ||
     !MakeVertexLayout(elements[0], layout) || !IsPlainFaceElement(elements[1]) ||
-    elements[1].Properties[0].Size > 4 || elements[1].Properties[0].CountSize > 4)
+    elements[1].Properties[0].Size > 4 || elements[1].Properties[0].CountSize > 4 ||
+    !FitsTheFile(in, elements, layout))
   {
     return false;
   }
   vtkNew<vtkPolyData> read;
   if (!ReadVertices(in, elements[0].Count, layout, read) ||
-    !ReadFaces(in, elements[1].Count, elements[1].Properties[0], read))
+    !ReadFaces(in, elements[1].Count, elements[1].Properties[0], elements[0].Count, read))
   {
     return false;
   }

@@ -13,7 +13,9 @@
 //
 // Any other layout (big-endian or ASCII, texture coordinates, face colours or intensity, other
 // elements, a face of more than 255 vertices, which vtkPLYReader's count wraps) is left to
-// vtkPLYReader. The file must have passed vtkNPRModelFormatChecks::CheckPLY.
+// vtkPLYReader. It checks what vtkNPRModelFormatChecks::CheckPLY checks of such a file as it
+// reads (every value there, every face index naming a vertex), so a file it reads needs no check
+// before; one it refuses goes to CheckPLY, which says what is wrong.
 // Private to the module: vtkNPRModelReader's PLY path.
 #ifndef vtkNPRBinaryPLY_h
 #define vtkNPRBinaryPLY_h
@@ -25,7 +27,7 @@ class vtkPolyData;
 namespace vtkNPRBinaryPLY
 {
 // Reads fileName into output and returns true; false (output untouched) for a layout it leaves to
-// vtkPLYReader or a file that ends early.
+// vtkPLYReader, a file that ends early or a face index past the vertices.
 bool Read(const std::string& fileName, vtkPolyData* output);
 }
 

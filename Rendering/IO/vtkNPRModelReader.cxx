@@ -408,20 +408,10 @@ std::string CheckStructure(
 }
 
 // Runs VTK's reader and makes one polydata of what it read: composite (glTF) and
-// non-polygonal (legacy) data too. Returns why it failed, or "". A binary PLY file of the common
-// layout is read by vtkNPRBinaryPLY instead, into the same output, many times faster.
+// non-polygonal (legacy) data too. Returns why it failed, or "".
 std::string ReadSurface(vtkAlgorithm* reader, const std::string& name, const std::string& extension,
   vtkSmartPointer<vtkPolyData>& surface)
 {
-  if (extension == ".ply")
-  {
-    vtkNew<vtkPolyData> read;
-    if (vtkNPRBinaryPLY::Read(name, read))
-    {
-      surface = read;
-      return "";
-    }
-  }
   MessageCatcher messages(reader);
   reader->Update();
   vtkDataObject* data = reader->GetOutputDataObject(0);
@@ -584,6 +574,12 @@ bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
     return this->Fail(name + ": unknown model format '" + extension +
       "' (supported: " + GetSupportedExtensions() + ")");
   }
+  bool handled = false;
+  const bool read = extension == ".ply" && this->ReadBinaryPLY(name, output, handled);
+  if (handled)
+  {
+    return read;
+  }
   OBJVertices objVertices;
   vtkTimerLog::MarkStartEvent("vtkNPRModelReader: validate");
   error = CheckStructure(extension, name, objVertices);
@@ -607,6 +603,24 @@ bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
   if (!error.empty())
   {
     return this->Fail(error);
+  }
+  vtkTimerLog::MarkStartEvent("vtkNPRModelReader: check points");
+  const bool drawable = this->KeepDrawable(name, surface, output);
+  vtkTimerLog::MarkEndEvent("vtkNPRModelReader: check points");
+  return drawable;
+}
+
+bool vtkNPRModelReader::ReadBinaryPLY(const std::string& name, vtkPolyData* output, bool& handled)
+{
+  // The common binary layout, checked as it is read (so no separate check step); anything else,
+  // and a file it refuses, goes the checked way with vtkPLYReader (handled stays false).
+  vtkTimerLog::MarkStartEvent("vtkNPRModelReader: read");
+  vtkNew<vtkPolyData> surface;
+  handled = vtkNPRBinaryPLY::Read(name, surface) && CheckSurface(name, ".ply", surface).empty();
+  vtkTimerLog::MarkEndEvent("vtkNPRModelReader: read");
+  if (!handled)
+  {
+    return false;
   }
   vtkTimerLog::MarkStartEvent("vtkNPRModelReader: check points");
   const bool drawable = this->KeepDrawable(name, surface, output);

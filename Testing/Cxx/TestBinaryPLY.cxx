@@ -12,6 +12,7 @@
 #include "vtkNPRBinaryPLY.h"
 #include "vtkNPRModelReader.h"
 #include "vtkNew.h"
+#include "vtkOutputWindow.h"
 #include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -234,5 +235,20 @@ int main(int argc, char* argv[])
   NPR_CHECK(
     !vtkNPRBinaryPLY::Read(out + "truncated.ply", truncated) && truncated->GetNumberOfPoints() == 0,
     "a truncated file: refused, the output untouched");
+  // A count past what the file holds (a mutated header): refused before anything is allocated,
+  // and vtkNPRModelReader says the file is truncated.
+  std::ofstream(out + "huge_count.ply", std::ios::binary)
+    << "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\nproperty float x\n"
+       "property float y\nproperty float z\nelement face 1\nproperty list uchar int "
+       "vertex_indices\nend_header\n0123456789";
+  vtkNew<vtkPolyData> huge;
+  NPR_CHECK(!vtkNPRBinaryPLY::Read(out + "huge_count.ply", huge), "a count past the file: refused");
+  vtkNew<vtkNPRModelReader> reader;
+  reader->SetFileName((out + "huge_count.ply").c_str());
+  vtkNew<nprCountingOutputWindow> messages;
+  vtkOutputWindow::SetInstance(messages);
+  reader->Update();
+  NPR_CHECK(std::string(reader->GetErrorMessage()).find("truncated") != std::string::npos,
+    "the model reader's error: " << reader->GetErrorMessage());
   return nprTestResult();
 }
