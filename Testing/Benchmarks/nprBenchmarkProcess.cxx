@@ -2,24 +2,20 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nprBenchmarkProcess.h"
 
-#include "nprTiming.h"
-
 #include <cerrno>
-#include <chrono>
-#include <condition_variable>
+#include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
 #include <iostream>
-#include <mutex>
 #include <poll.h>
 #include <sstream>
 #include <stdexcept>
-#include <sys/resource.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
-#include <thread>
 #include <unistd.h>
 
 extern char** environ;
@@ -56,37 +52,6 @@ std::vector<char*> Pointers(const std::vector<std::string>& strings)
   return pointers;
 }
 
-// Waits for the child to exit without reaping it, so that a watchdog that fires meanwhile
-// cannot kill a reused pid; kills it when the deadline passes first.
-bool WaitOrKill(pid_t pid, double timeoutSeconds)
-{
-  std::mutex mutex;
-  std::condition_variable exited;
-  bool done = false, killed = false;
-  std::thread watchdog(
-    [&]()
-    {
-      std::unique_lock<std::mutex> lock(mutex);
-      if (!exited.wait_for(
-            lock, std::chrono::duration<double>(timeoutSeconds), [&]() { return done; }))
-      {
-        killed = true;
-        kill(pid, SIGKILL);
-      }
-    });
-  siginfo_t info;
-  while (waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOWAIT) < 0 && errno == EINTR)
-  {
-  }
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    done = true;
-  }
-  exited.notify_one();
-  watchdog.join();
-  return killed;
-}
-
 double StatusMB(const char* field)
 {
   std::ifstream status("/proc/self/status");
@@ -101,13 +66,13 @@ double StatusMB(const char* field)
   }
   return -1.0;
 }
-}
 
-nprChildResult nprRunChild(const std::vector<std::string>& argv, const std::string& log,
-  const std::string& display, double timeoutSeconds)
+// Starts argv with stdout and stderr appended to log and the environment given; the child dies
+// with this process.
+pid_t Start(const std::vector<std::string>& argv, const std::string& log,
+  const std::vector<std::string>& environment)
 {
   // Everything the child needs is made before fork: after it, only exec.
-  const std::vector<std::string> environment = ChildEnvironment(display);
   std::vector<char*> arguments = Pointers(argv), variables = Pointers(environment);
   const int output = open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (output < 0)
@@ -116,13 +81,13 @@ nprChildResult nprRunChild(const std::vector<std::string>& argv, const std::stri
   }
   std::cout.flush();
   std::cerr.flush();
-  const nprClock::time_point start = nprClock::now();
   const pid_t pid = fork();
   if (pid == 0)
   {
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
     dup2(output, 1);
     dup2(output, 2);
-    execvpe(arguments[0], arguments.data(), variables.data());
+    execve(arguments[0], arguments.data(), variables.data());
     _exit(127);
   }
   close(output);
@@ -130,29 +95,49 @@ nprChildResult nprRunChild(const std::vector<std::string>& argv, const std::stri
   {
     throw std::runtime_error("cannot start " + argv[0]);
   }
+  return pid;
+}
+
+// npr-measure's result: "STATUS SECONDS PEAK_KB".
+nprChildResult ReadMeasure(const std::string& path)
+{
+  std::ifstream file(path);
+  int code = 0;
+  double seconds = 0.0, peakKB = 0.0;
   nprChildResult result;
-  const bool killed = WaitOrKill(pid, timeoutSeconds);
-  result.Seconds = nprSecondsSince(start);
-  int status = 0;
-  struct rusage usage = {};
-  while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR)
+  if (!(file >> code >> seconds >> peakKB))
   {
+    result.Problem = "npr-measure failed";
+    return result;
   }
-  result.PeakMB = usage.ru_maxrss / 1024.0; // kB on Linux
-  if (WIFEXITED(status))
-  {
-    result.ExitCode = WEXITSTATUS(status);
-    if (result.ExitCode != 0)
-    {
-      result.Problem = result.ExitCode == 127 ? "could not start"
-                                              : "exit status " + std::to_string(result.ExitCode);
-    }
-  }
-  else
-  {
-    result.Problem = killed ? "timed out" : "signal " + std::to_string(WTERMSIG(status));
-  }
+  result.ExitCode = code;
+  result.Seconds = seconds;
+  result.PeakMB = peakKB / 1024.0;
+  result.Problem = code == 0 ? ""
+    : code == 127            ? "could not start"
+    : code == -1000          ? "timed out"
+    : code < 0               ? "signal " + std::to_string(-code)
+                             : "exit status " + std::to_string(code);
   return result;
+}
+}
+
+nprChildResult nprRunChild(const std::vector<std::string>& argv, const std::string& log,
+  const std::string& display, double timeoutSeconds)
+{
+  const std::string self = nprOwnExecutable();
+  const std::string result = log + ".measure";
+  std::vector<std::string> command = { self.substr(0, self.find_last_of('/') + 1) + "npr-measure",
+    result, std::to_string(static_cast<long>(std::ceil(timeoutSeconds))) };
+  command.insert(command.end(), argv.begin(), argv.end());
+  std::remove(result.c_str());
+  const pid_t pid = Start(command, log, ChildEnvironment(display));
+  while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR)
+  {
+  }
+  const nprChildResult measured = ReadMeasure(result);
+  std::remove(result.c_str());
+  return measured;
 }
 
 std::string nprFindProgram(const std::string& name)
@@ -216,6 +201,7 @@ nprPrivateXServer::nprPrivateXServer(const std::string& log)
   this->Pid = fork();
   if (this->Pid == 0)
   {
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
     close(ready[0]);
     if (output >= 0)
     {

@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Whole programs measured as child processes (wall time and peak resident memory, from wait4),
-// this process's own resident memory and its peak since a reset (/proc/self), and a private X
-// server for programs that need one (npr-benchmark --scale; Linux only).
+// Whole programs measured as child processes (wall time and peak resident memory, through
+// npr-measure), this process's own resident memory and its peak since a reset (/proc/self), and
+// a private X server for programs that need one (npr-benchmark --scale; Linux only).
 #ifndef nprBenchmarkProcess_h
 #define nprBenchmarkProcess_h
 
