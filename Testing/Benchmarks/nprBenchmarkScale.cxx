@@ -525,14 +525,15 @@ void WritePlots(
   }
 }
 
-// What is wrong with the figures: a program or step of ours that failed, a time that is not
-// positive.
+// What is wrong with the figures: a program or step of ours that failed (one not built, or a
+// timer-log event this build does not log, is only reported), a time that is not positive.
 std::string Problems(const std::vector<ScaleRow>& rows)
 {
   std::string problems;
   for (const ScaleRow& row : rows)
   {
-    const bool failed = row.Ours && !row.Status.empty() && row.Status != "n/a";
+    const bool failed =
+      row.Ours && !row.Status.empty() && row.Status != "n/a" && row.Status != "not built";
     const bool bad = row.Seconds >= 0.0 && !(std::isfinite(row.Seconds) && row.Seconds > 0.0);
     if (failed || bad)
     {
