@@ -286,7 +286,7 @@ def check_scale_row(row, triangles, part=False):
     else:
         check(number(row, "peak_mb") > 0.0, "peak memory: %s" % row)
         if row["kind"] == "step":
-            check(number(row, "added_mb") > -1.0, "added memory: %s" % row)
+            check(number(row, "added_mb") >= 0.0, "added memory: %s" % row)
     return seconds
 
 

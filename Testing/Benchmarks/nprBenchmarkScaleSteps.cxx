@@ -21,6 +21,7 @@
 #include "vtkPolyData.h"
 #include "vtkTimerLog.h"
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <functional>
@@ -78,7 +79,9 @@ public:
     double seconds = work();
     seconds = seconds < 0.0 ? nprSecondsSince(start) : seconds;
     const double peak = nprPeakResidentMB();
-    this->Rows.push_back({ name, seconds, reset ? peak : -1.0, reset ? peak - before : -1.0 });
+    // The memory may shrink between the reset and its reading: then the step added nothing.
+    const double added = std::max(0.0, peak - before);
+    this->Rows.push_back({ name, seconds, reset ? peak : -1.0, reset ? added : -1.0 });
     std::cerr << "npr-benchmark: " << name << ": " << nprFixed(1e3 * seconds, 1) << " ms, peak "
               << nprFixed(peak, 0) << " MB\n";
   }
