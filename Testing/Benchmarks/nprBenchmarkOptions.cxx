@@ -67,7 +67,8 @@ OUT/scale.csv, OUT/scale.md, OUT/scale_programs.png and OUT/scale_steps.png (def
                      -180 to 180 every DEG degrees (1 to 120) at each camera's elevation
                      (-15, 20, 35); --orbit 10 is 108 views
   --runs N           --speed: repeats of the whole measurement; the median of their medians
-                     is reported (default 3)
+                     is reported (default 3); --scale: runs of every size, each figure the
+                     median (default 1)
   --line-width PX    line width of every method (default 1.5)
   --quick            one small scene (cad), one camera, 320x240, 2 frames, every method
   --scale-sizes LIST --scale: of 62k, 250k, 1m, 4m, 16m (62,500 triangles times 1, 4, 16, 64,
@@ -103,7 +104,8 @@ std::vector<std::string> ParseScaleSizes(const std::string& text)
 }
 
 // --scale's defaults; its options refused without it.
-void ApplyScaleDefaults(nprBenchmarkOptions& options, bool sizesGiven, bool framesGiven)
+void ApplyScaleDefaults(
+  nprBenchmarkOptions& options, bool sizesGiven, bool framesGiven, bool runsGiven)
 {
   if (!options.Scale)
   {
@@ -138,6 +140,7 @@ void ApplyScaleDefaults(nprBenchmarkOptions& options, bool sizesGiven, bool fram
   {
     options.Frames = 3;
   }
+  options.Runs = runsGiven ? options.Runs : 1;
 }
 }
 
@@ -294,7 +297,7 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
   {
     options.DenseMesh = options.Data + "/bunny_1m.ply";
   }
-  ApplyScaleDefaults(options, sizesGiven, framesGiven);
+  ApplyScaleDefaults(options, sizesGiven, framesGiven, runsGiven);
   if (options.Speed)
   {
     if (!options.ScenesGiven)

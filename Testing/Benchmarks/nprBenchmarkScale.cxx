@@ -344,6 +344,56 @@ const ScaleRow* FindRow(const std::vector<ScaleRow>& rows, const std::string& ki
   return nullptr;
 }
 
+// Every program on one size, then its steps.
+std::vector<ScaleRow> MeasureSize(
+  const ScaleSize& size, const ScaleTools& tools, const nprBenchmarkOptions& options)
+{
+  std::vector<ScaleRow> rows;
+  const std::string stem = options.Out + "/images/" + size.Name + "_";
+  for (const ScaleProgram& program : ScalePrograms(tools, size.Mesh, stem, options.Sizes.front()))
+  {
+    const std::string log = LogName(program.Name.substr(0, program.Name.find(':')));
+    rows.push_back(
+      RunProgram(program, size, tools, options.Out + "/logs/" + size.Name + "_" + log + ".log"));
+  }
+  const std::vector<ScaleRow> steps =
+    RunSteps(size, tools, options, options.Out + "/logs/" + size.Name + "_steps.log");
+  rows.insert(rows.end(), steps.begin(), steps.end());
+  return rows;
+}
+
+// Per size, kind and name, the median of each figure over the runs; a failure in any run is
+// the row's (status, no figures).
+std::vector<ScaleRow> MedianRows(const std::vector<ScaleRow>& runs)
+{
+  std::vector<ScaleRow> rows;
+  for (const ScaleRow& first : runs)
+  {
+    if (FindRow(rows, first.Kind, first.Name, first.Size))
+    {
+      continue;
+    }
+    ScaleRow row = first;
+    std::vector<double> seconds, peaks, added;
+    for (const ScaleRow& run : runs)
+    {
+      if (run.Kind == row.Kind && run.Name == row.Name && run.Size == row.Size)
+      {
+        row.Status = row.Status.empty() ? run.Status : row.Status;
+        seconds.push_back(run.Seconds);
+        peaks.push_back(run.PeakMB);
+        added.push_back(run.AddedMB);
+      }
+    }
+    const bool measured = row.Status.empty();
+    row.Seconds = measured ? nprMedian(seconds) : -1.0;
+    row.PeakMB = measured && row.PeakMB >= 0.0 ? nprMedian(peaks) : -1.0;
+    row.AddedMB = measured && row.AddedMB >= 0.0 ? nprMedian(added) : -1.0;
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 // ns per triangle at the largest size over that at the smallest; < 0 when either is missing.
 double GrowthRatio(const std::vector<ScaleRow>& rows, const std::string& kind,
   const std::string& name, const std::vector<ScaleSize>& sizes)
@@ -473,6 +523,8 @@ void WriteMarkdown(const std::string& path, const std::vector<ScaleRow>& rows,
   // The load average says whether others shared the machine.
   md << " Whole run " << nprFixed(seconds / 60.0, 1) << " min; load average (1, 5, 15 min) "
      << loadAtStart << " at the start, " << LoadAverage() << " at the end.\n\n"
+     << "Every figure is the median of " << options.Runs << " run" << (options.Runs > 1 ? "s" : "")
+     << " (each run measures every size in turn).\n\n"
      << "Whole programs, each a child process: wall time from its start to its exit, and its "
         "peak resident memory (ru_maxrss from wait4). F3D draws on an X display (a private Xvfb "
         "when DISPLAY is not set).\n\n";
@@ -564,22 +616,19 @@ int nprRunBenchmarkScale(const nprBenchmarkOptions& options)
   const std::vector<ScaleSize> sizes = ScaleMeshes(options);
   std::unique_ptr<nprPrivateXServer> xserver;
   const ScaleTools tools = FindTools(options.Out, xserver);
-  std::vector<ScaleRow> rows;
-  for (const ScaleSize& size : sizes)
+  // Run by run, every size in turn: a burst of other work on a shared machine falls on all.
+  std::vector<ScaleRow> runs;
+  for (int run = 0; run < options.Runs; ++run)
   {
-    const std::string stem = options.Out + "/images/" + size.Name + "_";
-    for (const ScaleProgram& program : ScalePrograms(tools, size.Mesh, stem, options.Sizes.front()))
+    for (const ScaleSize& size : sizes)
     {
-      const std::string log = LogName(program.Name.substr(0, program.Name.find(':')));
-      rows.push_back(
-        RunProgram(program, size, tools, options.Out + "/logs/" + size.Name + "_" + log + ".log"));
-    }
-    for (const ScaleRow& row :
-      RunSteps(size, tools, options, options.Out + "/logs/" + size.Name + "_steps.log"))
-    {
-      rows.push_back(row);
+      std::cerr << "npr-benchmark: run " << run + 1 << " of " << options.Runs << ", " << size.Name
+                << "\n";
+      const std::vector<ScaleRow> measured = MeasureSize(size, tools, options);
+      runs.insert(runs.end(), measured.begin(), measured.end());
     }
   }
+  const std::vector<ScaleRow> rows = MedianRows(runs);
   xserver.reset();
 
   WriteCSV(options.Out + "/scale.csv", rows);
