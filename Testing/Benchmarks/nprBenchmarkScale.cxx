@@ -148,8 +148,8 @@ std::vector<ScaleSize> ScaleMeshes(const nprBenchmarkOptions& options)
     size.Triangles = PLYFaces(size.Mesh);
     if (size.Triangles <= 0)
     {
-      std::cerr << "npr-benchmark: making " << size.Mesh << " (" << size.Levels
-                << " Loop levels)\n";
+      std::cerr << "npr-benchmark: making " << size.Mesh << " (Loop subdivision, " << size.Levels
+                << (size.Levels == 1 ? " level)\n" : " levels)\n");
       const nprClock::time_point start = nprClock::now();
       MakeScaleMesh(options.Data + "/bunny.ply", size.Levels, size.Mesh);
       size.Triangles = PLYFaces(size.Mesh);
@@ -517,8 +517,8 @@ void WriteMarkdown(const std::string& path, const std::vector<ScaleRow>& rows,
      << "; the bunny decimated to 62,500 triangles and refined by Loop subdivision:";
   for (const ScaleSize& size : sizes)
   {
-    md << " " << size.Name << " = " << size.Triangles << " triangles (" << size.Levels << " levels)"
-       << (&size == &sizes.back() ? "." : ",");
+    md << " " << size.Name << " = " << size.Triangles << " triangles (" << size.Levels
+       << (size.Levels == 1 ? " level)" : " levels)") << (&size == &sizes.back() ? "." : ",");
   }
   // The load average says whether others shared the machine.
   md << " Whole run " << nprFixed(seconds / 60.0, 1) << " min; load average (1, 5, 15 min) "
