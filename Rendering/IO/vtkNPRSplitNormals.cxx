@@ -128,83 +128,86 @@ public:
   {
   }
 
-  // Writes the region of each of the point's link entries; returns the number of regions.
-  int Split(vtkIdType point, int* regions) const
+  // One point's fan, gathered once: each entry's face, its first entry, the point's two
+  // neighbours in it (as vtkPolyDataNormals picks them) and whether it is a triangle, so that the
+  // walks read a few cache lines instead of every face's points at each step.
+  struct Fan
   {
-    const FaceId* faces = this->Links.Faces.data() + this->Links.Offsets[point];
-    const vtkIdType count = this->Links.Offsets[point + 1] - this->Links.Offsets[point];
-    std::fill(regions, regions + count, -1);
+    const FaceId* Faces = nullptr;
+    vtkIdType Count = 0;
+    std::vector<vtkIdType> First;
+    std::vector<std::array<vtkIdType, 2>> Neighbours;
+    std::vector<char> Triangle;
+  };
+
+  // Writes the region of each of the point's link entries; returns the number of regions.
+  int Split(vtkIdType point, Fan& fan, int* regions) const
+  {
+    this->Gather(point, fan);
+    std::fill(regions, regions + fan.Count, -1);
     int regionCount = 0;
-    for (vtkIdType j = 0; j < count; ++j)
+    for (vtkIdType j = 0; j < fan.Count; ++j)
     {
-      const vtkIdType slot = Slot(faces, count, faces[j]);
-      if (regions[slot] >= 0)
+      if (regions[fan.First[j]] >= 0)
       {
         continue;
       }
-      regions[slot] = regionCount;
-      vtkIdType neighbours[2];
-      NeighbourPoints(faces[j], point, neighbours);
-      for (vtkIdType neighbour : neighbours)
+      regions[fan.First[j]] = regionCount;
+      for (vtkIdType neighbour : fan.Neighbours[j])
       {
-        this->Walk(point, faces, count, faces[j], neighbour, regionCount, regions);
+        this->Walk(fan, j, neighbour, regionCount, regions);
       }
       ++regionCount;
     }
-    for (vtkIdType j = 1; j < count; ++j) // a face listed twice: both entries in its region
+    for (vtkIdType j = 0; j < fan.Count; ++j) // a face listed twice: both entries in its region
     {
-      regions[j] = faces[j] == faces[j - 1] ? regions[j - 1] : regions[j];
+      regions[j] = regions[fan.First[j]];
     }
     return regionCount;
   }
 
 private:
-  // The first entry of face in the point's sorted list.
-  static vtkIdType Slot(const FaceId* faces, vtkIdType count, vtkIdType face)
+  void Gather(vtkIdType point, Fan& fan) const
   {
-    return std::lower_bound(faces, faces + count, face) - faces;
+    fan.Faces = this->Links.Faces.data() + this->Links.Offsets[point];
+    fan.Count = this->Links.Offsets[point + 1] - this->Links.Offsets[point];
+    fan.First.resize(static_cast<size_t>(fan.Count));
+    fan.Neighbours.resize(static_cast<size_t>(fan.Count));
+    fan.Triangle.resize(static_cast<size_t>(fan.Count));
+    for (vtkIdType j = 0; j < fan.Count; ++j)
+    {
+      fan.First[j] = j > 0 && fan.Faces[j] == fan.Faces[j - 1] ? fan.First[j - 1] : j;
+      const vtkIdType size = this->Polys.Size(fan.Faces[j]);
+      const vtkIdType* pts = this->Polys.Points(fan.Faces[j]);
+      const vtkIdType spot = std::find(pts, pts + size, point) - pts;
+      fan.Neighbours[j] = { spot == size - 1 ? pts[spot - 1] : pts[spot + 1],
+        spot == 0 ? pts[size - 1] : (spot == size - 1 ? pts[0] : pts[spot - 1]) };
+      fan.Triangle[j] = size == 3;
+    }
   }
 
-  // The point's two neighbours in the face, as vtkPolyDataNormals picks them.
-  void NeighbourPoints(vtkIdType face, vtkIdType point, vtkIdType neighbours[2]) const
+  // Whether entry k's face has the point neighbour (a triangle's: one of the two others).
+  bool Contains(const Fan& fan, vtkIdType k, vtkIdType neighbour) const
   {
-    const vtkIdType size = this->Polys.Size(face);
-    const vtkIdType* pts = this->Polys.Points(face);
-    const vtkIdType spot = std::find(pts, pts + size, point) - pts;
-    neighbours[0] = spot == size - 1 ? pts[spot - 1] : pts[spot + 1];
-    neighbours[1] = spot == 0 ? pts[size - 1] : (spot == size - 1 ? pts[0] : pts[spot - 1]);
+    if (fan.Triangle[k])
+    {
+      return fan.Neighbours[k][0] == neighbour || fan.Neighbours[k][1] == neighbour;
+    }
+    const vtkIdType* pts = this->Polys.Points(fan.Faces[k]);
+    const vtkIdType* end = pts + this->Polys.Size(fan.Faces[k]);
+    return std::find(pts, end, neighbour) != end;
   }
 
-  // The point's other neighbour in face: not the one the walk came from.
-  vtkIdType NextNeighbour(vtkIdType face, vtkIdType point, vtkIdType from) const
-  {
-    const vtkIdType size = this->Polys.Size(face);
-    const vtkIdType* pts = this->Polys.Points(face);
-    const vtkIdType spot = std::find(pts, pts + size, point) - pts;
-    const vtkIdType after = spot == size - 1 ? pts[spot - 1] : pts[spot + 1];
-    const vtkIdType before =
-      spot == 0 ? pts[size - 1] : (spot == size - 1 ? pts[0] : pts[spot - 1]);
-    return after != from ? after : before;
-  }
-
-  // The faces other than face that share the edge (point, neighbour), counted once per entry of
-  // the point's list (as vtkPolyData::GetCellEdgeNeighbors counts them); the first in found.
-  vtkIdType EdgeNeighbours(const FaceId* faces, vtkIdType count, vtkIdType face,
-    vtkIdType neighbour, vtkIdType& found) const
+  // The entries of faces other than entry j's that share the edge (point, neighbour), counted
+  // once per entry (as vtkPolyData::GetCellEdgeNeighbors counts them); the first in found.
+  vtkIdType EdgeNeighbours(const Fan& fan, vtkIdType j, vtkIdType neighbour, vtkIdType& found) const
   {
     vtkIdType shared = 0;
-    for (vtkIdType k = 0; k < count; ++k)
+    for (vtkIdType k = 0; k < fan.Count; ++k)
     {
-      const vtkIdType* pts = this->Polys.Points(faces[k]);
-      const vtkIdType size = this->Polys.Size(faces[k]);
-      bool has = false;
-      for (vtkIdType c = 0; c < size; ++c)
+      if (fan.Faces[k] != fan.Faces[j] && this->Contains(fan, k, neighbour))
       {
-        has = has || pts[c] == neighbour;
-      }
-      if (has && faces[k] != face)
-      {
-        found = shared++ == 0 ? faces[k] : found;
+        found = shared++ == 0 ? k : found;
       }
     }
     return shared;
@@ -214,24 +217,27 @@ private:
   {
     const float* na = this->Normals.data() + 3 * a;
     const float* nb = this->Normals.data() + 3 * b;
-    const double x[3] = { na[0], na[1], na[2] }, y[3] = { nb[0], nb[1], nb[2] };
+    const double x[3] = { na[0], na[1], na[2] };
+    const double y[3] = { nb[0], nb[1], nb[2] };
     return vtkMath::Dot(x, y);
   }
 
-  void Walk(vtkIdType point, const FaceId* faces, vtkIdType count, vtkIdType face,
-    vtkIdType neighbour, int region, int* regions) const
+  // From entry j across the edge to neighbour, on while exactly one face shares the edge, it is
+  // in no region yet and its normal is within the feature angle.
+  void Walk(const Fan& fan, vtkIdType j, vtkIdType neighbour, int region, int* regions) const
   {
-    while (face >= 0)
+    for (;;)
     {
       vtkIdType next = -1;
-      if (this->EdgeNeighbours(faces, count, face, neighbour, next) != 1 ||
-        regions[Slot(faces, count, next)] >= 0 || !(this->Dot(face, next) > this->CosAngle))
+      if (this->EdgeNeighbours(fan, j, neighbour, next) != 1 || regions[fan.First[next]] >= 0 ||
+        !(this->Dot(fan.Faces[j], fan.Faces[next]) > this->CosAngle))
       {
         return; // a boundary, a non-manifold edge, a region met, or a crease
       }
-      regions[Slot(faces, count, next)] = region;
-      neighbour = this->NextNeighbour(next, point, neighbour);
-      face = next;
+      regions[fan.First[next]] = region;
+      const std::array<vtkIdType, 2>& around = fan.Neighbours[next];
+      neighbour = around[0] != neighbour ? around[0] : around[1];
+      j = next;
     }
   }
 
@@ -260,16 +266,18 @@ Split SplitFans(const Polygons& polygons, const PointFaces& links,
   const FanSplitter splitter(
     polygons, links, normals, std::cos(vtkMath::RadiansFromDegrees(featureAngle)));
   vtkSMPThreadLocal<std::vector<int>> scratch;
+  vtkSMPThreadLocal<FanSplitter::Fan> fans;
   std::atomic<bool> tooMany(false);
   vtkSMPTools::For(0, pointCount,
     [&](vtkIdType begin, vtkIdType end)
     {
       std::vector<int>& regions = scratch.Local();
+      FanSplitter::Fan& fan = fans.Local();
       for (vtkIdType p = begin; p < end; ++p)
       {
         const vtkIdType first = links.Offsets[static_cast<size_t>(p)];
         regions.resize(static_cast<size_t>(links.Offsets[static_cast<size_t>(p) + 1] - first));
-        const int count = splitter.Split(p, regions.data());
+        const int count = splitter.Split(p, fan, regions.data());
         split.RegionCounts[static_cast<size_t>(p)] = count;
         if (count > std::numeric_limits<uint8_t>::max())
         {
