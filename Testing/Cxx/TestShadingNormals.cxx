@@ -123,6 +123,21 @@ int Soup()
   return nprTestResult();
 }
 
+// Runs vtkNPRShadingNormals on mesh with VTK's messages counted into messages, not printed.
+vtkSmartPointer<vtkNPRShadingNormals> UpdateCounting(
+  vtkPolyData* mesh, nprCountingOutputWindow* messages)
+{
+  vtkOutputWindow* previous = vtkOutputWindow::GetInstance();
+  previous->Register(nullptr);
+  vtkOutputWindow::SetInstance(messages);
+  auto filter = vtkSmartPointer<vtkNPRShadingNormals>::New();
+  filter->SetInputData(mesh);
+  filter->Update();
+  vtkOutputWindow::SetInstance(previous);
+  previous->UnRegister(nullptr);
+  return filter;
+}
+
 int Invalid()
 {
   vtkSmartPointer<vtkPolyData> sphere = Sphere();
@@ -133,14 +148,7 @@ int Invalid()
   const double nan = std::numeric_limits<double>::quiet_NaN();
   normals->SetTuple3(7, nan, 0.0, 1.0);
   vtkNew<nprCountingOutputWindow> messages;
-  vtkOutputWindow* previous = vtkOutputWindow::GetInstance();
-  previous->Register(nullptr);
-  vtkOutputWindow::SetInstance(messages);
-  vtkNew<vtkNPRShadingNormals> filter;
-  filter->SetInputData(broken);
-  filter->Update();
-  vtkOutputWindow::SetInstance(previous);
-  previous->UnRegister(nullptr);
+  vtkSmartPointer<vtkNPRShadingNormals> filter = UpdateCounting(broken, messages);
   NPR_CHECK(messages->Warnings == 1 && messages->Errors == 0,
     messages->Warnings << " warnings, " << messages->Errors << " errors");
   NPR_CHECK(filter->GetComputedNormals() && filter->GetNumberOfInvalidNormals() == 2,
@@ -396,14 +404,7 @@ int PointPastTheEnd()
   const vtkIdType ids[] = { 0, 1, mesh->GetNumberOfPoints() + 5 };
   mesh->GetPolys()->InsertNextCell(3, ids);
   vtkNew<nprCountingOutputWindow> messages;
-  vtkOutputWindow* previous = vtkOutputWindow::GetInstance();
-  previous->Register(nullptr);
-  vtkOutputWindow::SetInstance(messages);
-  vtkNew<vtkNPRShadingNormals> filter;
-  filter->SetInputData(mesh);
-  filter->Update();
-  vtkOutputWindow::SetInstance(previous);
-  previous->UnRegister(nullptr);
+  vtkSmartPointer<vtkNPRShadingNormals> filter = UpdateCounting(mesh, messages);
   NPR_CHECK(messages->Errors >= 1, messages->Errors << " errors");
   NPR_CHECK(filter->GetOutput()->GetNumberOfCells() == 0, "no output");
   return nprTestResult();
