@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkNPRSplitNormals.h"
 
+#include "vtkAOSDataArrayTemplate.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkFloatArray.h"
@@ -32,24 +33,38 @@ struct Polygons
   vtkIdType Count = 0;
   const vtkIdType* Offsets = nullptr;
   vtkIdType* Connectivity = nullptr;
-  vtkSmartPointer<vtkCellArray> Storage; // a 64-bit copy when the input's is 32-bit
+  vtkSmartPointer<vtkCellArray> Storage; // the input's, or a copy of vtkIdType ids
 
   explicit Polygons(vtkCellArray* polys)
     : Storage(polys)
   {
-    if (!polys->IsStorage64Bit())
+    // Read in place where the storage holds vtkIdType ids (the merge's output); any other
+    // storage (32-bit ids, VTK 9.6's other layouts) is copied into that form first. The arrays
+    // are taken from the cell array itself, so writes go to what the output will hold.
+    if (!this->Take())
     {
+      vtkNew<vtkIdTypeArray> offsets, connectivity;
+      offsets->DeepCopy(polys->GetOffsetsArray());
+      connectivity->DeepCopy(polys->GetConnectivityArray());
       this->Storage = vtkSmartPointer<vtkCellArray>::New();
-      this->Storage->DeepCopy(polys);
-      this->Storage->ConvertTo64BitStorage();
+      this->Storage->SetData(offsets, connectivity);
+      this->Take();
     }
-    static_assert(sizeof(vtkIdType) == sizeof(vtkTypeInt64), "64-bit ids");
-    this->Count = this->Storage->GetNumberOfCells();
-    this->Offsets =
-      reinterpret_cast<const vtkIdType*>(this->Storage->GetOffsetsArray64()->GetPointer(0));
-    this->Connectivity =
-      reinterpret_cast<vtkIdType*>(this->Storage->GetConnectivityArray64()->GetPointer(0));
   }
+
+  // Whether the storage's arrays hold vtkIdType ids, read in place.
+  bool Take()
+  {
+    using IdArray = vtkAOSDataArrayTemplate<vtkIdType>;
+    IdArray* offsets = IdArray::FastDownCast(this->Storage->GetOffsetsArray());
+    IdArray* connectivity = IdArray::FastDownCast(this->Storage->GetConnectivityArray());
+    this->Count = offsets && connectivity ? this->Storage->GetNumberOfCells() : 0;
+    this->Offsets = offsets ? offsets->GetPointer(0) : nullptr;
+    this->Connectivity = connectivity ? connectivity->GetPointer(0) : nullptr;
+    return offsets && connectivity;
+  }
+
+  bool Valid() const { return this->Offsets && this->Connectivity; }
 
   vtkIdType Size(vtkIdType face) const { return this->Offsets[face + 1] - this->Offsets[face]; }
   const vtkIdType* Points(vtkIdType face) const { return this->Connectivity + this->Offsets[face]; }
@@ -406,6 +421,10 @@ bool vtkNPRSplitNormals::Compute(vtkPolyData* input, double featureAngle, vtkPol
   }
   const vtkIdType pointCount = input->GetNumberOfPoints();
   Polygons polygons(input->GetPolys());
+  if (!polygons.Valid())
+  {
+    return false;
+  }
   const PointFaces links(polygons, pointCount);
   const std::vector<float> faceNormals = FaceNormals(input->GetPoints(), polygons);
   const Split split = SplitFans(polygons, links, faceNormals, featureAngle, pointCount);
