@@ -91,19 +91,26 @@ bool IsPlainFaceElement(const PLYElement& face)
     !face.Properties[0].Float;
 }
 
+// The bytes from the stream's position to the end of the file (-1 when it cannot tell).
+std::streamoff BytesLeft(std::istream& in)
+{
+  const std::streampos here = in.tellg();
+  in.seekg(0, std::ios::end);
+  const std::streamoff left = here < 0 ? -1 : static_cast<std::streamoff>(in.tellg() - here);
+  in.seekg(here);
+  return left;
+}
+
 // Whether the body can hold what the header counts (the vertex rows and one list count per
 // face), before anything is allocated for them: a mutated count must not ask for gigabytes.
 bool FitsTheFile(
   std::istream& in, const std::vector<PLYElement>& elements, const VertexLayout& layout)
 {
-  const std::streampos body = in.tellg();
-  in.seekg(0, std::ios::end);
-  const long double left = static_cast<long double>(in.tellg() - body);
-  in.seekg(body);
+  const long double left = static_cast<long double>(BytesLeft(in));
   const long double needed =
     static_cast<long double>(elements[0].Count) * static_cast<long double>(layout.RowSize) +
     static_cast<long double>(elements[1].Count) * elements[1].Properties[0].CountSize;
-  return body >= 0 && elements[0].Count >= 0 && elements[1].Count >= 0 && needed <= left;
+  return left >= 0 && elements[0].Count >= 0 && elements[1].Count >= 0 && needed <= left;
 }
 
 float ReadCoordinate(const unsigned char* row, int offset, bool isDouble)
@@ -198,10 +205,7 @@ bool ReadFaces(std::istream& in, long long count, const PLYProperty& list, long 
   offsets.Reserve(count + 1);
   offsets.Append(0);
   // Room for triangles, the most common faces, but never more ids than the file has bytes for.
-  const std::streampos body = in.tellg();
-  in.seekg(0, std::ios::end);
-  const vtkIdType idsLeft = static_cast<vtkIdType>((in.tellg() - body) / list.Size);
-  in.seekg(body);
+  const vtkIdType idsLeft = static_cast<vtkIdType>(BytesLeft(in) / list.Size);
   connectivity.Reserve(std::min<vtkIdType>(3 * count, idsLeft));
   vtkNPRChunkedInput input(in);
   vtkIdType corners[255];

@@ -604,10 +604,7 @@ bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
   {
     return this->Fail(error);
   }
-  vtkTimerLog::MarkStartEvent("vtkNPRModelReader: check points");
-  const bool drawable = this->KeepDrawable(name, surface, output);
-  vtkTimerLog::MarkEndEvent("vtkNPRModelReader: check points");
-  return drawable;
+  return this->KeepDrawable(name, surface, output);
 }
 
 bool vtkNPRModelReader::ReadBinaryPLY(const std::string& name, vtkPolyData* output, bool& handled)
@@ -622,13 +619,19 @@ bool vtkNPRModelReader::ReadBinaryPLY(const std::string& name, vtkPolyData* outp
   {
     return false;
   }
+  return this->KeepDrawable(name, surface, output);
+}
+
+bool vtkNPRModelReader::KeepDrawable(
+  const std::string& name, vtkPolyData* surface, vtkPolyData* output)
+{
   vtkTimerLog::MarkStartEvent("vtkNPRModelReader: check points");
-  const bool drawable = this->KeepDrawable(name, surface, output);
+  const bool drawable = this->DropUndrawable(name, surface, output);
   vtkTimerLog::MarkEndEvent("vtkNPRModelReader: check points");
   return drawable;
 }
 
-bool vtkNPRModelReader::KeepDrawable(
+bool vtkNPRModelReader::DropUndrawable(
   const std::string& name, vtkPolyData* surface, vtkPolyData* output)
 {
   // Drop points with NaN or infinite coordinates, the cells that use them, and cells that name

@@ -93,6 +93,7 @@ private:
   bool Read(const std::string& fileName, vtkPolyData* output);
   bool ReadBinaryPLY(const std::string& fileName, vtkPolyData* output, bool& handled);
   bool KeepDrawable(const std::string& fileName, vtkPolyData* surface, vtkPolyData* output);
+  bool DropUndrawable(const std::string& fileName, vtkPolyData* surface, vtkPolyData* output);
   bool Fail(const std::string& message);
 };
 
