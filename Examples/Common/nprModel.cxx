@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nprModel.h"
 
+#include "nprTiming.h"
+
 #include "vtkActor.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -64,17 +66,34 @@ void nprApplyModelLook(vtkProperty* property, size_t index)
   property->SetSpecularPower(30.0);
 }
 
-long long nprAddModel(
-  vtkRenderer* renderer, const std::string& path, size_t index, const std::string& program)
+long long nprAddModel(vtkRenderer* renderer, const std::string& path, size_t index,
+  const std::string& program, nprProgress* progress)
 {
   std::string warning;
+  if (progress)
+  {
+    progress->Start();
+  }
   vtkSmartPointer<vtkPolyData> model = nprReadModel(path, &warning);
+  const long long triangles = nprCountTriangles(model);
+  if (progress)
+  {
+    progress->Done("read " + path + " (" + std::to_string(triangles) + " triangles)");
+  }
   if (!warning.empty())
   {
     std::cerr << program << ": warning: " << warning << "\n";
   }
+  if (progress)
+  {
+    progress->Start();
+  }
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(nprPrepareMesh(model));
+  if (progress)
+  {
+    progress->Done("normals of " + path);
+  }
   // Colours stored in the file (PLY, OFF, VTK) are shown as they are; other arrays are not.
   vtkDataArray* colors = model->GetPointData()->GetScalars() ? model->GetPointData()->GetScalars()
                                                              : model->GetCellData()->GetScalars();
@@ -86,5 +105,5 @@ long long nprAddModel(
   actor->SetMapper(mapper);
   nprApplyModelLook(actor->GetProperty(), index);
   renderer->AddActor(actor);
-  return nprCountTriangles(model);
+  return triangles;
 }

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <string>
 
+class nprProgress;
 class vtkPolyData;
 class vtkProperty;
 class vtkRenderer;
@@ -31,8 +32,9 @@ void nprApplyModelLook(vtkProperty* property, size_t index);
 
 // Reads the index-th model of a scene and adds it to renderer: the prepared mesh, in its file's
 // colours when it has them, else in nprApplyModelLook's. A reader warning is printed on stderr as
-// "PROGRAM: warning: ...". Returns the model's triangles.
-long long nprAddModel(
-  vtkRenderer* renderer, const std::string& path, size_t index, const std::string& program);
+// "PROGRAM: warning: ...". Returns the model's triangles. Reading and preparing are reported
+// to progress when given (and long).
+long long nprAddModel(vtkRenderer* renderer, const std::string& path, size_t index,
+  const std::string& program, nprProgress* progress = nullptr);
 
 #endif

@@ -36,9 +36,9 @@ void nprWritePNG(vtkImageData* image, const std::string& path)
   }
 }
 
-void nprWriteWindowPNG(vtkRenderWindow* window, const std::string& path, bool grey)
+void nprWriteWindowPNG(vtkRenderWindow* window, const std::string& path, bool grey, bool rerender)
 {
-  vtkSmartPointer<vtkImageData> image = nprReadWindowImage(window, true);
+  vtkSmartPointer<vtkImageData> image = nprReadWindowImage(window, rerender);
   if (grey)
   {
     vtkNew<vtkImageExtractComponents> first;

@@ -19,8 +19,11 @@ vtkSmartPointer<vtkImageData> nprReadWindowImage(vtkRenderWindow* window, bool r
 // Throws std::runtime_error "PATH: cannot write the PNG".
 void nprWritePNG(vtkImageData* image, const std::string& path);
 
-// Renders the window and writes it as a PNG: RGB, or (grey) its first channel as 8-bit grey.
-void nprWriteWindowPNG(vtkRenderWindow* window, const std::string& path, bool grey);
+// Writes the window as a PNG: RGB, or (grey) its first channel as 8-bit grey. It renders the
+// window first unless rerender is false, for a caller whose last render drew what it writes (on
+// a 5M-triangle model a render of VTK's own takes a second).
+void nprWriteWindowPNG(
+  vtkRenderWindow* window, const std::string& path, bool grey, bool rerender = true);
 
 // Whether -o PATH names a vector drawing: .svg, .pdf, .ps or .eps, any case
 // (vtkNPRDrawingExporter's formats).

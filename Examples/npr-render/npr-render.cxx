@@ -127,10 +127,11 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
     pass = nprMakePass(options.Pass);
     renderer->SetPass(pass);
   }
+  nprProgress progress("npr-render", options.Quiet);
   long long triangles = 0;
   for (size_t i = 0; i < options.Models.size(); ++i)
   {
-    triangles += nprAddModel(renderer, options.Models[i], i, "npr-render");
+    triangles += nprAddModel(renderer, options.Models[i], i, "npr-render", &progress);
   }
 
   int width = options.Width, height = options.Height;
@@ -168,7 +169,9 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
     camera->Zoom(options.Zoom);
     renderer->ResetCameraClippingRange();
   }
+  progress.Start();
   window->Render();
+  progress.Done("first frame (" + options.Pass.Style + ")");
 
   if (options.Orbit > 0)
   {
@@ -188,13 +191,19 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
   {
     TimeFrames(options, window, renderer, pass, triangles, width, height);
   }
+  progress.Start();
   if (!options.Output.empty() && nprIsDrawingFile(options.Output))
   {
     nprWriteDrawing(renderer, options.Output); // .svg, .pdf, .ps, .eps
   }
   else if (!options.Output.empty())
   {
-    nprWriteWindowPNG(window, options.Output, false);
+    // The first frame is what it writes, unless --frames drew others since.
+    nprWriteWindowPNG(window, options.Output, false, options.Frames > 0);
+  }
+  if (!options.Output.empty())
+  {
+    progress.Done("wrote " + options.Output);
   }
   if (!options.EdgeMask.empty() && options.Pass.Style == "inked")
   {

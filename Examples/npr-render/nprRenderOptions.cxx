@@ -45,6 +45,8 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
   --reference-mask FILE    also write the ground truth of --lines and --crease-angle:
                            the visible object-space lines, white on black, 8-bit grey
                            PNG of the render's size (any style)
+  --quiet                  no progress lines (otherwise each step that takes over a
+                           second, such as reading a large model, prints one on stderr)
   -h, --help               this text
   --version                the program and vtkNPR version
 
@@ -105,6 +107,10 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
     else if (arg == "--camera-out")
     {
       options.CameraOut = arguments.Value();
+    }
+    else if (arg == "--quiet")
+    {
+      options.Quiet = true;
     }
     else if (arg == "--frames")
     {

@@ -31,6 +31,7 @@ struct nprRenderOptions
   std::string EdgeMask;
   std::string ReferenceMask;
   std::vector<std::string> CompareStyles;
+  bool Quiet = false;   // --quiet: no progress lines
   nprPassSettings Pass; // --style and the flags of the styles
 };
 

@@ -4,6 +4,7 @@
 
 #include "vtkLZ4DataCompressor.h"
 #include "vtkLZMADataCompressor.h"
+#include "vtkNPRChunkedInput.h"
 #include "vtkSmartPointer.h"
 #include "vtkVersionMacros.h"
 #include "vtkZLibDataCompressor.h"
@@ -23,21 +24,8 @@
 
 namespace
 {
-struct PLYProperty
-{
-  std::string Name;
-  int Size = 0;      // bytes of the value, or of each list item
-  int CountSize = 0; // bytes of a list's count; 0 for a scalar property
-  bool Signed = false;
-  bool Float = false;
-};
-
-struct PLYElement
-{
-  std::string Name;
-  long long Count = 0;
-  std::vector<PLYProperty> Properties;
-};
+using PLYProperty = vtkNPRModelFormatChecks::PLYProperty;
+using PLYElement = vtkNPRModelFormatChecks::PLYElement;
 
 // Size in bytes of a PLY scalar type, 0 for an unknown type.
 int TypeSize(const std::string& type, bool& isSigned, bool& isFloat)
@@ -61,14 +49,9 @@ long long ToLongLong(double value, long long fallback)
                                                                    : fallback;
 }
 
-// Reads one binary value of the property's type as an integer.
-bool ReadInteger(std::istream& in, int size, bool isSigned, bool swap, long long& value)
+// One binary value of the given size as an integer.
+long long DecodeInteger(unsigned char* bytes, int size, bool isSigned, bool swap)
 {
-  unsigned char bytes[8];
-  if (!in.read(reinterpret_cast<char*>(bytes), size))
-  {
-    return false;
-  }
   if (swap)
   {
     for (int i = 0; i < size / 2; ++i)
@@ -82,7 +65,20 @@ bool ReadInteger(std::istream& in, int size, bool isSigned, bool swap, long long
   {
     raw |= ~uint64_t(0) << (8 * size);
   }
-  value = static_cast<long long>(raw);
+  return static_cast<long long>(raw);
+}
+
+// One binary integer from a chunked input; false when the input ends first.
+bool ReadInteger(vtkNPRChunkedInput& input, int size, bool isSigned, bool swap, long long& value)
+{
+  const unsigned char* bytes = input.Take(static_cast<size_t>(size));
+  if (!bytes)
+  {
+    return false;
+  }
+  unsigned char copy[8];
+  std::memcpy(copy, bytes, static_cast<size_t>(size));
+  value = DecodeInteger(copy, size, isSigned, swap);
   return true;
 }
 
@@ -93,18 +89,106 @@ bool IsIndexList(const PLYElement& element, const PLYProperty& property)
   return element.Name == "face" && property.CountSize &&
     (property.Name == "vertex_indices" || property.Name == "vertex_index");
 }
+// What a binary body that ends inside row i of a fixed-size element says, offset bytes into it.
+std::string TruncatedPLYRow(const PLYElement& element, uint64_t row, uint64_t offset)
+{
+  const PLYProperty* property = &element.Properties.front();
+  for (const PLYProperty& candidate : element.Properties)
+  {
+    property = &candidate;
+    if (offset < static_cast<uint64_t>(candidate.Size))
+    {
+      break;
+    }
+    offset -= static_cast<uint64_t>(candidate.Size);
+  }
+  return "truncated or malformed PLY file in " + element.Name + " " + std::to_string(row) +
+    " (property " + property->Name + ")";
 }
 
-std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
+// One property of row i in a binary body: its list count and items, or its value.
+std::string CheckPLYBinaryValue(vtkNPRChunkedInput& input, const PLYElement& element,
+  const PLYProperty& property, long long i, long long vertexCount, bool swap)
 {
-  std::ifstream in(fileName, std::ios::binary);
+  long long items = 1;
+  if (property.CountSize &&
+    (!ReadInteger(input, property.CountSize, false, swap, items) || items < 0))
+  {
+    return "truncated or malformed PLY file in " + element.Name + " " + std::to_string(i);
+  }
+  const bool indices = IsIndexList(element, property);
+  for (long long k = 0; k < items; ++k)
+  {
+    long long index = 0;
+    const bool ok = property.Float
+      ? input.Take(static_cast<size_t>(property.Size)) != nullptr
+      : ReadInteger(input, property.Size, property.Signed, swap, index);
+    if (!ok)
+    {
+      return "truncated or malformed PLY file in " + element.Name + " " + std::to_string(i) +
+        " (property " + property.Name + ")";
+    }
+    if (indices && (index < 0 || index >= vertexCount))
+    {
+      return "malformed PLY file: face " + std::to_string(i) + " uses vertex " +
+        std::to_string(index) + " of " + std::to_string(vertexCount);
+    }
+  }
+  return "";
+}
+
+// The binary body: every value there, every face index naming a vertex. An element of scalar
+// properties only is skipped whole; a list is read value by value.
+std::string CheckPLYBinaryBody(
+  std::istream& in, const std::vector<PLYElement>& elements, long long vertexCount, bool swap)
+{
+  vtkNPRChunkedInput input(in);
+  for (const PLYElement& element : elements)
+  {
+    uint64_t rowSize = 0;
+    bool fixed = true;
+    for (const PLYProperty& property : element.Properties)
+    {
+      rowSize += static_cast<uint64_t>(property.Size);
+      fixed = fixed && !property.CountSize;
+    }
+    if (fixed)
+    {
+      const uint64_t rows = static_cast<uint64_t>(std::max(element.Count, 0LL));
+      const uint64_t size = rowSize && rows > UINT64_MAX / rowSize ? UINT64_MAX : rowSize * rows;
+      const uint64_t skipped = input.Skip(size);
+      if (skipped < size)
+      {
+        return TruncatedPLYRow(element, skipped / rowSize, skipped % rowSize);
+      }
+      continue;
+    }
+    for (long long i = 0; i < element.Count; ++i)
+    {
+      for (const PLYProperty& property : element.Properties)
+      {
+        const std::string error =
+          CheckPLYBinaryValue(input, element, property, i, vertexCount, swap);
+        if (!error.empty())
+        {
+          return error;
+        }
+      }
+    }
+  }
+  return "";
+}
+
+}
+
+std::string vtkNPRModelFormatChecks::ReadPLYHeader(
+  std::istream& in, std::string& format, std::vector<PLYElement>& elements)
+{
   std::string line;
   if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0)
   {
     return "malformed PLY file: it does not start with 'ply'";
   }
-  std::string format;
-  std::vector<PLYElement> elements;
   bool ended = false;
   while (!ended && std::getline(in, line))
   {
@@ -176,6 +260,19 @@ std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
   {
     return "malformed PLY header: no end_header";
   }
+  return "";
+}
+
+std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  std::string format;
+  std::vector<PLYElement> elements;
+  const std::string headerError = ReadPLYHeader(in, format, elements);
+  if (!headerError.empty())
+  {
+    return headerError;
+  }
   // Without a vertex element of x, y and z, vtkPLYReader uses the file it has just closed.
   const auto vertex = std::find_if(elements.begin(), elements.end(),
     [](const PLYElement& element) { return element.Name == "vertex"; });
@@ -224,31 +321,31 @@ std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
   }
 
   // Walk the body: every value must be there, every face index must name a vertex.
+  if (!ascii)
+  {
+    return CheckPLYBinaryBody(in, elements, vertexCount, !little);
+  }
   for (const PLYElement& element : elements)
   {
     for (long long i = 0; i < element.Count; ++i)
     {
       std::istringstream row;
-      if (ascii)
+      std::string text;
+      do
       {
-        std::string text;
-        do
+        if (!std::getline(in, text))
         {
-          if (!std::getline(in, text))
-          {
-            return "truncated PLY file: " + element.Name + " " + std::to_string(i) + " of " +
-              std::to_string(element.Count) + " is missing";
-          }
-        } while (text.find_first_not_of(" \t\r") == std::string::npos);
-        row.str(text);
-      }
+          return "truncated PLY file: " + element.Name + " " + std::to_string(i) + " of " +
+            std::to_string(element.Count) + " is missing";
+        }
+      } while (text.find_first_not_of(" \t\r") == std::string::npos);
+      row.str(text);
       for (const PLYProperty& property : element.Properties)
       {
         long long items = 1;
         if (property.CountSize)
         {
-          const bool ok = ascii ? static_cast<bool>(row >> items)
-                                : ReadInteger(in, property.CountSize, false, !little, items);
+          const bool ok = static_cast<bool>(row >> items);
           if (!ok || items < 0)
           {
             return "truncated or malformed PLY file in " + element.Name + " " + std::to_string(i);
@@ -256,25 +353,12 @@ std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
         }
         for (long long k = 0; k < items; ++k)
         {
-          long long index = 0;
-          bool ok = true;
-          if (ascii)
-          {
-            std::string token; // strtod, unlike operator>>, reads "nan" and "inf"
-            char* end = nullptr;
-            ok = static_cast<bool>(row >> token);
-            const double value = ok ? std::strtod(token.c_str(), &end) : 0.0;
-            ok = ok && end != token.c_str() && *end == '\0';
-            index = ok ? ToLongLong(value, -1) : -1;
-          }
-          else if (property.Float)
-          {
-            ok = static_cast<bool>(in.ignore(property.Size)) && in.gcount() == property.Size;
-          }
-          else
-          {
-            ok = ReadInteger(in, property.Size, property.Signed, !little, index);
-          }
+          std::string token; // strtod, unlike operator>>, reads "nan" and "inf"
+          char* end = nullptr;
+          bool ok = static_cast<bool>(row >> token);
+          const double value = ok ? std::strtod(token.c_str(), &end) : 0.0;
+          ok = ok && end != token.c_str() && *end == '\0';
+          const long long index = ok ? ToLongLong(value, -1) : -1;
           if (!ok)
           {
             return "truncated or malformed PLY file in " + element.Name + " " + std::to_string(i) +
@@ -288,7 +372,7 @@ std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
         }
       }
       std::string extra;
-      if (ascii && row >> extra)
+      if (row >> extra)
       {
         return "malformed PLY file: " + element.Name + " " + std::to_string(i) +
           " has more values than its properties ('" + extra + "')";
@@ -296,11 +380,10 @@ std::string vtkNPRModelFormatChecks::CheckPLY(const std::string& fileName)
     }
   }
   std::string rest;
-  if (ascii && in >> rest)
+  if (in >> rest)
   {
     return "malformed PLY file: content after the last element ('" + rest.substr(0, 20) + "')";
   }
-  if (ascii)
   {
     // vtkPLYReader frees a line twice when the last one has no end of line.
     std::ifstream end(fileName, std::ios::binary | std::ios::ate);

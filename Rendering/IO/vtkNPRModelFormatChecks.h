@@ -8,11 +8,32 @@
 #ifndef vtkNPRModelFormatChecks_h
 #define vtkNPRModelFormatChecks_h
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
 namespace vtkNPRModelFormatChecks
 {
+// A PLY header's property: a scalar, or a list (CountSize > 0).
+struct PLYProperty
+{
+  std::string Name;
+  int Size = 0;      // bytes of the value, or of each list item
+  int CountSize = 0; // bytes of a list's count; 0 for a scalar property
+  bool Signed = false;
+  bool Float = false;
+};
+
+struct PLYElement
+{
+  std::string Name;
+  long long Count = 0;
+  std::vector<PLYProperty> Properties;
+};
+
+// Reads a PLY header up to end_header, leaving in at the body: "" or what is wrong with it.
+std::string ReadPLYHeader(std::istream& in, std::string& format, std::vector<PLYElement>& elements);
+
 std::string CheckPLY(const std::string& fileName);
 std::string CheckSTL(const std::string& fileName);
 

@@ -13,6 +13,7 @@
 #include "vtkGLTFReader.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNPRBinaryPLY.h"
 #include "vtkNPRGLTFChecks.h"
 #include "vtkNPRModelFormatChecks.h"
 #include "vtkNPROFFReader.h"
@@ -23,11 +24,15 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
 #include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
+#include "vtkTimerLog.h"
 #include "vtkXMLPolyDataReader.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstring>
@@ -138,38 +143,360 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& extension, const std
   return nullptr;
 }
 
-// Copies the cells of one kind whose points all exist and are finite, renumbering their points;
-// counts those dropped for a non-finite point and for a point index out of range.
-void CopyDrawableCells(vtkCellArray* cells, const std::vector<vtkIdType>& newPointIds,
-  vtkIdType& inputCellId, vtkCellData* inputData, vtkCellData* outputData, vtkCellArray* kept,
-  vtkIdType& nonFinite, vtkIdType& outOfRange)
+enum class CellStatus
+{
+  Drawable,
+  NonFinite,  // uses a point with a NaN or infinite coordinate
+  OutOfRange, // names a point that does not exist
+};
+
+// Whether a cell's points all exist and are finite, given each point's number among the finite
+// ones (-1: not finite).
+CellStatus Classify(vtkIdType size, const vtkIdType* ids, const std::vector<vtkIdType>& newPointIds)
 {
   const vtkIdType numberOfPoints = static_cast<vtkIdType>(newPointIds.size());
+  CellStatus status = CellStatus::Drawable;
+  for (vtkIdType k = 0; k < size; ++k)
+  {
+    if (ids[k] < 0 || ids[k] >= numberOfPoints)
+    {
+      return CellStatus::OutOfRange;
+    }
+    status = newPointIds[static_cast<size_t>(ids[k])] < 0 ? CellStatus::NonFinite : status;
+  }
+  return status;
+}
+
+// The number of cells of each status.
+struct CellCounts
+{
+  vtkIdType NonFinite = 0;
+  vtkIdType OutOfRange = 0;
+
+  void Add(CellStatus status)
+  {
+    this->NonFinite += status == CellStatus::NonFinite;
+    this->OutOfRange += status == CellStatus::OutOfRange;
+  }
+};
+
+CellCounts CountUndrawableCells(vtkPolyData* surface, const std::vector<vtkIdType>& newPointIds)
+{
+  CellCounts counts;
+  for (vtkCellArray* cells :
+    { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })
+  {
+    vtkIdType size = 0;
+    const vtkIdType* ids = nullptr;
+    for (cells->InitTraversal(); cells->GetNextCell(size, ids);)
+    {
+      counts.Add(Classify(size, ids, newPointIds));
+    }
+  }
+  return counts;
+}
+
+// Copies the drawable cells of one kind, renumbering their points, with their cell data.
+void CopyDrawableCells(vtkCellArray* cells, const std::vector<vtkIdType>& newPointIds,
+  vtkIdType& inputCellId, vtkCellData* inputData, vtkCellData* outputData, vtkCellArray* kept)
+{
   vtkIdType size = 0;
   const vtkIdType* ids = nullptr;
   std::vector<vtkIdType> renumbered;
   for (cells->InitTraversal(); cells->GetNextCell(size, ids); ++inputCellId)
   {
-    renumbered.resize(static_cast<size_t>(size));
-    bool exists = true, finite = true;
-    for (vtkIdType k = 0; k < size && exists; ++k)
+    if (Classify(size, ids, newPointIds) != CellStatus::Drawable)
     {
-      exists = ids[k] >= 0 && ids[k] < numberOfPoints;
-      renumbered[static_cast<size_t>(k)] = exists ? newPointIds[static_cast<size_t>(ids[k])] : -1;
-      finite = finite && renumbered[static_cast<size_t>(k)] >= 0;
-    }
-    if (!exists || !finite)
-    {
-      ++(exists ? nonFinite : outOfRange);
       continue;
     }
-    kept->InsertNextCell(size, renumbered.data());
-    if (outputData)
+    renumbered.resize(static_cast<size_t>(size));
+    for (vtkIdType k = 0; k < size; ++k)
     {
-      outputData->CopyData(inputData, inputCellId, outputData->GetNumberOfTuples());
+      renumbered[static_cast<size_t>(k)] = newPointIds[static_cast<size_t>(ids[k])];
     }
+    kept->InsertNextCell(size, renumbered.data());
+    outputData->CopyData(inputData, inputCellId, outputData->GetNumberOfTuples());
   }
 }
+
+// For every point, its number among the finite ones (-1: a NaN or infinite coordinate); the
+// test on every core.
+std::vector<vtkIdType> NumberFinitePoints(vtkPoints* points, vtkIdType& finitePoints)
+{
+  const vtkIdType count = points->GetNumberOfPoints();
+  std::vector<unsigned char> finite(static_cast<size_t>(count));
+  vtkDataArray* data = points->GetData();
+  vtkSMPTools::For(0, count,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double p[3];
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        data->GetTuple(i, p);
+        finite[static_cast<size_t>(i)] =
+          std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+      }
+    });
+  std::vector<vtkIdType> newPointIds(static_cast<size_t>(count), -1);
+  finitePoints = 0;
+  for (size_t i = 0; i < finite.size(); ++i)
+  {
+    newPointIds[i] = finite[i] ? finitePoints++ : -1;
+  }
+  return newPointIds;
+}
+
+// The surface without its non-finite points and the cells that use them or name a point that
+// does not exist, its point and cell data following.
+void CopyDrawable(vtkPolyData* surface, const std::vector<vtkIdType>& newPointIds,
+  vtkIdType finitePoints, vtkPolyData* output)
+{
+  vtkPoints* points = surface->GetPoints();
+  vtkNew<vtkPoints> keptPoints;
+  keptPoints->SetDataType(points->GetDataType());
+  keptPoints->SetNumberOfPoints(finitePoints);
+  output->GetPointData()->CopyAllocate(surface->GetPointData(), finitePoints);
+  for (size_t i = 0; i < newPointIds.size(); ++i)
+  {
+    if (newPointIds[i] >= 0)
+    {
+      keptPoints->SetPoint(newPointIds[i], points->GetPoint(static_cast<vtkIdType>(i)));
+      output->GetPointData()->CopyData(
+        surface->GetPointData(), static_cast<vtkIdType>(i), newPointIds[i]);
+    }
+  }
+  output->SetPoints(keptPoints);
+  output->GetCellData()->CopyAllocate(surface->GetCellData(), surface->GetNumberOfCells());
+  // vtkPolyData numbers its cells vertices first, then lines, polygons, strips.
+  vtkIdType inputCellId = 0;
+  vtkNew<vtkCellArray> verts, lines, polys, strips;
+  CopyDrawableCells(surface->GetVerts(), newPointIds, inputCellId, surface->GetCellData(),
+    output->GetCellData(), verts);
+  CopyDrawableCells(surface->GetLines(), newPointIds, inputCellId, surface->GetCellData(),
+    output->GetCellData(), lines);
+  CopyDrawableCells(surface->GetPolys(), newPointIds, inputCellId, surface->GetCellData(),
+    output->GetCellData(), polys);
+  CopyDrawableCells(surface->GetStrips(), newPointIds, inputCellId, surface->GetCellData(),
+    output->GetCellData(), strips);
+  output->SetVerts(verts);
+  output->SetLines(lines);
+  output->SetPolys(polys);
+  output->SetStrips(strips);
+}
+
+// How many of the three axes the points the cells use span no length along (2: on one line,
+// 3: at one spot): the points marked, then their bounds on every core.
+int CountFlatAxes(vtkPolyData* mesh)
+{
+  std::vector<unsigned char> used(static_cast<size_t>(mesh->GetNumberOfPoints()), 0);
+  for (vtkCellArray* cells :
+    { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() })
+  {
+    vtkIdType size = 0;
+    const vtkIdType* ids = nullptr;
+    for (cells->InitTraversal(); cells->GetNextCell(size, ids);)
+    {
+      for (vtkIdType k = 0; k < size; ++k)
+      {
+        used[static_cast<size_t>(ids[k])] = 1;
+      }
+    }
+  }
+  using Bounds = std::array<double, 6>;
+  vtkSMPThreadLocal<Bounds> local(Bounds{ VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX,
+    -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX });
+  vtkDataArray* data = mesh->GetPoints()->GetData();
+  vtkSMPTools::For(0, mesh->GetNumberOfPoints(),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      Bounds& bounds = local.Local();
+      double p[3];
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (used[static_cast<size_t>(i)])
+        {
+          data->GetTuple(i, p);
+          for (int axis = 0; axis < 3; ++axis)
+          {
+            bounds[2 * axis] = std::min(bounds[2 * axis], p[axis]);
+            bounds[2 * axis + 1] = std::max(bounds[2 * axis + 1], p[axis]);
+          }
+        }
+      }
+    });
+  Bounds all{ VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX,
+    -VTK_DOUBLE_MAX };
+  for (const Bounds& bounds : local)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      all[2 * axis] = std::min(all[2 * axis], bounds[2 * axis]);
+      all[2 * axis + 1] = std::max(all[2 * axis + 1], bounds[2 * axis + 1]);
+    }
+  }
+  int flatAxes = 0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    flatAxes += !(all[2 * axis + 1] > all[2 * axis]);
+  }
+  return flatAxes;
+}
+
+// Why the file cannot be read at all, or "".
+std::string CheckFile(const std::string& name)
+{
+  if (name.empty())
+  {
+    return "no model file name given";
+  }
+  struct stat status;
+  if (stat(name.c_str(), &status) != 0)
+  {
+    return name + ": no such file";
+  }
+  if (S_ISDIR(status.st_mode))
+  {
+    return name + ": is a directory, not a model file";
+  }
+  if (!std::ifstream(name, std::ios::binary))
+  {
+    return name + ": cannot be read (permission denied?)";
+  }
+  if (status.st_size == 0)
+  {
+    return name + ": is empty (0 bytes)";
+  }
+  return "";
+}
+
+// An OBJ file's vertices with a NaN or infinite coordinate (0-based), and how many it has.
+struct OBJVertices
+{
+  std::vector<long long> NonFinite;
+  long long Count = 0;
+};
+
+// The structural check of the format, before VTK's reader trusts the file.
+std::string CheckStructure(
+  const std::string& extension, const std::string& name, OBJVertices& objVertices)
+{
+  if (extension == ".ply")
+  {
+    return vtkNPRModelFormatChecks::CheckPLY(name);
+  }
+  if (extension == ".stl")
+  {
+    return vtkNPRModelFormatChecks::CheckSTL(name);
+  }
+  if (extension == ".obj")
+  {
+    return vtkNPRModelFormatChecks::CheckOBJ(name, objVertices.NonFinite, objVertices.Count);
+  }
+  if (extension == ".vtp")
+  {
+    return vtkNPRModelFormatChecks::CheckVTP(name);
+  }
+  if (extension == ".vtk")
+  {
+    return vtkNPRModelFormatChecks::CheckLegacyVTK(name);
+  }
+  if (extension == ".gltf" || extension == ".glb")
+  {
+    return vtkNPRGLTFChecks::CheckGLTF(name);
+  }
+  return "";
+}
+
+// Runs VTK's reader and makes one polydata of what it read: composite (glTF) and
+// non-polygonal (legacy) data too. Returns why it failed, or "".
+std::string ReadSurface(vtkAlgorithm* reader, const std::string& name, const std::string& extension,
+  vtkSmartPointer<vtkPolyData>& surface)
+{
+  MessageCatcher messages(reader);
+  reader->Update();
+  vtkDataObject* data = reader->GetOutputDataObject(0);
+  auto* off = vtkNPROFFReader::SafeDownCast(reader);
+  if (off && *off->GetErrorMessage())
+  {
+    return off->GetErrorMessage(); // already "file:line: what"
+  }
+  if (!messages.Error.empty())
+  {
+    return name + ": malformed or unreadable " + extension.substr(1) + " file: " + messages.Error;
+  }
+  if (auto* polyData = vtkPolyData::SafeDownCast(data))
+  {
+    surface = polyData;
+  }
+  else if (vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkNew<vtkCompositeDataGeometryFilter> merge;
+    merge->SetInputData(data);
+    merge->Update();
+    surface = merge->GetOutput();
+  }
+  else if (auto* dataSet = vtkDataSet::SafeDownCast(data))
+  {
+    vtkNew<vtkDataSetSurfaceFilter> extract;
+    extract->SetInputData(dataSet);
+    extract->Update();
+    surface = extract->GetOutput();
+  }
+  return "";
+}
+
+// Why what was read cannot be drawn at all, or "".
+std::string CheckSurface(
+  const std::string& name, const std::string& extension, vtkPolyData* surface)
+{
+  if (!surface || surface->GetNumberOfCells() == 0 || surface->GetNumberOfPoints() == 0)
+  {
+    return name + ": contains no geometry (no points or no cells)";
+  }
+  for (vtkCellArray* cells :
+    { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })
+  {
+    if (cells && !cells->IsValid()) // offsets that run past the connectivity (a VTP file's)
+    {
+      return name + ": malformed " + extension.substr(1) +
+        " file: inconsistent cell offsets and connectivity";
+    }
+  }
+  return "";
+}
+
+// vtkOBJReader reads "nan" and "inf" as numbers of its own: the vertices CheckOBJ found with
+// them made NaN again, so that the point check drops them. It keeps the vertices in file order
+// unless faces give texture or normal indices of their own per corner.
+std::string MarkNonFiniteOBJVertices(
+  const std::string& name, const OBJVertices& objVertices, vtkSmartPointer<vtkPolyData>& surface)
+{
+  if (objVertices.NonFinite.empty())
+  {
+    return "";
+  }
+  vtkPoints* points = surface->GetPoints();
+  if (points->GetNumberOfPoints() != objVertices.Count ||
+    points->GetData()->GetNumberOfComponents() != 3)
+  {
+    return name +
+      ": NaN/Inf vertices in an OBJ file whose faces give per-corner texture or normal "
+      "indices are not supported";
+  }
+  vtkNew<vtkPoints> marked;
+  marked->DeepCopy(points);
+  for (long long vertex : objVertices.NonFinite)
+  {
+    const double nan = std::nan("");
+    marked->SetPoint(static_cast<vtkIdType>(vertex), nan, nan, nan);
+  }
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(surface);
+  copy->SetPoints(marked);
+  surface = copy;
+  return "";
+}
+
 }
 
 vtkNPRModelReader::vtkNPRModelReader()
@@ -235,26 +562,10 @@ int vtkNPRModelReader::RequestData(
 
 bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
 {
-  if (name.empty())
+  std::string error = CheckFile(name);
+  if (!error.empty())
   {
-    return this->Fail("no model file name given");
-  }
-  struct stat status;
-  if (stat(name.c_str(), &status) != 0)
-  {
-    return this->Fail(name + ": no such file");
-  }
-  if (S_ISDIR(status.st_mode))
-  {
-    return this->Fail(name + ": is a directory, not a model file");
-  }
-  if (!std::ifstream(name, std::ios::binary))
-  {
-    return this->Fail(name + ": cannot be read (permission denied?)");
-  }
-  if (status.st_size == 0)
-  {
-    return this->Fail(name + ": is empty (0 bytes)");
+    return this->Fail(error);
   }
   const std::string extension = LowerCaseExtension(name);
   vtkSmartPointer<vtkAlgorithm> reader = MakeReader(extension, name);
@@ -263,238 +574,108 @@ bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
     return this->Fail(name + ": unknown model format '" + extension +
       "' (supported: " + GetSupportedExtensions() + ")");
   }
-  std::vector<long long> nonFiniteOBJVertices;
-  long long objVertices = 0;
-  std::string structureError;
-  if (extension == ".ply")
+  bool handled = false;
+  const bool read = extension == ".ply" && this->ReadBinaryPLY(name, output, handled);
+  if (handled)
   {
-    structureError = vtkNPRModelFormatChecks::CheckPLY(name);
+    return read;
   }
-  else if (extension == ".stl")
+  OBJVertices objVertices;
+  vtkTimerLog::MarkStartEvent("vtkNPRModelReader: validate");
+  error = CheckStructure(extension, name, objVertices);
+  vtkTimerLog::MarkEndEvent("vtkNPRModelReader: validate");
+  if (!error.empty())
   {
-    structureError = vtkNPRModelFormatChecks::CheckSTL(name);
+    return this->Fail(name + ": " + error);
   }
-  else if (extension == ".obj")
-  {
-    structureError = vtkNPRModelFormatChecks::CheckOBJ(name, nonFiniteOBJVertices, objVertices);
-  }
-  else if (extension == ".vtp")
-  {
-    structureError = vtkNPRModelFormatChecks::CheckVTP(name);
-  }
-  else if (extension == ".vtk")
-  {
-    structureError = vtkNPRModelFormatChecks::CheckLegacyVTK(name);
-  }
-  else if (extension == ".gltf" || extension == ".glb")
-  {
-    structureError = vtkNPRGLTFChecks::CheckGLTF(name);
-  }
-  if (!structureError.empty())
-  {
-    return this->Fail(name + ": " + structureError);
-  }
-
-  MessageCatcher messages(reader);
-  reader->Update();
-  vtkDataObject* data = reader->GetOutputDataObject(0);
-  if (auto* off = vtkNPROFFReader::SafeDownCast(reader))
-  {
-    if (*off->GetErrorMessage())
-    {
-      return this->Fail(off->GetErrorMessage()); // already "file:line: what"
-    }
-  }
-  if (!messages.Error.empty())
-  {
-    return this->Fail(
-      name + ": malformed or unreadable " + extension.substr(1) + " file: " + messages.Error);
-  }
-
-  // Every format ends as one polydata: composite (glTF) and non-polygonal (legacy) data too.
+  vtkTimerLog::MarkStartEvent("vtkNPRModelReader: read");
   vtkSmartPointer<vtkPolyData> surface;
-  if (auto* polyData = vtkPolyData::SafeDownCast(data))
+  error = ReadSurface(reader, name, extension, surface);
+  if (error.empty())
   {
-    surface = polyData;
+    error = CheckSurface(name, extension, surface);
   }
-  else if (vtkCompositeDataSet::SafeDownCast(data))
+  if (error.empty())
   {
-    vtkNew<vtkCompositeDataGeometryFilter> merge;
-    merge->SetInputData(data);
-    merge->Update();
-    surface = merge->GetOutput();
+    error = MarkNonFiniteOBJVertices(name, objVertices, surface);
   }
-  else if (auto* dataSet = vtkDataSet::SafeDownCast(data))
+  vtkTimerLog::MarkEndEvent("vtkNPRModelReader: read");
+  if (!error.empty())
   {
-    vtkNew<vtkDataSetSurfaceFilter> extract;
-    extract->SetInputData(dataSet);
-    extract->Update();
-    surface = extract->GetOutput();
+    return this->Fail(error);
   }
-  if (!surface || surface->GetNumberOfCells() == 0 || surface->GetNumberOfPoints() == 0)
-  {
-    return this->Fail(name + ": contains no geometry (no points or no cells)");
-  }
+  vtkTimerLog::MarkStartEvent("vtkNPRModelReader: check points");
+  const bool drawable = this->KeepDrawable(name, surface, output);
+  vtkTimerLog::MarkEndEvent("vtkNPRModelReader: check points");
+  return drawable;
+}
 
-  for (vtkCellArray* cells :
-    { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })
+bool vtkNPRModelReader::ReadBinaryPLY(const std::string& name, vtkPolyData* output, bool& handled)
+{
+  // The common binary layout, checked as it is read (so no separate check step); anything else,
+  // and a file it refuses, goes the checked way with vtkPLYReader (handled stays false).
+  vtkTimerLog::MarkStartEvent("vtkNPRModelReader: read");
+  vtkNew<vtkPolyData> surface;
+  handled = vtkNPRBinaryPLY::Read(name, surface) && CheckSurface(name, ".ply", surface).empty();
+  vtkTimerLog::MarkEndEvent("vtkNPRModelReader: read");
+  if (!handled)
   {
-    if (cells && !cells->IsValid()) // offsets that run past the connectivity (a VTP file's)
-    {
-      return this->Fail(name + ": malformed " + extension.substr(1) +
-        " file: inconsistent cell offsets and connectivity");
-    }
+    return false;
   }
-  vtkPoints* points = surface->GetPoints();
-  const vtkIdType numberOfPoints = points->GetNumberOfPoints();
-  if (!nonFiniteOBJVertices.empty())
-  {
-    // vtkOBJReader reads "nan" and "inf" as numbers of its own: mark those vertices, which it
-    // keeps in file order unless faces give texture or normal indices of their own per corner.
-    if (numberOfPoints != objVertices || points->GetData()->GetNumberOfComponents() != 3)
-    {
-      return this->Fail(name +
-        ": NaN/Inf vertices in an OBJ file whose faces give per-corner "
-        "texture or normal indices are not supported");
-    }
-    vtkNew<vtkPoints> marked;
-    marked->DeepCopy(points);
-    for (long long vertex : nonFiniteOBJVertices)
-    {
-      const double nan = std::nan("");
-      marked->SetPoint(static_cast<vtkIdType>(vertex), nan, nan, nan);
-    }
-    auto copy = vtkSmartPointer<vtkPolyData>::New();
-    copy->ShallowCopy(surface);
-    copy->SetPoints(marked);
-    surface = copy;
-    points = marked;
-  }
+  vtkTimerLog::MarkStartEvent("vtkNPRModelReader: check points");
+  const bool drawable = this->KeepDrawable(name, surface, output);
+  vtkTimerLog::MarkEndEvent("vtkNPRModelReader: check points");
+  return drawable;
+}
 
+bool vtkNPRModelReader::KeepDrawable(
+  const std::string& name, vtkPolyData* surface, vtkPolyData* output)
+{
   // Drop points with NaN or infinite coordinates, the cells that use them, and cells that name
   // a point that does not exist (VTP and VTK files, which VTK's readers take as they are).
-  std::vector<vtkIdType> newPointIds(static_cast<size_t>(numberOfPoints), -1);
+  const vtkIdType numberOfPoints = surface->GetNumberOfPoints();
   vtkIdType finitePoints = 0;
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    double p[3];
-    points->GetPoint(i, p);
-    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
-    {
-      newPointIds[static_cast<size_t>(i)] = finitePoints++;
-    }
-  }
-  vtkIdType nonFiniteCells = 0, outOfRangeCells = 0;
-  {
-    vtkIdType cellId = 0;
-    vtkNew<vtkCellArray> scratch;
-    for (vtkCellArray* cells :
-      { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })
-    {
-      CopyDrawableCells(
-        cells, newPointIds, cellId, nullptr, nullptr, scratch, nonFiniteCells, outOfRangeCells);
-      scratch->Reset();
-    }
-  }
-  if (finitePoints == numberOfPoints && outOfRangeCells == 0)
+  const std::vector<vtkIdType> newPointIds = NumberFinitePoints(surface->GetPoints(), finitePoints);
+  CellCounts dropped = CountUndrawableCells(surface, newPointIds);
+  if (finitePoints == numberOfPoints && dropped.OutOfRange == 0)
   {
     output->ShallowCopy(surface);
   }
   else
   {
-    vtkNew<vtkPoints> keptPoints;
-    keptPoints->SetDataType(points->GetDataType());
-    keptPoints->SetNumberOfPoints(finitePoints);
-    output->GetPointData()->CopyAllocate(surface->GetPointData(), finitePoints);
-    for (vtkIdType i = 0; i < numberOfPoints; ++i)
-    {
-      const vtkIdType target = newPointIds[static_cast<size_t>(i)];
-      if (target >= 0)
-      {
-        keptPoints->SetPoint(target, points->GetPoint(i));
-        output->GetPointData()->CopyData(surface->GetPointData(), i, target);
-      }
-    }
-    output->SetPoints(keptPoints);
-    output->GetCellData()->CopyAllocate(surface->GetCellData(), surface->GetNumberOfCells());
-
-    // vtkPolyData numbers its cells vertices first, then lines, polygons, strips.
-    vtkIdType inputCellId = 0;
-    nonFiniteCells = outOfRangeCells = 0;
-    vtkNew<vtkCellArray> verts, lines, polys, strips;
-    CopyDrawableCells(surface->GetVerts(), newPointIds, inputCellId, surface->GetCellData(),
-      output->GetCellData(), verts, nonFiniteCells, outOfRangeCells);
-    CopyDrawableCells(surface->GetLines(), newPointIds, inputCellId, surface->GetCellData(),
-      output->GetCellData(), lines, nonFiniteCells, outOfRangeCells);
-    CopyDrawableCells(surface->GetPolys(), newPointIds, inputCellId, surface->GetCellData(),
-      output->GetCellData(), polys, nonFiniteCells, outOfRangeCells);
-    CopyDrawableCells(surface->GetStrips(), newPointIds, inputCellId, surface->GetCellData(),
-      output->GetCellData(), strips, nonFiniteCells, outOfRangeCells);
-    output->SetVerts(verts);
-    output->SetLines(lines);
-    output->SetPolys(polys);
-    output->SetStrips(strips);
+    CopyDrawable(surface, newPointIds, finitePoints, output);
     this->NumberOfDroppedPoints = numberOfPoints - finitePoints;
-    this->NumberOfDroppedCells = nonFiniteCells + outOfRangeCells;
-    this->NumberOfOutOfRangeCells = outOfRangeCells;
+    this->NumberOfDroppedCells = dropped.NonFinite + dropped.OutOfRange;
+    this->NumberOfOutOfRangeCells = dropped.OutOfRange;
   }
-
-  std::string dropped;
+  std::string droppedText;
   if (this->NumberOfDroppedPoints)
   {
-    dropped = "dropped " + std::to_string(this->NumberOfDroppedPoints) +
-      " points with NaN/Inf coordinates and the " + std::to_string(nonFiniteCells) +
+    droppedText = "dropped " + std::to_string(this->NumberOfDroppedPoints) +
+      " points with NaN/Inf coordinates and the " + std::to_string(dropped.NonFinite) +
       " cells that use them";
   }
-  if (outOfRangeCells)
+  if (dropped.OutOfRange)
   {
-    dropped += std::string(dropped.empty() ? "dropped " : ", and ") +
-      std::to_string(outOfRangeCells) + " cells that use a point index past the " +
+    droppedText += std::string(droppedText.empty() ? "dropped " : ", and ") +
+      std::to_string(dropped.OutOfRange) + " cells that use a point index past the " +
       std::to_string(numberOfPoints) + " points";
   }
   if (output->GetNumberOfCells() == 0)
   {
-    return this->Fail(name + ": nothing to draw: no cell is left after it " + dropped);
+    return this->Fail(name + ": nothing to draw: no cell is left after it " + droppedText);
   }
-
-  // Nothing drawable: every point used by a cell at one spot or on one line.
-  double bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
-    VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  vtkPoints* keptPoints = output->GetPoints();
-  for (vtkCellArray* cells :
-    { output->GetVerts(), output->GetLines(), output->GetPolys(), output->GetStrips() })
-  {
-    vtkIdType size = 0;
-    const vtkIdType* ids = nullptr;
-    for (cells->InitTraversal(); cells->GetNextCell(size, ids);)
-    {
-      for (vtkIdType k = 0; k < size; ++k)
-      {
-        double p[3];
-        keptPoints->GetPoint(ids[k], p);
-        for (int axis = 0; axis < 3; ++axis)
-        {
-          bounds[2 * axis] = std::min(bounds[2 * axis], p[axis]);
-          bounds[2 * axis + 1] = std::max(bounds[2 * axis + 1], p[axis]);
-        }
-      }
-    }
-  }
-  int flatAxes = 0;
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    flatAxes += !(bounds[2 * axis + 1] > bounds[2 * axis]);
-  }
+  const int flatAxes = CountFlatAxes(output); // every point used at one spot or on one line
   if (flatAxes >= 2)
   {
     return this->Fail(name + ": nothing to draw: every point of its " +
       std::to_string(output->GetNumberOfCells()) + " cells lies " +
       (flatAxes == 3 ? "at one spot" : "on one line") + " (zero-area bounds)" +
-      (dropped.empty() ? std::string() : " after it " + dropped));
+      (droppedText.empty() ? std::string() : " after it " + droppedText));
   }
-  if (!dropped.empty())
+  if (!droppedText.empty())
   {
-    this->WarningMessage = name + ": " + dropped;
+    this->WarningMessage = name + ": " + droppedText;
     vtkWarningMacro(<< this->WarningMessage);
   }
   return true;

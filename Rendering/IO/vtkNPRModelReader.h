@@ -91,6 +91,8 @@ private:
   void operator=(const vtkNPRModelReader&) = delete;
 
   bool Read(const std::string& fileName, vtkPolyData* output);
+  bool ReadBinaryPLY(const std::string& fileName, vtkPolyData* output, bool& handled);
+  bool KeepDrawable(const std::string& fileName, vtkPolyData* surface, vtkPolyData* output);
   bool Fail(const std::string& message);
 };
 

@@ -2,17 +2,20 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkNPRShadingNormals.h"
 
-#include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNPRCoincidentPoints.h"
+#include "vtkNPRSplitNormals.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
+#include "vtkTimerLog.h"
 
 #include <cmath>
+#include <string>
 
 vtkStandardNewMacro(vtkNPRShadingNormals);
 
@@ -66,20 +69,29 @@ int vtkNPRShadingNormals::RequestData(
     pointData->SetNormals(nullptr);
     withoutNormals->GetPointData()->ShallowCopy(pointData);
   }
-  vtkNew<vtkCleanPolyData> merge;
-  merge->SetInputData(withoutNormals);
-  merge->PointMergingOn();
-  merge->ToleranceIsAbsoluteOn();
-  merge->SetAbsoluteTolerance(0.0);
-  merge->ConvertPolysToLinesOff();
-  merge->ConvertLinesToPointsOff();
-  merge->ConvertStripsToPolysOff();
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputConnection(merge->GetOutputPort());
+  vtkTimerLog::MarkStartEvent("vtkNPRShadingNormals: merge");
+  vtkNew<vtkPolyData> merged;
+  const std::string mergeError = vtkNPRCoincidentPoints::Merge(withoutNormals, merged);
+  vtkTimerLog::MarkEndEvent("vtkNPRShadingNormals: merge");
+  if (!mergeError.empty())
+  {
+    vtkErrorMacro(<< "cannot compute normals: " << mergeError);
+    return 0;
+  }
+  vtkTimerLog::MarkStartEvent("vtkNPRShadingNormals: normals");
+  if (vtkNPRSplitNormals::Compute(merged, this->FeatureAngle, output))
+  {
+    vtkTimerLog::MarkEndEvent("vtkNPRShadingNormals: normals");
+    this->ComputedNormals = true;
+    return 1;
+  }
+  vtkNew<vtkPolyDataNormals> normals; // triangle strips
+  normals->SetInputData(merged);
   normals->SetFeatureAngle(this->FeatureAngle);
   normals->SplittingOn();
   normals->ConsistencyOff();
   normals->Update();
+  vtkTimerLog::MarkEndEvent("vtkNPRShadingNormals: normals");
   output->ShallowCopy(normals->GetOutput());
   this->ComputedNormals = true;
   return 1;

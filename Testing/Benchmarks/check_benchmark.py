@@ -2,10 +2,10 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 # SPDX-License-Identifier: BSD-3-Clause
 """Smoke test of npr-benchmark: runs it with --quick (alone, or with --stress, --coherence,
---drawing, --speed or --contours) and checks that the files are written and that every figure is sane (F1 in [0, 1], no NaN, positive times).
+--drawing, --speed, --contours or --scale) and checks that the files are written and that every figure is sane (F1 in [0, 1], no NaN, positive times).
 
 usage: check_benchmark.py --npr-benchmark EXE --data DIR --out DIR
-       [--stress | --coherence | --drawing | --speed | --contours]"""
+       [--stress | --coherence | --drawing | --speed | --contours | --scale]"""
 import argparse
 import csv
 import math
@@ -240,6 +240,106 @@ def check_speed_methods(args):
           "an unknown --speed method was accepted: %d %s" % (result.returncode, result.stderr))
 
 
+SCALE_OURS = (
+    "npr-render --style shaded", "npr-render --style edges", "npr-render --style sketch",
+    "npr-render --style toon+edges", "npr-render --style drawing",
+    "npr-render --style drawing -o x.svg",
+    "plain VTK: vtkPLYReader, vtkPolyDataNormals, render, PNG")
+SCALE_F3D = ("F3D --output", "F3D --output --edges")
+# Each step with its parts: (step, parts that need not be logged, parts always measured).
+SCALE_STEPS = (
+    ("read (vtkNPRModelReader)", ("vtkNPRModelReader: validate", "vtkNPRModelReader: read",
+                                  "vtkNPRModelReader: check points"), ()),
+    ("shading normals (vtkNPRShadingNormals)", ("vtkNPRShadingNormals: merge",
+                                                "vtkNPRShadingNormals: normals"), ()),
+    ("feature lines: first update (adjacency)", (), ()),
+    ("feature lines per camera change", (), ()),
+    ("first frame: shaded (mesh upload)", (), ()), ("later frames: shaded", (), ()),
+    ("first frame: edges", (), ()), ("later frames: edges", (), ()),
+    ("first frame: sketch", (), ()), ("later frames: sketch", (), ()),
+    ("first frame: toon+edges", (), ()), ("later frames: toon+edges", (), ()),
+    ("first frame: drawing", (), ("drawing: first stroke update",)),
+    ("later frames: drawing", (), ("drawing: stroke update per camera change",)))
+SCALE_SIZES = {"62k": 62500, "250k": 250000}
+
+
+def ply_faces(path):
+    """The face count of a PLY header, and whether the file is binary."""
+    with open(path, "rb") as f:
+        header = f.read(1000).split(b"end_header")[0].decode("ascii", "replace")
+    faces = [int(line.split()[2]) for line in header.splitlines()
+             if line.startswith("element face")]
+    return (faces[0] if faces else -1), "format binary" in header
+
+
+def check_scale_row(row, triangles, part=False):
+    """A measured row: a positive time, ns per triangle from it, a peak (not for parts)."""
+    check(row["status"] == "", "%s %s: %s" % (row["size"], row["name"], row["status"]))
+    if row["status"]:
+        return 0.0
+    seconds = number(row, "seconds")
+    check(seconds > 0.0, "time: %s" % row)
+    ns = number(row, "ns_per_triangle")
+    check(abs(ns - 1e9 * seconds / triangles) <= 1e-3 * ns, "ns per triangle: %s" % row)
+    if part:
+        check(row["peak_mb"] == "", "a part with a peak of its own: %s" % row)
+    else:
+        check(number(row, "peak_mb") > 0.0, "peak memory: %s" % row)
+        if row["kind"] == "step":
+            check(number(row, "added_mb") >= 0.0, "added memory: %s" % row)
+    return seconds
+
+
+def check_scale(out):
+    rows = read_csv(os.path.join(out, "scale.csv"))
+    found = {(row["size"], row["kind"], row["name"]): row for row in rows}
+    check({row["size"] for row in rows} == set(SCALE_SIZES), "scale.csv: sizes %s" %
+          sorted({row["size"] for row in rows}))
+    for size, triangles in SCALE_SIZES.items():
+        faces, binary = ply_faces(os.path.join(out, "meshes", "bunny_%s.ply" % size))
+        check(faces == triangles and binary, "meshes/bunny_%s.ply: %d faces" % (size, faces))
+        for name in SCALE_OURS + SCALE_F3D:
+            row = found.get((size, "program", name))
+            check(row is not None, "scale.csv: %s %r missing" % (size, name))
+            # F3D may be missing or without a display: said in the status, never an error.
+            if row and (name not in SCALE_F3D or row["status"] == ""):
+                check(int(row["triangles"]) == triangles, "triangles: %s" % row)
+                check_scale_row(row, triangles)
+        for step, logged, parts in SCALE_STEPS:
+            row = found.get((size, "step", step))
+            check(row is not None, "scale.csv: %s %r missing" % (size, step))
+            whole = check_scale_row(row, triangles) if row else 0.0
+            # A part lies within its step (the timer-log events appear once they are logged).
+            for part in logged + parts:
+                row = found.get((size, "step", part))
+                check(row is not None, "scale.csv: %s %r missing" % (size, part))
+                if row and (part in parts or row["status"] != "n/a"):
+                    check(check_scale_row(row, triangles, True) <= whole,
+                          "%s %s longer than its step" % (size, part))
+    md = os.path.join(out, "scale.md")
+    text = open(md).read() if os.path.isfile(md) else ""
+    check("| program | 62k s | 62k MB | 250k s | 250k MB |" in text, "scale.md: no program table")
+    check("| step | 62k ms | 62k MB | 250k ms | 250k MB |" in text, "scale.md: no step table")
+    check(all(name in text for name in SCALE_OURS + SCALE_F3D), "scale.md lacks a program")
+    check("nan" not in text.lower(), "scale.md has a NaN")
+    for plot in ("scale_programs.png", "scale_steps.png"):
+        check_png(os.path.join(out, plot))
+
+
+def check_scale_options(args):
+    """Bad --scale options are refused with status 2 and a message that names the option."""
+    for bad, flag in ((["--scale", "--scale-sizes", "3m"], "--scale-sizes"),
+                      (["--scale", "--scale-sizes", ""], "--scale-sizes"),
+                      (["--scale-sizes", "1m"], "--scale-sizes"),
+                      (["--scale-meshes", args.out], "--scale-meshes"),
+                      (["--scale", "--scale-meshes"], "--scale-meshes"),
+                      (["--scale", "--sizes", "640x480,320x240"], "--sizes")):
+        result = subprocess.run([args.npr_benchmark, "--data", args.data, "--out", args.out +
+                                 "-refused"] + bad, stderr=subprocess.PIPE, text=True)
+        check(result.returncode == 2 and flag in result.stderr,
+              "%s accepted or unclear: %d %s" % (bad, result.returncode, result.stderr))
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--npr-benchmark", required=True)
@@ -251,6 +351,7 @@ def main():
     mode.add_argument("--drawing", action="store_true")
     mode.add_argument("--speed", action="store_true")
     mode.add_argument("--contours", action="store_true")
+    mode.add_argument("--scale", action="store_true")
     args = parser.parse_args()
     shutil.rmtree(args.out, ignore_errors=True)
     command = [args.npr_benchmark, "--quick", "--data", args.data, "--out", args.out]
@@ -264,6 +365,8 @@ def main():
         command.append("--speed")
     if args.contours:
         command.append("--contours")
+    if args.scale:
+        command.append("--scale")
     print(" ".join(command))
     result = subprocess.run(command)
     check(result.returncode == 0, "npr-benchmark exited with %d" % result.returncode)
@@ -279,6 +382,9 @@ def main():
     elif args.contours:
         check_contours(args.out)
         check_contours_orbit(args)
+    elif args.scale:
+        check_scale(args.out)
+        check_scale_options(args)
     else:
         check_benchmark(args.out)
     print("FAILED (%d failed checks)" % len(failures) if failures else "PASSED")

@@ -9,6 +9,7 @@
 #include "nprBenchmarkMethods.h"
 #include "nprBenchmarkOptions.h"
 #include "nprBenchmarkReport.h"
+#include "nprBenchmarkScale.h"
 #include "nprBenchmarkScenes.h"
 #include "nprBenchmarkSpeed.h"
 #include "nprBenchmarkStage.h"
@@ -206,6 +207,14 @@ int main(int argc, char* argv[])
       if (options.Speed)
       {
         return nprRunBenchmarkSpeed(options);
+      }
+      if (!options.ScaleSteps.empty())
+      {
+        return nprRunScaleSteps(options);
+      }
+      if (options.Scale)
+      {
+        return nprRunBenchmarkScale(options);
       }
       return options.Stress ? nprRunBenchmarkStress(options) : RunBenchmark(options);
     });

@@ -3,6 +3,7 @@
 #include "nprBenchmarkOptions.h"
 
 #include "nprArguments.h"
+#include "nprBenchmarkScale.h"
 #include "nprBenchmarkScenes.h"
 
 #include <vtksys/SystemTools.hxx>
@@ -18,6 +19,7 @@ const char* const Help = R"(usage: npr-benchmark --data DIR --out DIR [options]
        npr-benchmark --drawing --data DIR --out DIR [options]
        npr-benchmark --speed --data DIR --out DIR [options]
        npr-benchmark --contours --data DIR --out DIR [options]
+       npr-benchmark --scale --data DIR --out DIR [options]
 
 Times every line method against the plain shaded frame and scores its line mask against the
 object-space reference mask (precision, recall and F1 at 1 and 2 px, mean symmetric distance).
@@ -43,6 +45,13 @@ silhouettes alone, with and without its smooth silhouettes, against two truths: 
 silhouette edges and the smooth surface's contour (with the same creases and borders); writes
 OUT/contours.csv and OUT/contours.md (default scenes cad,rotor,bunny,isosurface,blobs,knot, size
 1024x768; --quick: knot).
+With --scale: the cost against the model's size, on the bunny decimated to 62,500 triangles and
+refined by Loop subdivision (binary PLY, made once into the --scale-meshes folder): the wall time
+and peak memory of whole programs, each a child process (npr-render in five styles and to SVG,
+F3D where installed, a plain VTK program), and of each step in one (read, normals, feature lines,
+first and later frames per style, the drawing's strokes), with ns per triangle; writes
+OUT/scale.csv, OUT/scale.md, OUT/scale_programs.png and OUT/scale_steps.png (default sizes
+1m,4m,16m, 1920x1080, 3 frames; --quick: 62k,250k, 320x240, 2 frames).
 
   --data DIR         folder of cad_part.vtp, rotor.ply and bunny.ply
   --out DIR          folder for the results (created)
@@ -58,9 +67,15 @@ OUT/contours.csv and OUT/contours.md (default scenes cad,rotor,bunny,isosurface,
                      -180 to 180 every DEG degrees (1 to 120) at each camera's elevation
                      (-15, 20, 35); --orbit 10 is 108 views
   --runs N           --speed: repeats of the whole measurement; the median of their medians
-                     is reported (default 3)
+                     is reported (default 3); --scale: runs of every size, each figure the
+                     median (default 1)
   --line-width PX    line width of every method (default 1.5)
   --quick            one small scene (cad), one camera, 320x240, 2 frames, every method
+  --scale-sizes LIST --scale: of 62k, 250k, 1m, 4m, 16m (62,500 triangles times 1, 4, 16, 64,
+                     256; default 1m,4m,16m)
+  --scale-meshes DIR --scale: the meshes' folder, made where missing (default OUT/meshes)
+  --scale-steps FILE the steps of one model in this process, into OUT/steps.csv (what --scale
+                     runs as a child for each size)
   --stress-cases LIST  --stress: only the cases whose name contains one of these (comma
                      separated; the unit case always runs), e.g. scale,translate
   --max-drift X      --stress: exit 1 when a case's F1@1 moves more than X from the unit
@@ -70,13 +85,71 @@ OUT/contours.csv and OUT/contours.md (default scenes cad,rotor,bunny,isosurface,
   --version          the program and vtkNPR version
 )";
 
-void MakeFolder(const std::string& path)
+std::vector<std::string> ParseScaleSizes(const std::string& text)
+{
+  const std::vector<std::string> sizes = nprSplitList(text, true);
+  const std::vector<std::string>& names = nprScaleSizeNames();
+  for (const std::string& size : sizes)
+  {
+    if (std::find(names.begin(), names.end(), size) == names.end())
+    {
+      throw nprUsageError("--scale-sizes: unknown size '" + size + "' (62k, 250k, 1m, 4m, 16m)");
+    }
+  }
+  if (sizes.empty())
+  {
+    throw nprUsageError("--scale-sizes expects a list of 62k, 250k, 1m, 4m, 16m");
+  }
+  return sizes;
+}
+
+// --scale's defaults; its options refused without it.
+void ApplyScaleDefaults(
+  nprBenchmarkOptions& options, bool sizesGiven, bool framesGiven, bool runsGiven)
+{
+  if (!options.Scale)
+  {
+    if (!options.ScaleSizes.empty() || !options.ScaleMeshes.empty())
+    {
+      throw nprUsageError("--scale-sizes and --scale-meshes go with --scale");
+    }
+    if (!options.ScaleSteps.empty() && !sizesGiven)
+    {
+      options.Sizes = { { 1920, 1080 } };
+    }
+    return;
+  }
+  if (options.ScaleSizes.empty())
+  {
+    options.ScaleSizes = options.Quick ? std::vector<std::string>{ "62k", "250k" }
+                                       : std::vector<std::string>{ "1m", "4m", "16m" };
+  }
+  if (options.ScaleMeshes.empty())
+  {
+    options.ScaleMeshes = options.Out + "/meshes";
+  }
+  if (sizesGiven && options.Sizes.size() > 1)
+  {
+    throw nprUsageError("--scale measures one window size: --sizes WxH");
+  }
+  if (!sizesGiven && !options.Quick)
+  {
+    options.Sizes = { { 1920, 1080 } };
+  }
+  if (!framesGiven && !options.Quick)
+  {
+    options.Frames = 3;
+  }
+  options.Runs = runsGiven ? options.Runs : 1;
+}
+}
+
+void nprMakeBenchmarkFolder(const std::string& path)
 {
   if (!vtksys::SystemTools::MakeDirectory(path))
   {
     throw std::runtime_error(path + ": cannot create the folder");
   }
-}
 }
 
 nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
@@ -179,6 +252,22 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
     {
       options.Contours = true;
     }
+    else if (arg == "--scale")
+    {
+      options.Scale = true;
+    }
+    else if (arg == "--scale-sizes")
+    {
+      options.ScaleSizes = ParseScaleSizes(arguments.Value());
+    }
+    else if (arg == "--scale-meshes")
+    {
+      options.ScaleMeshes = arguments.Value();
+    }
+    else if (arg == "--scale-steps")
+    {
+      options.ScaleSteps = arguments.Value();
+    }
     else if (arg == "--stress-cases")
     {
       options.StressCases = nprSplitList(arguments.Value(), true);
@@ -208,6 +297,7 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
   {
     options.DenseMesh = options.Data + "/bunny_1m.ply";
   }
+  ApplyScaleDefaults(options, sizesGiven, framesGiven, runsGiven);
   if (options.Speed)
   {
     if (!options.ScenesGiven)
@@ -295,10 +385,10 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
 
 void nprMakeBenchmarkFolders(const nprBenchmarkOptions& options)
 {
-  MakeFolder(options.Out);
+  nprMakeBenchmarkFolder(options.Out);
   if (options.SaveMasks)
   {
-    MakeFolder(options.Out + "/masks");
+    nprMakeBenchmarkFolder(options.Out + "/masks");
   }
 }
 

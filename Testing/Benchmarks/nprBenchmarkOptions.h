@@ -27,7 +27,11 @@ struct nprBenchmarkOptions
   bool Drawing = false;
   bool Speed = false;
   bool Contours = false;
-  int Runs = 3;                         // --speed: the whole interleaved measurement repeated
+  bool Scale = false;
+  std::vector<std::string> ScaleSizes; // --scale: of nprScaleSizeNames()
+  std::string ScaleMeshes;             // --scale: the meshes' folder (default OUT/meshes)
+  std::string ScaleSteps; // --scale-steps FILE: that model's steps (a child of --scale)
+  int Runs = 3;           // --speed: the whole interleaved measurement repeated
   std::vector<std::string> StressCases; // name parts; empty: every case
   double MaxDrift = -1.0;               // < 0: report only
   bool SaveMasks = false;
@@ -39,6 +43,8 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[]);
 
 // Creates OUT (and OUT/masks with --save-masks); throws std::runtime_error when it cannot.
 void nprMakeBenchmarkFolders(const nprBenchmarkOptions& options);
+// Creates one folder (and its parents); throws std::runtime_error when it cannot.
+void nprMakeBenchmarkFolder(const std::string& path);
 
 // The sizes for the report: "1024x768, 1920x1080".
 std::string nprBenchmarkSizesLine(const nprBenchmarkOptions& options);

@@ -28,6 +28,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -87,6 +88,80 @@ std::vector<std::string> Distinct(const std::vector<nprBenchmarkRow>& rows, Fiel
 bool Sane(double value, double low, double high)
 {
   return std::isfinite(value) && value >= low && value <= high;
+}
+
+// A chart in a headless window, white, its legend beside the plot (where no point can hide
+// under it); the plots' tables live as long as it.
+struct Chart
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkNew<vtkContextView> View;
+  vtkNew<vtkChartXY> XY;
+  std::vector<vtkSmartPointer<vtkTable>> Tables;
+
+  vtkTable* AddTable(
+    const std::vector<double>& x, const std::vector<double>& y, const std::string& name)
+  {
+    vtkNew<vtkDoubleArray> xs, ys;
+    xs->SetName("x");
+    ys->SetName(name.c_str());
+    for (size_t i = 0; i < x.size(); ++i)
+    {
+      xs->InsertNextValue(x[i]);
+      ys->InsertNextValue(y[i]);
+    }
+    this->Tables.push_back(vtkSmartPointer<vtkTable>::New());
+    this->Tables.back()->AddColumn(xs);
+    this->Tables.back()->AddColumn(ys);
+    return this->Tables.back();
+  }
+
+  void Write(const std::string& path)
+  {
+    // Twice: the plots take a log scale only after the axes turned it on in a render.
+    this->Window->Render();
+    this->Window->Render();
+    nprWritePNG(nprReadWindowImage(this->Window, false), path); // the frame just rendered
+  }
+};
+
+std::unique_ptr<Chart> MakeChart(const std::string& path, const std::string& title,
+  const std::string& xTitle, const std::string& yTitle)
+{
+  auto chart = std::unique_ptr<Chart>(new Chart);
+  chart->Window =
+    vtkSmartPointer<vtkRenderWindow>::Take(vtkNPRRenderWindowFactory::CreateRenderWindow());
+  if (!chart->Window)
+  {
+    throw std::runtime_error(path + ": no render window for the plot");
+  }
+  chart->Window->SetSize(1200, 700);
+  chart->View->SetRenderWindow(chart->Window);
+  chart->View->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+  chart->View->GetScene()->AddItem(chart->XY);
+  chart->XY->SetTitle(title);
+  chart->XY->GetTitleProperties()->SetFontSize(16);
+  chart->XY->GetAxis(vtkAxis::BOTTOM)->SetTitle(xTitle);
+  chart->XY->GetAxis(vtkAxis::LEFT)->SetTitle(yTitle);
+  chart->XY->SetShowLegend(true);
+  chart->XY->GetLegend()->SetInline(false);
+  chart->XY->GetLegend()->SetVerticalAlignment(vtkChartLegend::CENTER);
+  chart->XY->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+  return chart;
+}
+
+// Distinct colours and shapes: a qualitative palette, markers cycling through five shapes.
+void StyleSeries(vtkPlotPoints* plot, size_t index)
+{
+  static const unsigned char palette[][3] = { { 228, 26, 28 }, { 55, 126, 184 }, { 77, 175, 74 },
+    { 152, 78, 163 }, { 255, 127, 0 }, { 166, 86, 40 }, { 247, 129, 191 }, { 0, 0, 0 },
+    { 23, 190, 207 }, { 0, 128, 128 }, { 31, 60, 120 }, { 120, 20, 60 } };
+  static const int shapes[] = { vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE,
+    vtkPlotPoints::DIAMOND, vtkPlotPoints::CROSS, vtkPlotPoints::PLUS };
+  const unsigned char* color = palette[index % (sizeof(palette) / sizeof(palette[0]))];
+  plot->SetColor(color[0], color[1], color[2], 255);
+  plot->SetMarkerStyle(shapes[index % (sizeof(shapes) / sizeof(shapes[0]))]);
+  plot->GetPen()->SetWidth(2.0);
 }
 }
 
@@ -293,75 +368,37 @@ std::vector<nprPlotPoint> nprParetoFront(const std::vector<nprPlotPoint>& points
 void nprWritePlot(const std::string& path, const std::vector<nprPlotPoint>& points,
   const std::string& title, const std::string& timeTitle)
 {
-  vtkSmartPointer<vtkRenderWindow> window =
-    vtkSmartPointer<vtkRenderWindow>::Take(vtkNPRRenderWindowFactory::CreateRenderWindow());
-  if (!window)
+  std::unique_ptr<Chart> chart = MakeChart(path, title, timeTitle, "mean F1 at 1 px");
+  auto table = [&](const std::vector<nprPlotPoint>& series, const std::string& name)
   {
-    throw std::runtime_error(path + ": no render window for the plot");
-  }
-  window->SetSize(1200, 700);
-  vtkNew<vtkContextView> view;
-  view->SetRenderWindow(window);
-  view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
-  vtkNew<vtkChartXY> chart;
-  view->GetScene()->AddItem(chart);
-  chart->SetTitle(title);
-  chart->GetTitleProperties()->SetFontSize(16);
-  chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(timeTitle);
-  chart->GetAxis(vtkAxis::LEFT)->SetTitle("mean F1 at 1 px");
-  chart->SetShowLegend(true);
-  // Beside the plot, where no point can hide under it.
-  chart->GetLegend()->SetInline(false);
-  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::CENTER);
-  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
-
-  auto table = [](const std::vector<nprPlotPoint>& series, const std::string& name)
-  {
-    vtkNew<vtkDoubleArray> x, y;
-    x->SetName("time");
-    y->SetName(name.c_str());
+    std::vector<double> x, y;
     for (const nprPlotPoint& point : series)
     {
-      x->InsertNextValue(point.Time);
-      y->InsertNextValue(point.F1);
+      x.push_back(point.Time);
+      y.push_back(point.F1);
     }
-    auto result = vtkSmartPointer<vtkTable>::New();
-    result->AddColumn(x);
-    result->AddColumn(y);
-    return result;
+    return chart->AddTable(x, y, name);
   };
 
   // The front first, so that the methods' markers are drawn over its rings.
   const std::vector<nprPlotPoint> front = nprParetoFront(points);
-  std::vector<vtkSmartPointer<vtkTable>> tables;
   if (!front.empty())
   {
-    tables.push_back(table(front, "Pareto front"));
     // A one-point front is a ring without a line.
     auto* line = vtkPlotPoints::SafeDownCast(
-      chart->AddPlot(front.size() > 1 ? vtkChart::LINE : vtkChart::POINTS));
-    line->SetInputData(tables.back(), 0, 1);
+      chart->XY->AddPlot(front.size() > 1 ? vtkChart::LINE : vtkChart::POINTS));
+    line->SetInputData(table(front, "Pareto front"), 0, 1);
     line->SetColor(0.55, 0.55, 0.55);
     line->SetWidth(2.0);
     line->SetMarkerStyle(vtkPlotPoints::CIRCLE);
     line->SetMarkerSize(20.0);
   }
-  // Distinct colours and shapes: a qualitative palette, markers cycling through five shapes.
-  static const unsigned char palette[][3] = { { 228, 26, 28 }, { 55, 126, 184 }, { 77, 175, 74 },
-    { 152, 78, 163 }, { 255, 127, 0 }, { 166, 86, 40 }, { 247, 129, 191 }, { 0, 0, 0 },
-    { 23, 190, 207 }, { 0, 128, 128 }, { 31, 60, 120 }, { 120, 20, 60 } };
-  static const int shapes[] = { vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE,
-    vtkPlotPoints::DIAMOND, vtkPlotPoints::CROSS, vtkPlotPoints::PLUS };
   for (size_t i = 0; i < points.size(); ++i)
   {
-    tables.push_back(table({ points[i] }, points[i].Name));
-    auto* plot = vtkPlotPoints::SafeDownCast(chart->AddPlot(vtkChart::POINTS));
-    plot->SetInputData(tables.back(), 0, 1);
-    const unsigned char* color = palette[i % (sizeof(palette) / sizeof(palette[0]))];
-    plot->SetColor(color[0], color[1], color[2], 255);
-    plot->SetMarkerStyle(shapes[i % (sizeof(shapes) / sizeof(shapes[0]))]);
+    auto* plot = vtkPlotPoints::SafeDownCast(chart->XY->AddPlot(vtkChart::POINTS));
+    plot->SetInputData(table({ points[i] }, points[i].Name), 0, 1);
+    StyleSeries(plot, i);
     plot->SetMarkerSize(11.0);
-    plot->GetPen()->SetWidth(2.0);
   }
   // Fixed ranges from zero time and up to F1 = 1, with room around the markers.
   double maxTime = 0.0, minF1 = 1.0;
@@ -370,14 +407,28 @@ void nprWritePlot(const std::string& path, const std::vector<nprPlotPoint>& poin
     maxTime = std::max(maxTime, point.Time);
     minF1 = std::min(minF1, point.F1);
   }
-  chart->GetAxis(vtkAxis::BOTTOM)->SetBehavior(vtkAxis::FIXED);
-  chart->GetAxis(vtkAxis::BOTTOM)->SetRange(0.0, maxTime > 0 ? 1.1 * maxTime : 1.0);
-  chart->GetAxis(vtkAxis::LEFT)->SetBehavior(vtkAxis::FIXED);
+  chart->XY->GetAxis(vtkAxis::BOTTOM)->SetBehavior(vtkAxis::FIXED);
+  chart->XY->GetAxis(vtkAxis::BOTTOM)->SetRange(0.0, maxTime > 0 ? 1.1 * maxTime : 1.0);
+  chart->XY->GetAxis(vtkAxis::LEFT)->SetBehavior(vtkAxis::FIXED);
   const double low = std::max(0.0, std::floor((minF1 - 0.05) * 20.0) / 20.0);
-  chart->GetAxis(vtkAxis::LEFT)->SetRange(low, 1.0 + 0.02 * (1.0 - low));
-  window->Render();
+  chart->XY->GetAxis(vtkAxis::LEFT)->SetRange(low, 1.0 + 0.02 * (1.0 - low));
+  chart->Write(path);
+}
 
-  nprWritePNG(nprReadWindowImage(window, false), path); // the frame just rendered
+void nprWriteSeriesPlot(const std::string& path, const std::vector<nprPlotSeries>& series,
+  const std::string& title, const std::string& xTitle, const std::string& yTitle, bool logScale)
+{
+  std::unique_ptr<Chart> chart = MakeChart(path, title, xTitle, yTitle);
+  for (size_t i = 0; i < series.size(); ++i)
+  {
+    auto* plot = vtkPlotPoints::SafeDownCast(chart->XY->AddPlot(vtkChart::LINE));
+    plot->SetInputData(chart->AddTable(series[i].X, series[i].Y, series[i].Name), 0, 1);
+    StyleSeries(plot, i);
+    plot->SetMarkerSize(9.0);
+  }
+  chart->XY->GetAxis(vtkAxis::BOTTOM)->SetLogScale(logScale);
+  chart->XY->GetAxis(vtkAxis::LEFT)->SetLogScale(logScale);
+  chart->Write(path);
 }
 
 void nprWriteStressCSV(const std::string& path, const std::vector<nprStressRow>& rows)

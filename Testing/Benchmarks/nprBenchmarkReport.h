@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 // SPDX-License-Identifier: BSD-3-Clause
 // What npr-benchmark writes: the rows of figures as CSV, the aggregated Markdown table and the
-// plot of run time against F1 (VTK charts, rendered headless).
+// plots (VTK charts, rendered headless).
 #ifndef nprBenchmarkReport_h
 #define nprBenchmarkReport_h
 
@@ -68,6 +68,17 @@ std::vector<nprPlotPoint> nprPlotPoints(
 // in a headless window and writes a PNG.
 void nprWritePlot(const std::string& path, const std::vector<nprPlotPoint>& points,
   const std::string& title, const std::string& timeTitle);
+
+// One line of a plot: its points, joined in order.
+struct nprPlotSeries
+{
+  std::string Name;
+  std::vector<double> X, Y;
+};
+// Draws each series as a line with markers (both axes logarithmic with logScale), as
+// nprWritePlot draws, and writes a PNG.
+void nprWriteSeriesPlot(const std::string& path, const std::vector<nprPlotSeries>& series,
+  const std::string& title, const std::string& xTitle, const std::string& yTitle, bool logScale);
 
 // ---- Stress mode ----
 struct nprStressRow

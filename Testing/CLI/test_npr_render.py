@@ -28,8 +28,9 @@ failures = []
 passes = []
 
 
-def run(*argv, program=None):
-    result = subprocess.run([program or args.npr_render, *argv], capture_output=True, text=True, timeout=300)
+def run(*argv, program=None, env=None):
+    result = subprocess.run([program or args.npr_render, *argv], capture_output=True, text=True, timeout=300,
+                            env=None if env is None else dict(os.environ, **env))
     return result.returncode, result.stdout, result.stderr
 
 
@@ -46,6 +47,23 @@ def out(name):
 rc, stdout, err = run("--version")
 check(rc == 0 and stdout == "npr-render %s\n" % args.expect_version,
       "--version prints 'npr-render %s' (got %r, %r)" % (args.expect_version, stdout, err))
+
+
+# Progress lines: with the threshold at 0 every step prints one on stderr (read with the triangle
+# count, normals, first frame, output); --quiet prints none, and a bad threshold is ignored.
+every_step = {"NPR_PROGRESS_SECONDS": "0"}
+rc, _, err = run(bunny, "--style", "edges", "--size", "160x120", "-o", out("progress.png"), env=every_step)
+lines = err.splitlines()
+expected = ["npr-render: read %s (75408 triangles): " % bunny, "npr-render: normals of %s: " % bunny,
+            "npr-render: first frame (edges): ", "npr-render: wrote %s: " % out("progress.png")]
+check(rc == 0 and len(lines) == 4 and all(line.startswith(start) and line.endswith(" s")
+                                          for line, start in zip(lines, expected)),
+      "progress: one line per step in order (got %r)" % lines)
+rc, _, err = run(bunny, "--style", "edges", "--size", "160x120", "-o", out("progress.png"), "--quiet",
+                 env=every_step)
+check(rc == 0 and err == "", "--quiet: no progress line (got %r)" % err)
+rc, _, err = run(bunny, "--size", "160x120", "-o", out("progress.png"), env={"NPR_PROGRESS_SECONDS": "x"})
+check(rc == 0 and "first frame" not in err, "a bad NPR_PROGRESS_SECONDS keeps the 1 s threshold (%r)" % err)
 
 
 # Camera round trip: the camera written is the camera used; rendering with it reproduces the

@@ -4,7 +4,9 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkCubeSource.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRModelReader.h"
@@ -197,6 +199,20 @@ void nprViewFromCorner(vtkCamera* camera, const double eye[3], bool parallel)
   camera->SetParallelProjection(parallel);
   camera->SetParallelScale(1.0);
   camera->SetClippingRange(1.0, 10.0);
+}
+
+bool nprSameCells(vtkCellArray* a, vtkCellArray* b)
+{
+  bool same = a->GetNumberOfCells() == b->GetNumberOfCells();
+  vtkNew<vtkIdList> idsA, idsB;
+  for (vtkIdType cell = 0; same && cell < a->GetNumberOfCells(); ++cell)
+  {
+    a->GetCellAtId(cell, idsA);
+    b->GetCellAtId(cell, idsB);
+    same = idsA->GetNumberOfIds() == idsB->GetNumberOfIds() &&
+      std::equal(idsA->begin(), idsA->end(), idsB->begin());
+  }
+  return same;
 }
 
 vtkSmartPointer<vtkNPRModelReader> nprReadTestModel(const std::string& model)

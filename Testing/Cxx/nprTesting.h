@@ -34,6 +34,7 @@
 class vtkActor;
 class vtkAlgorithmOutput;
 class vtkCamera;
+class vtkCellArray;
 class vtkImageData;
 class vtkNPRModelReader;
 class vtkRenderWindow;
@@ -78,6 +79,10 @@ void nprViewFromCorner(vtkCamera* camera, const double eye[3], bool parallel);
 
 // Testing/Data/<model> read by vtkNPRModelReader (updated); a failed check when it reports one.
 vtkSmartPointer<vtkNPRModelReader> nprReadTestModel(const std::string& model);
+
+// The same cells with the same point ids in the same order, whatever the storage (VTK 9.6's
+// readers and filters keep 32-bit ids where they fit, this project's cell arrays vtkIdType).
+bool nprSameCells(vtkCellArray* a, vtkCellArray* b);
 
 // The baseline scenes' view: the camera reset, then turned 30 degrees in azimuth and elevation.
 void nprTurnBaselineCamera(vtkRenderer* renderer);
