@@ -33,23 +33,30 @@
  * exact under any actor matrix. The angle between normals is not preserved by non-uniform
  * scaling or shear: creases are measured in the input's coordinates, not in the world's.
  *
- * Cost: the edge-adjacency table (each edge's faces, found by sorting the faces' edges by their
- * two point ids, in parallel with vtkSMPTools::Sort; coincident points likewise by their
- * coordinates) and the faces' unit normals (Newell's method, in double, relative to the
- * face's first point) are built once per mesh and reused while the input, its points and its
- * cells are unchanged (their modification times and identities). Changing the viewpoint, the
- * switches or FeatureAngle costs one linear pass over the faces and one over the edges (both
- * in parallel, vtkSMPTools), then the output's few edges. GetNumberOfAdjacencyBuilds() counts
- * the builds. (1.2M triangles: about 9 ms per camera on 2 cores, Documentation/benchmarks.md.)
+ * Cost: the edge-adjacency table (each edge's faces: the faces' uses of their edges bucketed by
+ * their smaller point, in parallel with vtkSMPTools; coincident points found by sorting a hash
+ * of their coordinates) and a single-precision copy of the faces' planes are built once per mesh
+ * and reused while the input, its points and its cells are unchanged (their modification times
+ * and identities). The input's points and cells are read where they are, never copied: the table
+ * holds about 33 bytes a triangle (GetAdjacencyMemorySize(); 16 bytes a face, 10 an edge, 4 a
+ * point where points were merged and 4 a face where the faces were renumbered), and its build
+ * peaks at about 60. Changing the viewpoint, the switches or FeatureAngle costs one linear pass
+ * over the faces and one over the edges (both in parallel, vtkSMPTools), then the output's few
+ * edges. GetNumberOfAdjacencyBuilds() counts the builds. (19.3M triangles on 2 cores: a build in
+ * about 4 s, a new camera in about 0.3 s; Documentation/drawing.md.)
  *
- * The side of each face's plane the eye is on is decided first from a single-precision copy of
- * the faces' planes made once per mesh (20 bytes a face), wherever the value is farther from
- * zero than a bound of its rounding error; only the edges of the faces it leaves undecided
- * (edge-on to within about 1e-6 of the scene's size, GetNumberOfUnsureFaces()) take the
- * double-precision test, which reads a normal and a point per face. The output is that of the
- * double-precision test alone, edge for edge. The faces are numbered for this pass in the Z
- * order of their first points, and the edges ordered by their first faces, so that an edge's
- * two faces are near each other in memory whatever the input's order.
+ * The side of each face's plane the eye is on is decided first from that single-precision copy
+ * (the unit normal, the offset from the mesh's centre and a power of two bounding the error),
+ * wherever the value is farther from zero than a bound of its rounding error; only the edges of
+ * the faces it leaves undecided (edge-on to within about 1e-6 of the scene's size,
+ * GetNumberOfUnsureFaces()) take the double-precision test, which computes the two faces'
+ * normals again from their points. The output is that of the double-precision test alone, edge
+ * for edge, and so are the creases: the angle from the single-precision normals decides where it
+ * is more than 1e-4 degrees from FeatureAngle, the exact one elsewhere. The faces keep the
+ * input's order where it is local (consecutive faces mostly near each other), else are numbered
+ * by the cell of their first point in a 32 x 32 x 32 grid over the mesh (the input's order
+ * within a cell), and the edges are ordered by their first faces, so that an edge's two faces
+ * are near each other in memory whatever the input's order.
  *
  * Points with exactly equal coordinates are one point for the adjacency when
  * MergeCoincidentPoints is on (the default): vtkPolyDataNormals with splitting duplicates the
@@ -111,10 +118,12 @@
 #include "vtkFiltersNPRModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <memory> // for std::unique_ptr
+#include <cstddef> // for size_t
+#include <memory>  // for std::unique_ptr
 
 class vtkCamera;
 class vtkMatrix4x4;
+class vtkNPRMeshAdjacency;
 
 class VTKFILTERSNPR_EXPORT vtkNPRFeatureLines : public vtkPolyDataAlgorithm
 {
@@ -249,6 +258,12 @@ public:
    */
   vtkIdType GetNumberOfSkippedContourTriangles() const;
 
+  /**
+   * Bytes the edge-adjacency table holds between updates (the input's own points and cells,
+   * which it reads in place, not counted): about 43 a triangle for a closed triangle mesh.
+   */
+  size_t GetAdjacencyMemorySize() const;
+
 protected:
   vtkNPRFeatureLines();
   ~vtkNPRFeatureLines() override;
@@ -272,8 +287,7 @@ private:
   vtkNPRFeatureLines(const vtkNPRFeatureLines&) = delete;
   void operator=(const vtkNPRFeatureLines&) = delete;
 
-  struct Adjacency;
-  std::unique_ptr<Adjacency> Internal;
+  std::unique_ptr<vtkNPRMeshAdjacency> Adjacency;
 };
 
 #endif

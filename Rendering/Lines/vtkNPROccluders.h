@@ -5,20 +5,16 @@
 #ifndef vtkNPROccluders_h
 #define vtkNPROccluders_h
 
-#include "vtkCellArray.h"         // for vtkNPRForEachTriangle
-#include "vtkCellArrayIterator.h" // for vtkNPRForEachTriangle
-#include "vtkPolyData.h"          // for vtkNPRForEachTriangle
-#include "vtkSmartPointer.h"      // for the groups
-#include "vtkType.h"              // for vtkIdType, vtkMTimeType
+#include "vtkNPRMeshFaces.h" // for the meshes' triangles
+#include "vtkType.h"         // for vtkIdType, vtkMTimeType
 
-#include <array>  // for the matrices
-#include <vector> // for the groups
+#include <array>   // for the matrices
+#include <cstddef> // for size_t
+#include <cstdint> // for the hierarchy
+#include <vector>  // for the hierarchy
 
 class vtkActor;
-class vtkIdList;
-class vtkIdTypeArray;
 class vtkPolyData;
-class vtkStaticCellLocator;
 
 // x' = M x for a point (w = 1), divided by the result's w.
 inline void vtkNPRTransformPoint(const double m[16], const double x[3], double out[3])
@@ -31,36 +27,6 @@ inline void vtkNPRTransformPoint(const double m[16], const double x[3], double o
   for (int r = 0; r < 3; ++r)
   {
     out[r] = h[r] / h[3];
-  }
-}
-
-// Calls add(a, b, c) with the point ids of each triangle of the mesh: its polygons as fans (as
-// the OpenGL mapper draws convex polygons), its strips' triangles in the strip's winding. The ids
-// are the cells' as they are: the caller checks their range.
-template <typename Add>
-void vtkNPRForEachTriangle(vtkPolyData* mesh, Add&& add)
-{
-  auto iterator = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    iterator->GetCurrentCell(size, ids);
-    for (vtkIdType k = 1; k + 1 < size; ++k)
-    {
-      add(ids[0], ids[k], ids[k + 1]);
-    }
-  }
-  iterator = vtk::TakeSmartPointer(mesh->GetStrips()->NewIterator());
-  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    iterator->GetCurrentCell(size, ids);
-    for (vtkIdType k = 0; k + 2 < size; ++k)
-    {
-      add(ids[k + (k & 1)], ids[k + 1 - (k & 1)], ids[k + 2]);
-    }
   }
 }
 
@@ -81,18 +47,21 @@ struct vtkNPRMeshInstance
 class vtkNPROccluders
 {
 public:
-  // Every triangle of the meshes, in world coordinates normalised to the scene (so that the
-  // tests keep their precision far from the origin and at any scale), in Morton-ordered groups
-  // of `trianglesPerLocator` triangles with a locator each.
-  void Build(const std::vector<vtkNPRMeshInstance>& actors, int trianglesPerLocator);
+  // Every triangle of the meshes (polygons as fans, strips' triangles), in world coordinates
+  // normalised to the scene (so that the tests keep their precision far from the origin and at
+  // any scale), in a bounding volume hierarchy over the triangles in Morton order of their
+  // centroids, split first at every `trianglesPerGroup` triangles (speed only). The meshes'
+  // points and cells are read where they are: keep them unchanged until the next Build(). At
+  // most 2^32 - 1 triangles and points in all (32-bit indices).
+  void Build(const std::vector<vtkNPRMeshInstance>& actors, int trianglesPerGroup);
 
   // Whether a triangle crosses the segment between two world points, ends and edges included.
-  // `candidates` is scratch space, reused between calls. The triangles with a corner at the
-  // coordinates of one of the `ignoredCount` scene points `ignored` do not count (a smooth
-  // contour's own triangle and its neighbours); a scene point's id is its mesh's id plus the
-  // points of the meshes before it in Build's list.
-  bool Hidden(const double from[3], const double to[3], vtkIdList* candidates,
-    const vtkIdType* ignored = nullptr, int ignoredCount = 0) const;
+  // The triangles with a corner at the coordinates of one of the `ignoredCount` scene points
+  // `ignored` do not count (a smooth contour's own triangle and its neighbours); a scene
+  // point's id is its mesh's id plus the points of the meshes before it in Build's list. Safe
+  // to call from several threads.
+  bool Hidden(const double from[3], const double to[3], const vtkIdType* ignored = nullptr,
+    int ignoredCount = 0) const;
 
   // Where two triangles that share no corner (by coordinates) cross each other: the segment
   // in world coordinates and the angle between their planes (degrees, 0 to 90). Computed on the
@@ -104,27 +73,64 @@ public:
   };
   const std::vector<Crossing>& GetCrossings();
 
+  // Bytes held: the hierarchy, the triangles' corners and the points in the frame (about 32 a
+  // triangle), and the meshes' tables (none for triangles with float or double points).
+  size_t GetMemorySize() const;
+
 private:
+  // A node of the hierarchy, in depth-first order (an inner node's first child follows it): its
+  // box in the frame, rounded outwards to float, and either its second child (Count 0) or its
+  // Count triangles from Index in the leaf order.
+  struct Node
+  {
+    float Low[3], High[3];
+    std::uint32_t Index;
+    std::uint32_t Count;
+  };
+  struct Mesh
+  {
+    vtkNPRMeshFaces Faces;
+    std::array<double, 16> Matrix;
+    vtkIdType FirstTriangle, FirstPoint; // in the scene's numbering
+  };
+  // Build steps.
+  void SetMeshes(const std::vector<vtkNPRMeshInstance>& actors);
+  std::vector<double> WorldPoints() const;
+  size_t SortTriangles(std::vector<double>& points);
+  void FindFrame(std::vector<double>& points, std::vector<std::uint64_t>& keys);
+  void GatherPoints(std::vector<double>& points);
+  std::uint32_t AddNodes(std::uint32_t first, std::uint32_t last, std::uint32_t group);
+  void BoundNodes();
+  // A mesh's point in the frame (as the build makes it); a scene triangle's corners as scene
+  // point ids, false where one names no point.
+  void FramePoint(const Mesh& mesh, vtkIdType id, double x[3]) const;
+  bool SceneTriangle(vtkIdType triangle, vtkIdType ids[3]) const;
+  std::uint64_t MortonCode(const double x[3]) const; // in the frame's box, 10 bits an axis
+  // The corners of the triangle at `position` in the leaf order.
+  void Corners(std::uint32_t position, const double* corners[3]) const
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      corners[k] = this->Points.data() + 3 * static_cast<size_t>(this->Triangles[3 * position + k]);
+    }
+  }
+  bool SegmentHitsNode(const Node& node, const double from[3], const double to[3]) const;
+  void CrossingsOf(std::uint32_t position, std::vector<Crossing>& found) const;
+
+  std::vector<Mesh> Meshes;
+  std::vector<vtkIdType> MeshFirstTriangles; // each mesh's first scene triangle
+  std::vector<Node> Nodes;
+  // The triangles in the leaf order, three indices into Points each; Points, the frame
+  // coordinates of the scene's finite points in their Morton order (so that a leaf's corners
+  // lie together in memory), as the frame's arithmetic makes them from the meshes.
+  std::vector<std::uint32_t> Triangles;
+  std::vector<double> Points;
   std::vector<Crossing> Crossings;
   bool CrossingsValid = false;
-  double FrameCenter[3] = { 0.0, 0.0, 0.0 }; // the locators' frame: (world - centre) x scale
+  double FrameCenter[3] = { 0.0, 0.0, 0.0 }; // the frame: (world - centre) x scale
   double FrameScale = 1.0;
-  std::vector<double> Points; // every scene point in that frame, for the ignored points
-  // vtkStaticCellLocator, not vtkCellLocator: VTK 9.1's vtkCellLocator::IntersectWithLine
-  // misses some triangles (rays through a cube's faces at 2 of 297 points in a test). The
-  // static locator clears a flag per cell on every ray (O(cells) per ray), hence the groups.
-  // Only its candidates along a ray are used (FindCellsAlongLine), not its IntersectWithLine:
-  // since VTK 9.2 that keeps a hit only within the given tolerance of the bin being walked, and
-  // with none it loses hits on faces that lie on a bin's side (a cube's) rounded just outside.
-  struct Group
-  {
-    vtkSmartPointer<vtkPolyData> Triangles;
-    vtkSmartPointer<vtkStaticCellLocator> Locator;
-    vtkSmartPointer<vtkIdTypeArray> Corners; // the triangles' point ids, 3 each
-    const double* Coordinates;               // Triangles' points, x y z each
-    double Bounds[6];
-  };
-  std::vector<Group> Groups;
+  double FrameLow[3] = { 0.0, 0.0, 0.0 }; // the kept triangles' box, in the frame
+  double FrameHigh[3] = { 0.0, 0.0, 0.0 };
 };
 
 #endif

@@ -4,7 +4,6 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkNPRFeatureLines.h"
 #include "vtkNPRSceneLines.h"
@@ -157,7 +156,6 @@ bool vtkNPRReferenceMask::Update()
   vtkNPRSceneView view;
   view.Set(this->Renderer->GetActiveCamera(), width, height);
 
-  vtkNew<vtkIdList> candidates;
   vtkNew<vtkPoints> visiblePoints;
   visiblePoints->SetDataTypeToDouble();
   vtkNew<vtkCellArray> visibleCells;
@@ -219,8 +217,7 @@ bool vtkNPRReferenceMask::Update()
       // A smooth contour lies inside a triangle, often a back-facing one just behind the front
       // faces next to it: the faces sharing a point with its triangle do not hide it.
       const bool smooth = (segment.Type & vtkNPRFeatureLines::SMOOTH_CONTOUR) != 0;
-      if (occluders.Hidden(
-            from, to, candidates, smooth ? segment.Triangle : nullptr, smooth ? 3 : 0))
+      if (occluders.Hidden(from, to, smooth ? segment.Triangle : nullptr, smooth ? 3 : 0))
       {
         endRun(segment.Type);
         continue;

@@ -14,12 +14,12 @@
  * - which parts of them are visible: each line segment is clipped to the view frustum (near
  *   and far planes, the image) in homogeneous coordinates and sampled in the image at most
  *   SampleSpacing pixels apart (at least its two ends). Each sample is tested by casting a
- *   segment through vtkStaticCellLocators of all the actors' triangles in world coordinates,
- *   from the near plane (towards the eye for a perspective camera, along the direction of
- *   projection for a parallel one: what lies before the near plane is clipped when rendering)
- *   to the sample, stopped short of the sample by OcclusionEpsilon times its length, so that
- *   the faces that contain the line do not hide it. A sample that nothing hides marks the
- *   pixel that contains it.
+ *   segment through a bounding volume hierarchy of all the actors' triangles in world
+ *   coordinates, from the near plane (towards the eye for a perspective camera, along the direction
+ * of projection for a parallel one: what lies before the near plane is clipped when rendering) to
+ * the sample, stopped short of the sample by OcclusionEpsilon times its length, so that the faces
+ * that contain the line do not hide it. A sample that nothing hides marks the pixel that contains
+ * it.
  *
  * The projection is the camera's composite projection matrix
  * (vtkCamera::GetCompositeProjectionTransformMatrix with the image's aspect ratio, near -1, far
@@ -187,11 +187,10 @@ public:
 
   ///@{
   /**
-   * The occlusion structure splits the triangles into groups of nearby ones (Morton order of
-   * their centroids) of at most this many (default 16384, at least 1), each with its own
-   * vtkStaticCellLocator; a ray tests only the groups whose box it crosses. This changes the
-   * speed, never the result: VTK 9.1's static locator clears a flag per cell of its data set on
-   * every ray, which dominates with one locator for a million triangles.
+   * The occlusion structure, a bounding volume hierarchy over the triangles in Morton order of
+   * their centroids, splits them first into groups of at most this many (default 16384, at
+   * least 1), each a subtree, then halves each group down to leaves of at most 8. This changes
+   * the shape of the tree, never the result.
    */
   vtkSetClampMacro(TrianglesPerLocator, int, 1, VTK_INT_MAX);
   vtkGetMacro(TrianglesPerLocator, int);

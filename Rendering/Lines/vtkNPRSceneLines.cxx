@@ -170,6 +170,16 @@ vtkIdType vtkNPRSceneLines::GetNumberOfAdjacencyBuilds() const
   return builds;
 }
 
+size_t vtkNPRSceneLines::GetMemorySize() const
+{
+  size_t bytes = this->Occluders.GetMemorySize() + sizeof(Segment) * this->Segments.capacity();
+  for (const auto& entry : this->Lines)
+  {
+    bytes += entry.second.Lines ? entry.second.Lines->GetAdjacencyMemorySize() : 0;
+  }
+  return bytes;
+}
+
 void vtkNPRSceneLines::Update(
   vtkRenderer* renderer, const Settings& settings, int trianglesPerLocator)
 {

@@ -12,6 +12,7 @@
 #include "vtkSmartPointer.h" // for the actors' lines
 #include "vtkWeakPointer.h"  // for the actors' lines
 
+#include <cstddef> // for size_t
 #include <map>     // for the actors' lines
 #include <utility> // for std::pair
 #include <vector>  // for the segments
@@ -88,6 +89,8 @@ public:
   vtkIdType GetNumberOfLocatorBuilds() const { return this->LocatorBuilds; }
   vtkIdType GetNumberOfAdjacencyBuilds() const;
   double GetLinesTime() const { return this->LinesTime; }
+  // Bytes held between updates: each mesh's edge table, the occlusion structure, the segments.
+  size_t GetMemorySize() const;
   double GetLocatorTime() const { return this->LocatorTime; }
 
 private:
