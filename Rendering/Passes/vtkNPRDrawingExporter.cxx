@@ -15,6 +15,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
+#include "vtkSmartPointer.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <cairo-pdf.h>
@@ -194,7 +195,8 @@ void PaintRaster(cairo_t* cr, vtkImageData* raster, int width, int height)
 
 struct vtkNPRDrawingExporter::Internals
 {
-  vtkNew<vtkNPRDrawingLines> Lines;
+  vtkNew<vtkNPRDrawingLines> OwnLines;       // when there is no drawing pass
+  vtkSmartPointer<vtkNPRDrawingLines> Lines; // those of the last Write()
   std::string ErrorMessage;
   vtkNPRStrokeCounts Counts{};
   bool Labelled = false;
@@ -211,6 +213,7 @@ vtkCxxSetObjectMacro(vtkNPRDrawingExporter, EdgePass, vtkNPREdgePass);
 vtkNPRDrawingExporter::vtkNPRDrawingExporter()
   : Internal(new Internals)
 {
+  this->Internal->Lines = this->Internal->OwnLines;
 }
 
 vtkNPRDrawingExporter::~vtkNPRDrawingExporter()
@@ -317,6 +320,7 @@ struct vtkNPRDrawingExporter::Target
   vtkRenderer* Renderer = nullptr;
   int Width = 0, Height = 0;
   vtkNPREdgePass* Edges = nullptr;
+  vtkNPRDrawingLines* Lines = nullptr; // the drawing pass's, else the exporter's own
   vtkNPRStrokeStyle Style;
   bool DrawingStyle = false; // the renderer's vtkNPRPass draws the drawing style
 };
@@ -429,13 +433,16 @@ void vtkNPRDrawingExporter::ResolveStyle(Target& target)
   target.DrawingStyle =
     npr && std::strcmp(vtkNPRPass::GetStyleName(npr->GetStyle()), "drawing") == 0;
   target.Style = vtkNPRMakeStrokeStyle(drawing, target.Edges, target.Renderer);
+  // The drawing pass's lines keep the edge table and occluders it built for its frames: on a
+  // large model, building them again would double the time and the memory of the export.
+  target.Lines = drawing ? drawing->GetDrawingLines() : this->Internal->OwnLines.Get();
 }
 
 bool vtkNPRDrawingExporter::ComputeStrokes(const Target& target)
 {
   const Clock::time_point start = Clock::now();
   const vtkNPRStrokeStyle& style = target.Style;
-  vtkNPRDrawingLines* lines = this->Internal->Lines;
+  vtkNPRDrawingLines* lines = this->Internal->Lines = target.Lines;
   lines->SetRenderer(target.Renderer);
   lines->SetSize(target.Width, target.Height);
   lines->SetSilhouettes(style.Silhouettes);
@@ -447,7 +454,13 @@ bool vtkNPRDrawingExporter::ComputeStrokes(const Target& target)
     lines->SetCreaseAngle(target.Edges->GetCreaseAngle());
   }
   lines->SetHiddenLines(style.HiddenLines);
-  if (!lines->Update())
+  const bool updated = lines->Update();
+  if (lines != this->Internal->OwnLines.Get())
+  {
+    // A pass held by the renderer must not hold the renderer (a cycle, hence a leak).
+    lines->SetRenderer(nullptr);
+  }
+  if (!updated)
   {
     return this->Fail(vtkErrorCode::UnknownError, "cannot compute the strokes");
   }

@@ -4,8 +4,10 @@
  * @class   vtkNPRDrawingExporter
  * @brief   Writes a renderer's lines as a vector drawing: SVG, PDF, PostScript or EPS.
  *
- * Write() computes the strokes of the renderer's scene with its own vtkNPRDrawingLines (visible
- * lines, and hidden ones when the style asks for them) and paints them with Cairo, the same
+ * Write() computes the strokes of the renderer's scene (visible lines, and hidden ones when the
+ * style asks for them) with the drawing pass's vtkNPRDrawingLines, so that the edge table and
+ * occluders its frames built are used again, or with its own when there is no drawing pass (no
+ * vtkNPRPass and none given with SetDrawingPass()), and paints them with Cairo, the same
  * painting as the drawing style's (vtkNPRStrokePainter): one path a stroke, round caps and joins,
  * hidden strokes dashed under the visible ones.
  *
@@ -138,8 +140,9 @@ public:
   ///@}
 
   /**
-   * The vtkNPRDrawingLines that computes the strokes (its strokes of the last Write(): the
-   * renderer, size, line types, crease angle and hidden lines are set by Write()).
+   * The vtkNPRDrawingLines that computed the strokes of the last Write() (the drawing pass's,
+   * else the exporter's own; the size, line types, crease angle and hidden lines are set by
+   * Write(), and the drawing pass's lines are given back their renderer-free state after it).
    */
   vtkNPRDrawingLines* GetDrawingLines();
 

@@ -8,6 +8,8 @@
 //   errors        unknown extension, missing folder, a folder as the file, no renderer: false,
 //                 the error code and a message; no file left
 //   empty         an empty scene: a valid empty drawing in every format
+//   drawing-style the renderer in the drawing style: the export uses the pass's lines (no second
+//                 edge table or occluders) and writes the same SVG as a new drawing pass's lines
 // Programs: RSVG_CONVERT and PDFTOPPM (compile definitions; the accuracy cases need them).
 #include "nprEdgeMetrics.h"
 #include "nprTesting.h"
@@ -25,6 +27,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -322,10 +325,58 @@ int Empty()
 }
 }
 
+// In the drawing style the exporter takes the pass's vtkNPRDrawingLines, whose edge table and
+// occluders the frame built: no second build (twice the time and memory on a large model), the
+// renderer not held after (a cycle), and the same file as lines built from nothing.
+int DrawingStyle()
+{
+  CadScene scene;
+  scene.Pass->SetStyleToDrawing();
+  scene.Pass->GetDrawingPass()->HiddenLinesOn();
+  scene.Window->Render();
+  vtkNPRDrawingLines* passLines = scene.Pass->GetDrawingPass()->GetDrawingLines();
+  NPR_CHECK(passLines->GetNumberOfLocatorBuilds() == 1,
+    "locator builds after the frame: " << passLines->GetNumberOfLocatorBuilds());
+  const int before = scene.Renderer->GetReferenceCount();
+
+  vtkNew<vtkNPRDrawingExporter> exporter;
+  exporter->SetRenderer(scene.Renderer);
+  const std::string path = OutputPath("drawing_cad_style.svg");
+  exporter->SetFileName(path.c_str());
+  NPR_CHECK(exporter->Write(), "write: " << exporter->GetErrorMessage());
+  NPR_CHECK(exporter->GetDrawingLines() == passLines, "the exporter built lines of its own");
+  NPR_CHECK(passLines->GetNumberOfLocatorBuilds() == 1,
+    "locator builds after the export: " << passLines->GetNumberOfLocatorBuilds());
+  NPR_CHECK(!passLines->GetRenderer() && scene.Renderer->GetReferenceCount() == before + 1,
+    "the pass's lines keep the renderer (references "
+      << before << " -> " << scene.Renderer->GetReferenceCount() << ")");
+  NPR_CHECK(exporter->GetNumberOfStrokes(0) > 0 && !exporter->GetImageEmbedded(),
+    "hidden strokes " << exporter->GetNumberOfStrokes(0) << ", raster "
+                      << exporter->GetImageEmbedded());
+
+  // The same settings on a drawing pass of its own: its lines are built from nothing.
+  vtkNew<vtkNPRDrawingPass> fresh;
+  fresh->HiddenLinesOn();
+  vtkNew<vtkNPRDrawingExporter> reference;
+  reference->SetRenderer(scene.Renderer);
+  reference->SetDrawingPass(fresh);
+  const std::string referencePath = OutputPath("drawing_cad_style_reference.svg");
+  reference->SetFileName(referencePath.c_str());
+  NPR_CHECK(reference->Write(), "write: " << reference->GetErrorMessage());
+  NPR_CHECK(reference->GetDrawingLines() == fresh->GetDrawingLines(), "not the given pass's lines");
+  // Cairo numbers its surfaces in the process: the files are compared without those numbers.
+  const std::regex surface("surface[0-9]+");
+  NPR_CHECK(std::regex_replace(ReadFile(path), surface, "surface") ==
+      std::regex_replace(ReadFile(referencePath), surface, "surface"),
+    path << " and " << referencePath << " differ (" << exporter->GetNumberOfStrokes() << " and "
+         << reference->GetNumberOfStrokes() << " strokes)");
+  return nprTestResult();
+}
+
 int main(int argc, char* argv[])
 {
   return nprRunTestCase(argc, argv,
     { { "svg-accuracy", [] { return Accuracy(false); } },
       { "pdf-accuracy", [] { return Accuracy(true); } }, { "svg-structure", SvgStructure },
-      { "errors", Errors }, { "empty", Empty } });
+      { "errors", Errors }, { "empty", Empty }, { "drawing-style", DrawingStyle } });
 }
