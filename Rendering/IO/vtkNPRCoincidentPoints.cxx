@@ -5,15 +5,19 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNPRIdBuffer.h"
+#include "vtkNPRPointCoordinates.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -48,7 +52,7 @@ uint64_t HashCoordinates(const Coordinates& p)
 std::vector<vtkIdType> FindRepresentatives(vtkPoints* points)
 {
   const vtkIdType count = points->GetNumberOfPoints();
-  vtkDataArray* data = points->GetData();
+  const vtkNPRPointCoordinates data(points->GetData());
   std::vector<std::pair<uint64_t, vtkIdType>> keys(static_cast<size_t>(count));
   vtkSMPTools::For(0, count,
     [&](vtkIdType begin, vtkIdType end)
@@ -56,7 +60,7 @@ std::vector<vtkIdType> FindRepresentatives(vtkPoints* points)
       Coordinates p;
       for (vtkIdType i = begin; i < end; ++i)
       {
-        data->GetTuple(i, p.data());
+        data.Get(i, p.data());
         keys[static_cast<size_t>(i)] = { HashCoordinates(p), i };
       }
     });
@@ -76,7 +80,7 @@ std::vector<vtkIdType> FindRepresentatives(vtkPoints* points)
     {
       const vtkIdType id = keys[k].second;
       Coordinates p;
-      data->GetTuple(id, p.data());
+      data.Get(id, p.data());
       auto group = groups.begin();
       while (group != groups.end() &&
         !(group->first[0] == p[0] && group->first[1] == p[1] && group->first[2] == p[2]))
@@ -237,9 +241,34 @@ vtkSmartPointer<vtkIdList> Sequence(size_t count)
   return list;
 }
 
+// to[i] = from[firstUse[i]] for xyz tuples of one plain array type, on every core.
+template <typename ArrayT>
+bool GatherCoordinates(
+  vtkDataArray* fromArray, vtkDataArray* toArray, const std::vector<vtkIdType>& firstUse)
+{
+  ArrayT* from = ArrayT::FastDownCast(fromArray);
+  ArrayT* to = ArrayT::FastDownCast(toArray);
+  if (!from || !to || from->GetNumberOfComponents() != 3 || firstUse.empty())
+  {
+    return false;
+  }
+  const auto* source = from->GetPointer(0);
+  auto* target = to->GetPointer(0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(firstUse.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        std::copy_n(source + 3 * firstUse[static_cast<size_t>(i)], 3, target + 3 * i);
+      }
+    });
+  return true;
+}
+
 // The merged points: coordinates and point data of each one's first use. The coordinates are
-// gathered on every core; id lists (a copy of firstUse and a sequence, 128 MB at 16M triangles)
-// are made only for point data, which a scan's file seldom has.
+// gathered on every core (float and double arrays without a virtual call a point); id lists (a
+// copy of firstUse and a sequence, 128 MB at 16M triangles) are made only for point data, which a
+// scan's file seldom has.
 void WritePoints(vtkPolyData* input, const std::vector<vtkIdType>& firstUse, vtkPolyData* output)
 {
   const vtkIdType count = static_cast<vtkIdType>(firstUse.size());
@@ -248,16 +277,20 @@ void WritePoints(vtkPolyData* input, const std::vector<vtkIdType>& firstUse, vtk
   points->SetDataType(input->GetPoints()->GetDataType());
   points->SetNumberOfPoints(count);
   vtkDataArray* to = points->GetData();
-  vtkSMPTools::For(0, count,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      double p[3];
-      for (vtkIdType i = begin; i < end; ++i)
+  if (!GatherCoordinates<vtkFloatArray>(from, to, firstUse) &&
+    !GatherCoordinates<vtkDoubleArray>(from, to, firstUse))
+  {
+    vtkSMPTools::For(0, count,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        from->GetTuple(firstUse[static_cast<size_t>(i)], p);
-        to->SetTuple(i, p);
-      }
-    });
+        double p[3];
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          from->GetTuple(firstUse[static_cast<size_t>(i)], p);
+          to->SetTuple(i, p);
+        }
+      });
+  }
   output->SetPoints(points);
   if (input->GetPointData()->GetNumberOfArrays() > 0)
   {

@@ -17,6 +17,7 @@
 #include "vtkNPRGLTFChecks.h"
 #include "vtkNPRModelFormatChecks.h"
 #include "vtkNPROFFReader.h"
+#include "vtkNPRPointCoordinates.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
@@ -225,14 +226,14 @@ std::vector<vtkIdType> NumberFinitePoints(vtkPoints* points, vtkIdType& finitePo
 {
   const vtkIdType count = points->GetNumberOfPoints();
   std::vector<unsigned char> finite(static_cast<size_t>(count));
-  vtkDataArray* data = points->GetData();
+  const vtkNPRPointCoordinates data(points->GetData());
   vtkSMPTools::For(0, count,
     [&](vtkIdType begin, vtkIdType end)
     {
       double p[3];
       for (vtkIdType i = begin; i < end; ++i)
       {
-        data->GetTuple(i, p);
+        data.Get(i, p);
         finite[static_cast<size_t>(i)] =
           std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
       }
@@ -305,7 +306,7 @@ int CountFlatAxes(vtkPolyData* mesh)
   using Bounds = std::array<double, 6>;
   vtkSMPThreadLocal<Bounds> local(Bounds{ VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX,
     -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX });
-  vtkDataArray* data = mesh->GetPoints()->GetData();
+  const vtkNPRPointCoordinates data(mesh->GetPoints()->GetData());
   vtkSMPTools::For(0, mesh->GetNumberOfPoints(),
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -315,7 +316,7 @@ int CountFlatAxes(vtkPolyData* mesh)
       {
         if (used[static_cast<size_t>(i)])
         {
-          data->GetTuple(i, p);
+          data.Get(i, p);
           for (int axis = 0; axis < 3; ++axis)
           {
             bounds[2 * axis] = std::min(bounds[2 * axis], p[axis]);

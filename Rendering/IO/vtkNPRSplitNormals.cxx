@@ -9,6 +9,7 @@
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMath.h"
+#include "vtkNPRPointCoordinates.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -16,6 +17,7 @@
 #include "vtkPolygon.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkTriangle.h"
 
 #include <algorithm>
 #include <array>
@@ -106,18 +108,31 @@ struct PointFaces
 };
 
 // Each face's unit normal (vtkPolygon::ComputeNormal, kept as float as vtkPolyDataNormals keeps
-// it), on every core.
+// it), on every core. A triangle takes vtkPolygon's own shortcut, vtkTriangle::ComputeNormal, with
+// the coordinates read without a virtual call: the same doubles, so the same normal.
 std::vector<float> FaceNormals(vtkPoints* points, const Polygons& polygons)
 {
   std::vector<float> normals(3 * static_cast<size_t>(polygons.Count));
+  const vtkNPRPointCoordinates coordinates(points->GetData());
   vtkSMPTools::For(0, polygons.Count,
     [&](vtkIdType begin, vtkIdType end)
     {
-      double n[3];
+      double n[3], corners[3][3];
       for (vtkIdType face = begin; face < end; ++face)
       {
-        vtkPolygon::ComputeNormal(
-          points, static_cast<int>(polygons.Size(face)), polygons.Points(face), n);
+        const vtkIdType size = polygons.Size(face);
+        const vtkIdType* ids = polygons.Points(face);
+        if (size == 3)
+        {
+          coordinates.Get(ids[0], corners[0]);
+          coordinates.Get(ids[1], corners[1]);
+          coordinates.Get(ids[2], corners[2]);
+          vtkTriangle::ComputeNormal(corners[0], corners[1], corners[2], n);
+        }
+        else
+        {
+          vtkPolygon::ComputeNormal(points, static_cast<int>(size), ids, n);
+        }
         for (int c = 0; c < 3; ++c)
         {
           normals[3 * static_cast<size_t>(face) + c] = static_cast<float>(n[c]);

@@ -12,6 +12,7 @@
 #include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIntArray.h"
@@ -23,6 +24,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
+#include "vtkSOADataArrayTemplate.h"
 #include "vtkSphereSource.h"
 #include "vtkStripper.h"
 #include "vtkTriangleFilter.h"
@@ -367,10 +369,32 @@ vtkSmartPointer<vtkPolyData> CreasedFan()
   return fan;
 }
 
+// The mesh with its coordinates in another array: double, or float in a struct-of-arrays layout,
+// which the merge and the normals read through vtkDataArray rather than directly.
+vtkSmartPointer<vtkPolyData> WithCoordinates(vtkPolyData* mesh, vtkDataArray* array)
+{
+  array->SetNumberOfComponents(3);
+  array->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    array->SetTuple(i, mesh->GetPoint(i));
+  }
+  vtkNew<vtkPoints> points;
+  points->SetData(array);
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(mesh);
+  copy->SetPoints(points);
+  return copy;
+}
+
 int MatchesClean()
 {
   CheckMatchesClean("a fan of 600 regions", CreasedFan());
   CheckMatchesClean("every merge rule", EveryMergeRule());
+  CheckMatchesClean("every merge rule, double coordinates",
+    WithCoordinates(EveryMergeRule(), vtkNew<vtkDoubleArray>()));
+  CheckMatchesClean("every merge rule, struct-of-arrays coordinates",
+    WithCoordinates(EveryMergeRule(), vtkNew<vtkSOADataArrayTemplate<float>>()));
   CheckFirstUseData(EveryMergeRule());
   vtkNew<vtkStripper> strips; // strips: vtkPolyDataNormals' path
   strips->SetInputData(Sphere());
