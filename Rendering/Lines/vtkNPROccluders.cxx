@@ -176,6 +176,42 @@ bool CrossTriangles(
   angle = vtkMath::DegreesFromRadians(std::acos(std::min(1.0, std::abs(vtkMath::Dot(na, nb)))));
   return true;
 }
+
+// Depth first through the hierarchy: the nodes `enter` accepts, and `visit` for each triangle
+// position of a leaf entered. Stops, returning true, as soon as `visit` returns true.
+template <typename NodeT, typename Enter, typename Visit>
+bool Traverse(const std::vector<NodeT>& nodes, Enter&& enter, Visit&& visit)
+{
+  std::uint32_t stack[64];
+  int depth = 0;
+  if (!nodes.empty())
+  {
+    stack[depth++] = 0;
+  }
+  while (depth > 0)
+  {
+    const std::uint32_t n = stack[--depth];
+    const NodeT& node = nodes[n];
+    if (!enter(node))
+    {
+      continue;
+    }
+    if (node.Count == 0)
+    {
+      stack[depth++] = node.Index;
+      stack[depth++] = n + 1;
+      continue;
+    }
+    for (std::uint32_t i = 0; i < node.Count; ++i)
+    {
+      if (visit(node.Index + i))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
 }
 
 void vtkNPROccluders::Build(const std::vector<vtkNPRMeshInstance>& actors, int trianglesPerGroup)
@@ -585,38 +621,15 @@ bool vtkNPROccluders::Hidden(const double fromWorld[3], const double toWorld[3],
     to[k] = (toWorld[k] - this->FrameCenter[k]) * this->FrameScale;
     direction[k] = to[k] - from[k];
   }
-  std::uint32_t stack[64];
-  int depth = 0;
-  if (!this->Nodes.empty())
-  {
-    stack[depth++] = 0;
-  }
-  while (depth > 0)
-  {
-    const std::uint32_t n = stack[--depth];
-    const Node& node = this->Nodes[n];
-    if (!this->SegmentHitsNode(node, from, to))
-    {
-      continue;
-    }
-    if (node.Count == 0)
-    {
-      stack[depth++] = node.Index;
-      stack[depth++] = n + 1;
-      continue;
-    }
-    for (std::uint32_t i = 0; i < node.Count; ++i)
+  return Traverse(
+    this->Nodes, [&](const Node& node) { return this->SegmentHitsNode(node, from, to); },
+    [&](std::uint32_t position)
     {
       const double* c[3];
-      this->Corners(node.Index + i, c);
-      if (SegmentMeetsTriangle(from, direction, c[0], c[1], c[2]) &&
-        !(ignoring && (isIgnored(c[0]) || isIgnored(c[1]) || isIgnored(c[2]))))
-      {
-        return true;
-      }
-    }
-  }
-  return false;
+      this->Corners(position, c);
+      return SegmentMeetsTriangle(from, direction, c[0], c[1], c[2]) &&
+        !(ignoring && (isIgnored(c[0]) || isIgnored(c[1]) || isIgnored(c[2])));
+    });
 }
 
 const std::vector<vtkNPROccluders::Crossing>& vtkNPROccluders::GetCrossings()
@@ -662,36 +675,24 @@ void vtkNPROccluders::CrossingsOf(std::uint32_t position, std::vector<Crossing>&
     box[2 * k] = std::min({ a[0][k], a[1][k], a[2][k] }) - 1e-12;
     box[2 * k + 1] = std::max({ a[0][k], a[1][k], a[2][k] }) + 1e-12;
   }
-  std::uint32_t stack[64];
-  int depth = 0;
-  stack[depth++] = 0;
-  while (depth > 0)
+  auto overlaps = [&](const Node& node)
   {
-    const std::uint32_t n = stack[--depth];
-    const Node& node = this->Nodes[n];
     bool overlap = true;
     for (int k = 0; k < 3; ++k)
     {
       overlap = overlap && box[2 * k] <= node.High[k] && box[2 * k + 1] >= node.Low[k];
     }
-    if (!overlap)
+    return overlap;
+  };
+  Traverse(this->Nodes, overlaps,
+    [&](std::uint32_t other)
     {
-      continue;
-    }
-    if (node.Count == 0)
-    {
-      stack[depth++] = node.Index;
-      stack[depth++] = n + 1;
-      continue;
-    }
-    for (std::uint32_t i = 0; i < node.Count; ++i)
-    {
-      if (node.Index + i <= position)
+      if (other <= position)
       {
-        continue;
+        return false;
       }
       const double* b[3];
-      this->Corners(node.Index + i, b);
+      this->Corners(other, b);
       // Neighbours (a corner at the same coordinates) meet along their shared edge or point.
       bool neighbours = false;
       for (int u = 0; u < 3 && !neighbours; ++u)
@@ -712,6 +713,6 @@ void vtkNPROccluders::CrossingsOf(std::uint32_t position, std::vector<Crossing>&
         }
         found.push_back(crossing);
       }
-    }
-  }
+      return false; // on through every overlapping leaf
+    });
 }
