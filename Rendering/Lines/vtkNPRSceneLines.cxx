@@ -32,6 +32,57 @@ double Seconds(Clock::time_point start)
 {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
+
+// The actors as they are drawn: visible, opaque, polygonal through a vtkPolyDataMapper; each
+// polygonal leaf of a composite input (ParaView's representations, vtkCompositePolyDataMapper2)
+// is a mesh of its actor.
+std::vector<vtkNPRMeshInstance> DrawnMeshes(vtkRenderer* renderer)
+{
+  std::vector<vtkNPRMeshInstance> actors;
+  vtkActorCollection* collection = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  collection->InitTraversal(it);
+  while (vtkActor* actor = collection->GetNextActor(it))
+  {
+    auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+    if (!actor->GetVisibility() || !mapper)
+    {
+      continue;
+    }
+    if (vtkAlgorithm* producer = mapper->GetInputAlgorithm())
+    {
+      producer->Update(mapper->GetInputConnection(0, 0)->GetIndex());
+    }
+    if (!actor->HasOpaqueGeometry())
+    {
+      continue;
+    }
+    vtkNPRMeshInstance state{ actor, nullptr, 0, {} };
+    vtkMatrix4x4* matrix = actor->GetMatrix();
+    std::copy_n(&matrix->Element[0][0], 16, state.Matrix.data());
+    vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+    if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+    {
+      auto iterator = vtk::TakeSmartPointer(composite->NewIterator());
+      for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
+      {
+        if (auto* leaf = vtkPolyData::SafeDownCast(iterator->GetCurrentDataObject()))
+        {
+          state.Mesh = leaf;
+          state.MeshTime = leaf->GetMTime();
+          actors.push_back(state);
+        }
+      }
+    }
+    else if (auto* mesh = vtkPolyData::SafeDownCast(input))
+    {
+      state.Mesh = mesh;
+      state.MeshTime = mesh->GetMTime();
+      actors.push_back(state);
+    }
+  }
+  return actors;
+}
 }
 
 bool vtkNPRImageSize(vtkRenderer* renderer, const int size[2], int& width, int& height)
@@ -183,56 +234,19 @@ size_t vtkNPRSceneLines::GetMemorySize() const
 void vtkNPRSceneLines::Update(
   vtkRenderer* renderer, const Settings& settings, int trianglesPerLocator)
 {
-  // The actors as they are drawn: visible, opaque, polygonal through a vtkPolyDataMapper.
-  vtkCamera* camera = renderer->GetActiveCamera();
-  std::vector<vtkNPRMeshInstance> actors;
-  vtkActorCollection* collection = renderer->GetActors();
-  vtkCollectionSimpleIterator it;
-  collection->InitTraversal(it);
-  while (vtkActor* actor = collection->GetNextActor(it))
-  {
-    auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
-    if (!actor->GetVisibility() || !mapper)
-    {
-      continue;
-    }
-    if (vtkAlgorithm* producer = mapper->GetInputAlgorithm())
-    {
-      producer->Update(mapper->GetInputConnection(0, 0)->GetIndex());
-    }
-    if (!actor->HasOpaqueGeometry())
-    {
-      continue;
-    }
-    vtkNPRMeshInstance state{ actor, nullptr, 0, {} };
-    vtkMatrix4x4* matrix = actor->GetMatrix();
-    std::copy_n(&matrix->Element[0][0], 16, state.Matrix.data());
-    // A composite input (ParaView's representations, vtkCompositePolyDataMapper2): each
-    // polygonal leaf is a mesh of the actor.
-    vtkDataObject* input = mapper->GetInputDataObject(0, 0);
-    if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
-    {
-      auto iterator = vtk::TakeSmartPointer(composite->NewIterator());
-      for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
-      {
-        if (auto* leaf = vtkPolyData::SafeDownCast(iterator->GetCurrentDataObject()))
-        {
-          state.Mesh = leaf;
-          state.MeshTime = leaf->GetMTime();
-          actors.push_back(state);
-        }
-      }
-    }
-    else if (auto* mesh = vtkPolyData::SafeDownCast(input))
-    {
-      state.Mesh = mesh;
-      state.MeshTime = mesh->GetMTime();
-      actors.push_back(state);
-    }
-  }
-
-  // Feature lines of each actor, in world coordinates.
+  const std::vector<vtkNPRMeshInstance> actors = DrawnMeshes(renderer);
   Clock::time_point start = Clock::now();
+  const vtkIdType nodes = this->UpdateLines(actors, renderer->GetActiveCamera(), settings);
+  this->LinesTime = Seconds(start);
+  start = Clock::now();
+  this->UpdateOccluders(actors, settings, trianglesPerLocator, nodes);
+  this->LocatorTime = Seconds(start);
+}
+
+vtkIdType vtkNPRSceneLines::UpdateLines(
+  const std::vector<vtkNPRMeshInstance>& actors, vtkCamera* camera, const Settings& settings)
+{
+  // Feature lines of each actor, in world coordinates.
   this->Segments.clear();
   std::map<MeshKey, LinesEntry> used;
   vtkIdType nodeOffset = 0;
@@ -259,42 +273,49 @@ void vtkNPRSceneLines::Update(
     lines->SetFeatureAngle(settings.CreaseAngle);
     lines->SetSmoothContours(settings.SmoothContours);
     lines->Update();
-    vtkPolyData* output = lines->GetOutput();
-    auto* types =
-      vtkUnsignedCharArray::SafeDownCast(output->GetCellData()->GetArray("FeatureType"));
-    auto* triangles =
-      vtkIdTypeArray::SafeDownCast(output->GetCellData()->GetArray("ContourTriangle"));
-    auto iterator = vtk::TakeSmartPointer(output->GetLines()->NewIterator());
-    vtkIdType cell = 0;
-    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal();
-         iterator->GoToNextCell(), ++cell)
-    {
-      vtkIdType size;
-      const vtkIdType* ids;
-      iterator->GetCurrentCell(size, ids);
-      Segment segment;
-      double a[3], b[3];
-      output->GetPoint(ids[0], a);
-      output->GetPoint(ids[1], b);
-      vtkNPRTransformPoint(state.Matrix.data(), a, segment.A);
-      vtkNPRTransformPoint(state.Matrix.data(), b, segment.B);
-      segment.Type = types ? types->GetValue(cell) : 0;
-      segment.NodeA = nodeOffset + ids[0];
-      segment.NodeB = nodeOffset + ids[1];
-      for (int k = 0; k < 3; ++k)
-      {
-        const vtkIdType corner = triangles ? triangles->GetTypedComponent(cell, k) : -1;
-        segment.Triangle[k] = corner >= 0 ? pointOffset + corner : -1;
-      }
-      this->Segments.push_back(segment);
-    }
-    nodeOffset += output->GetNumberOfPoints();
+    this->AppendSegments(lines->GetOutput(), state, nodeOffset, pointOffset);
+    nodeOffset += lines->GetOutput()->GetNumberOfPoints();
     pointOffset += state.Mesh->GetPoints() ? state.Mesh->GetNumberOfPoints() : 0;
   }
   this->Lines.swap(used); // forget the actors that are gone
-  this->LinesTime = Seconds(start);
+  return nodeOffset;
+}
 
-  start = Clock::now();
+void vtkNPRSceneLines::AppendSegments(
+  vtkPolyData* output, const vtkNPRMeshInstance& state, vtkIdType nodeOffset, vtkIdType pointOffset)
+{
+  auto* types = vtkUnsignedCharArray::SafeDownCast(output->GetCellData()->GetArray("FeatureType"));
+  auto* triangles =
+    vtkIdTypeArray::SafeDownCast(output->GetCellData()->GetArray("ContourTriangle"));
+  auto iterator = vtk::TakeSmartPointer(output->GetLines()->NewIterator());
+  vtkIdType cell = 0;
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal();
+       iterator->GoToNextCell(), ++cell)
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    iterator->GetCurrentCell(size, ids);
+    Segment segment;
+    double a[3], b[3];
+    output->GetPoint(ids[0], a);
+    output->GetPoint(ids[1], b);
+    vtkNPRTransformPoint(state.Matrix.data(), a, segment.A);
+    vtkNPRTransformPoint(state.Matrix.data(), b, segment.B);
+    segment.Type = types ? types->GetValue(cell) : 0;
+    segment.NodeA = nodeOffset + ids[0];
+    segment.NodeB = nodeOffset + ids[1];
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType corner = triangles ? triangles->GetTypedComponent(cell, k) : -1;
+      segment.Triangle[k] = corner >= 0 ? pointOffset + corner : -1;
+    }
+    this->Segments.push_back(segment);
+  }
+}
+
+void vtkNPRSceneLines::UpdateOccluders(const std::vector<vtkNPRMeshInstance>& actors,
+  const Settings& settings, int trianglesPerLocator, vtkIdType nodeOffset)
+{
   if (!(actors == this->LocatorState) || this->LocatorBuilds == 0 ||
     this->LocatorTrianglesPerLocator != trianglesPerLocator)
   {
@@ -321,5 +342,4 @@ void vtkNPRSceneLines::Update(
       }
     }
   }
-  this->LocatorTime = Seconds(start);
 }

@@ -97,6 +97,16 @@ private:
   vtkNPRSceneLines(const vtkNPRSceneLines&) = delete;
   void operator=(const vtkNPRSceneLines&) = delete;
 
+  // The steps of Update(): each mesh's feature lines as segments (returns the number of line
+  // nodes), one mesh's output appended, the occluders (built again only when the scene changed)
+  // and the crossings' segments.
+  vtkIdType UpdateLines(
+    const std::vector<vtkNPRMeshInstance>& actors, vtkCamera* camera, const Settings& settings);
+  void AppendSegments(vtkPolyData* output, const vtkNPRMeshInstance& state, vtkIdType nodeOffset,
+    vtkIdType pointOffset);
+  void UpdateOccluders(const std::vector<vtkNPRMeshInstance>& actors, const Settings& settings,
+    int trianglesPerLocator, vtkIdType nodeOffset);
+
   // Each mesh of each actor (a composite input has several) keeps its feature lines.
   using MeshKey = std::pair<vtkActor*, vtkPolyData*>;
   struct LinesEntry
