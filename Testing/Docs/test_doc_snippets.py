@@ -22,6 +22,8 @@ built as npr-snippet-NAME, which this test runs as a python block is run (once p
 same checks on the files the program names; any other PATH must be named in a CMakeLists.txt or
 a test script of the repository.
 
+A python block that imports pyvista is run by npr.pyvista.entry.snippet, where PyVista is
+installed (Debian 13 and unstable), not here: Debian 12 does not package PyVista.
 Pages whose code blocks need another program than python3 are run by their own tests:
 pyvista.md (PyVista, which Debian 12 does not package: npr.pyvista.entry.snippet runs its first
 block where PyVista is installed) and paraview.md (pvpython and pvbatch: npr.paraview.doc_snippet
@@ -39,6 +41,7 @@ NOT_RUN = {"sh", "cmake", "json", "xml", ""}
 OWN_TESTS = {"pyvista.md": "npr.pyvista.entry.snippet", "paraview.md": "npr.paraview.doc_snippet"}
 OUTPUT = re.compile(r"""["']([\w./-]+\.(?:png|svg|pdf|ps|eps))["']""")
 MARKER = re.compile(r"^<!--\s*snippet:\s*(\S+)\s*-->\s*$")
+PYVISTA = re.compile(r"^\s*(import pyvista|from pyvista)\b", re.M)
 ELISION = re.compile(r"^\s*(//|#) \.\.\.")
 REPOSITORY = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
@@ -212,6 +215,9 @@ def main():
             elif not is_run_by_a_test(path):
                 fail(where, "no CMakeLists.txt or test script names %s" % marker)
             print("%s: part of %s" % (where, marker))
+        elif language == "python" and PYVISTA.search(text):
+            counted += 1
+            print("%s: imports pyvista: run by npr.pyvista.entry.snippet" % where)
         elif language == "python":
             counted += 1
             script = os.path.join(args.output_dir, "%s-%d.py" % (page[:-3], line))

@@ -8,6 +8,7 @@ Each case fails (exit 1) on a failed check and on any VTK error or warning print
 skipped test) when PyVista is not installed.
 """
 import os
+import re
 import sys
 import tempfile
 import warnings
@@ -239,22 +240,37 @@ def case_screenshot():
     p.close()
 
 
+def python_blocks(page, only_pyvista):
+    """The page's python blocks in order (later ones continue earlier ones); with only_pyvista,
+    those that import PyVista."""
+    text = open(page).read()
+    code = [block.split("```", 1)[0] for block in text.split("```python\n")[1:]]
+    uses = re.compile(r"^\s*(import pyvista|from pyvista)\b", re.M)
+    return [block for block in code if not only_pyvista or uses.search(block)]
+
+
 def case_snippet():
-    """The first Python block of Documentation/pyvista.md runs and writes its image."""
-    here = os.path.dirname(os.path.abspath(__file__))
-    with open(os.path.join(here, "..", "..", "Documentation", "pyvista.md")) as page:
-        text = page.read()
-    code = text.split("```python\n", 1)[1].split("```", 1)[0]
-    folder = tempfile.mkdtemp()
-    cwd = os.getcwd()
-    os.chdir(folder)
-    try:
-        exec(compile(code, "pyvista.md", "exec"), {})
-    finally:
-        os.chdir(cwd)
-    written = [name for name in os.listdir(folder) if name.endswith(".png")]
-    check(len(written) == 1 and os.path.getsize(os.path.join(folder, written[0])) > 1000,
-          "the documentation's snippet wrote %s" % written)
+    """Every python block of Documentation/pyvista.md and the PyVista block of README.md run,
+    each page's in one namespace from a folder whose Testing/ is the repository's, and write the
+    pictures they name."""
+    repository = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+    for page, only_pyvista in (("Documentation/pyvista.md", False), ("README.md", True)):
+        blocks = python_blocks(os.path.join(repository, page), only_pyvista)
+        folder = tempfile.mkdtemp()
+        os.symlink(os.path.join(repository, "Testing"), os.path.join(folder, "Testing"))
+        cwd = os.getcwd()
+        os.chdir(folder)
+        try:
+            namespace = {}
+            for block in blocks:
+                exec(compile(block, page, "exec"), namespace)
+        finally:
+            os.chdir(cwd)
+        named = set(re.findall(r"[\"']([\w.-]+\.(?:png|svg))[\"']", "".join(blocks)))
+        written = {name for name in named if os.path.isfile(os.path.join(folder, name))
+                   and os.path.getsize(os.path.join(folder, name)) > 1000}
+        check(blocks and named and written == named,
+              "%s: %d blocks wrote %s of %s" % (page, len(blocks), sorted(written), sorted(named)))
 
 
 CASES = {"subplots": case_subplots, "settings": case_settings, "compose": case_compose,
