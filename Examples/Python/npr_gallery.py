@@ -147,6 +147,7 @@ def render_styles(scene, caption, panel, columns, file_name):
     grab = vtkWindowToImageFilter()
     grab.SetInput(window)
     grab.ReadFrontBufferOff()
+    grab.ShouldRerenderOff()  # the frame just rendered: the drawing's lines are not cheap
     grab.Update()
     writer = vtkPNGWriter()
     writer.SetCompressionLevel(9)
