@@ -6,10 +6,11 @@
         --out Documentation/images/gallery        # or: cmake --build build -t gallery
 
 Subjects: a CAD part (Testing/Data/cad_part.vtp), a scan (the Stanford bunny, bunny.ply) and a
-scientific scene (npr_scientific_scene.isosurface_scene: an isosurface in its outline box over
-colour-mapped data, with a scalar bar and a title). Each is one headless window with one viewport
-per style, all on one camera, each labelled with its style's name by a vtkTextActor that VTK draws
-over the style. The models look as npr-render draws them (its colour, highlight and normals).
+scientific scene (npr_scientific_scene.isosurface_scene: an isosurface in its outline box, the
+data colour-mapped on the box's back face, a scalar bar and a title). Each is one headless window
+with one viewport per style, all on one camera, each labelled with its style's name by a
+vtkTextActor that VTK draws over the style. The models look as npr-render draws them (its colour,
+highlight and normals).
 
 Writes gallery_cad.png, gallery_scan.png, gallery_science.png (a grid of --columns panels of
 --size, the last cell naming the subject) and styles.png (the CAD part in one row of --strip-size
@@ -170,7 +171,7 @@ def main():
     for name, scene, caption in (("cad", cad, "CAD part\n(cad_part.vtp)"),
                                  ("scan", scan, "scan\n(bunny.ply)"),
                                  ("science", lambda: isosurface_scene(with_data=True),
-                                  "scientific scene\n(wavelet, VTK sources)")):
+                                  "scientific scene\n(VTK's wavelet source)")):
         render_styles(scene, caption, args.size, args.columns,
                       os.path.join(args.out, "gallery_%s.png" % name))
     render_styles(cad, "", args.strip_size, len(STYLES), os.path.join(args.out, "styles.png"))

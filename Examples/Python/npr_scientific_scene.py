@@ -53,7 +53,7 @@ def parse_arguments():
 
 def isosurface_scene(with_surface=True, with_data=False):
     """The wavelet's isosurface at 160 (white) inside its outline box (black, 1 px); with_data
-    adds the wavelet's values on the box's floor, colour-mapped, with a scalar bar and a title
+    adds the wavelet's values on the box's back face, colour-mapped, a scalar bar and a title
     (add_colour_mapped_data: the scene of Examples/Python/npr_gallery.py)."""
     wavelet = vtkRTAnalyticSource()
     contour = vtkContourFilter()
@@ -86,16 +86,17 @@ def isosurface_scene(with_surface=True, with_data=False):
 
 
 def add_colour_mapped_data(renderer, wavelet):
-    """The wavelet's values on its lowest z slice, blue to red, a scalar bar and a title, in black
-    text for the white background (VTK's default text is white)."""
+    """The wavelet's values on its lowest z slice (the box's back face from the scene's camera),
+    blue to red, a scalar bar and a title, in black for the white background (VTK's default text
+    is white)."""
     wavelet.Update()
     low, high = wavelet.GetOutput().GetScalarRange()
-    floor = vtkExtractVOI()
-    floor.SetInputConnection(wavelet.GetOutputPort())
+    face = vtkExtractVOI()
+    face.SetInputConnection(wavelet.GetOutputPort())
     x0, x1, y0, y1, z0, _ = wavelet.GetWholeExtent()
-    floor.SetVOI(x0, x1, y0, y1, z0, z0)
+    face.SetVOI(x0, x1, y0, y1, z0, z0)
     surface = vtkImageDataGeometryFilter()
-    surface.SetInputConnection(floor.GetOutputPort())
+    surface.SetInputConnection(face.GetOutputPort())
     colours = vtkLookupTable()
     colours.SetHueRange(0.667, 0.0)  # blue (low) to red (high)
     colours.SetTableRange(low, high)

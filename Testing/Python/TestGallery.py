@@ -55,9 +55,14 @@ class Image:
                 yield self.data[(row + x) * c:(row + x) * c + 3]
 
 
+def panel_origin(index, panel, columns):
+    """The top left pixel of the index-th panel, row by row from the top left."""
+    return (index % columns) * panel[0], (index // columns) * panel[1]
+
+
 def panel_box(index, panel, columns, top=0.0, left=0.0, right=1.0, bottom=1.0):
     """The part [left, right) x [top, bottom) (fractions) of the index-th panel, in pixels."""
-    x, y = (index % columns) * panel[0], (index // columns) * panel[1]
+    x, y = panel_origin(index, panel, columns)
     return (x + int(left * panel[0]), y + int(top * panel[1]),
             x + int(right * panel[0]), y + int(bottom * panel[1]))
 
@@ -92,7 +97,8 @@ def check_styles(name, image, panel, columns):
     area = (scenes[0][2] - scenes[0][0]) * (scenes[0][3] - scenes[0][1])
     for style, box in zip(STYLES, scenes):
         drawn = count(image, box, lambda p: min(p) < 235) / area
-        check(drawn > 0.02, "%s %s: %.1f %% of the panel drawn (> 2 %%)" % (name, style, 100 * drawn))
+        check(drawn > 0.02,
+              "%s %s: %.1f %% of the panel drawn (> 2 %%)" % (name, style, 100 * drawn))
     for i in range(len(STYLES)):
         for j in range(i + 1, len(STYLES)):
             fraction = differing(image, scenes[i], scenes[j])
@@ -100,11 +106,12 @@ def check_styles(name, image, panel, columns):
                   % (name, STYLES[i], STYLES[j], 100 * fraction))
     lines = [count(image, scenes[STYLES.index(style)], dark) for style in ("shaded", "edges")]
     check(lines[1] > lines[0] + 0.01 * area,
-          "%s: edges has %d dark pixels, shaded %d (+1 %% of the panel)" % (name, lines[1], lines[0]))
+          "%s: edges has %d dark pixels, shaded %d (+1 %% of the panel)"
+          % (name, lines[1], lines[0]))
 
 
 def label_corner(image, index, panel, columns):
-    x, y = (index % columns) * panel[0], (index // columns) * panel[1]
+    x, y = panel_origin(index, panel, columns)
     box = (x + LABEL_CORNER[0], y + LABEL_CORNER[1], x + LABEL_CORNER[2], y + LABEL_CORNER[3])
     return list(image.pixels(*box))
 
@@ -129,8 +136,8 @@ def check_scalar_bar(image):
     for index, style in enumerate(STYLES):
         box = panel_box(index, PANEL, COLUMNS, left=0.86, right=0.97, top=0.25, bottom=0.8)
         fraction = count(image, box, coloured) / ((box[2] - box[0]) * (box[3] - box[1]))
-        check(fraction > 0.1, "science %s: %.0f %% coloured pixels where the scalar bar is (> 10 %%)"
-              % (style, 100 * fraction))
+        check(fraction > 0.1, "science %s: %.0f %% coloured pixels where the scalar bar is"
+              " (> 10 %%)" % (style, 100 * fraction))
 
 
 def main():
@@ -141,7 +148,8 @@ def main():
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
     print(run.stdout)
     check(run.returncode == 0, "npr_gallery.py exits 0 (%d)" % run.returncode)
-    check("ERROR" not in run.stdout and "Warning" not in run.stdout, "VTK printed no error or warning")
+    check("ERROR" not in run.stdout and "Warning" not in run.stdout,
+          "VTK printed no error or warning")
     images = {}
     for name in ("gallery_cad", "gallery_scan", "gallery_science", "styles"):
         path = os.path.join(out, name + ".png")
