@@ -7,6 +7,8 @@
 #                                          # scenes into build/examples/, the gallery into
 #                                          # build/gallery/
 #   bash Utilities/bootstrap.sh test       # install what is missing, build, run every test stage
+#   bash Utilities/bootstrap.sh packages   # install what is missing, build, make this machine's
+#                                          # Debian packages (Debian 12: VTK 9.1, ParaView 5.11)
 #
 # Installs only the Debian packages that are missing (apt-get; through sudo when not root), so a
 # second run goes straight to the (incremental) build. NPR_BUILD_DIR overrides the build folder.
@@ -44,8 +46,8 @@
 set -euo pipefail
 
 task=${1:-}
-if [[ $task != examples && $task != test ]]; then
-  echo "usage: bash Utilities/bootstrap.sh examples|test" >&2
+if [[ $task != examples && $task != test && $task != packages ]]; then
+  echo "usage: bash Utilities/bootstrap.sh examples|test|packages" >&2
   exit 2
 fi
 source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -63,6 +65,8 @@ packages=(libvtk9-dev python3-vtk9 libegl-dev libegl-mesa0 libgl1-mesa-dri libop
 if [[ $task == test ]]; then
   packages+=(debootstrap clang-format dpkg-dev file xdotool ffmpeg librsvg2-bin poppler-utils
     ccache)
+elif [[ $task == packages ]]; then
+  packages+=(debootstrap dpkg-dev file ccache)
 fi
 missing=()
 for package in "${packages[@]}"; do
@@ -82,6 +86,8 @@ fi
 all_stages=(format host fuzz sanitize vtk-9.3 vtk-9.6 paraview-5.11 paraview-5.13 paraview-6.1
   packages-bookworm packages-trixie packages-sid)
 IFS=, read -r -a stages <<<"${NPR_STAGES:-$(IFS=,; echo "${all_stages[*]}")}"
+# `packages` makes the host release's packages alone, without the tests.
+if [[ $task == packages ]]; then stages=(packages-bookworm); fi
 for i in "${!stages[@]}"; do
   if [[ ${NPR_SKIP_SANITIZE:-0} != 0 && ${stages[i]} == sanitize ]] ||
     [[ ${NPR_SKIP_PACKAGES:-0} != 0 && ${stages[i]} == packages-* ]]; then
@@ -116,7 +122,7 @@ builds_of() {
 # the host's build); each logs to $build_dir/logs/chroot-NAME.log.
 declare -A chroot_setup_pid=() chroot_setup_status=()
 start_chroot_setups() {
-  [[ $task == test ]] || return 0
+  [[ $task != examples ]] || return 0
   local stage name build
   for stage in "${stages[@]}"; do
     for build in $stage $(builds_of "$stage"); do
@@ -167,7 +173,7 @@ record_ctest() {
 # only).
 launcher=()
 compiler_cache=${NPR_COMPILER_CACHE:-${NPR_CHROOT_BASE:-/var/cache/vtknpr}/ccache}
-if [[ $task != test || $compiler_cache == off ]] || ! command -v ccache >/dev/null ||
+if [[ $task == examples || $compiler_cache == off ]] || ! command -v ccache >/dev/null ||
   ! { mkdir -p "$compiler_cache/host" 2>/dev/null && [[ -w $compiler_cache/host ]]; }; then
   compiler_cache= # (a user who cannot write there builds without it)
 else
@@ -296,26 +302,39 @@ run_chroot_stage() {
   return "${PIPESTATUS[0]}"
 }
 
-# A package stage: cpack in the release's two build folders (built first where needed), then the
-# packages installed into clean chroots of the release and checked (Utilities/check-packages.sh).
-run_package_stage() {
-  local stage=$1 release=${1#packages-} build folders=()
-  for build in $(builds_of "$stage"); do
+# The Debian packages of a package stage's release: cpack in its two build folders (built first
+# where needed); prints the folders that hold them, one a line.
+make_packages() {
+  local build
+  for build in $(builds_of "$1"); do
     if [[ $build == host ]]; then
-      build_host && rm -rf "$build_dir/packages" &&
-        (cd "$build_dir" && cpack -G DEB) || return 1
-      folders+=("$build_dir/packages")
+      build_host >&2 && rm -rf "$build_dir/packages" &&
+        (cd "$build_dir" && cpack -G DEB) >&2 || return 1
+      echo "$build_dir/packages"
     else
-      run_in_chroot_build "$build" "rm -rf /build/packages && cd /build && cpack -G DEB" ||
+      run_in_chroot_build "$build" "rm -rf /build/packages && cd /build && cpack -G DEB" >&2 ||
         return 1
-      folders+=("$build_dir/$build/packages")
+      echo "$build_dir/$build/packages"
     fi
   done
-  echo "bootstrap: $release packages:"
-  for build in "${folders[@]}"; do
-    ls -l "$build"/*.deb | awk '{ print "  " $5 " bytes  " $NF }'
+}
+
+# Lists the packages in the given folders with their sizes.
+list_packages() {
+  local folder
+  for folder in "$@"; do
+    ls -l "$folder"/*.deb | awk '{ print "  " $5 " bytes  " $NF }'
   done
-  bash "$source_dir/Utilities/check-packages.sh" "$release" "${folders[@]}"
+}
+
+# A package stage: the release's packages made, then installed into clean chroots of the release
+# and checked (Utilities/check-packages.sh).
+run_package_stage() {
+  local stage=$1 folders=()
+  mapfile -t folders < <(make_packages "$stage") && ((${#folders[@]} == 2)) || return 1
+  echo "bootstrap: ${stage#packages-} packages:"
+  list_packages "${folders[@]}"
+  bash "$source_dir/Utilities/check-packages.sh" "${stage#packages-}" "${folders[@]}"
 }
 
 run_test_stages() {
@@ -375,6 +394,13 @@ if [[ $task == examples ]]; then
   cmake --build "$build_dir" --target render-examples gallery
   echo "bootstrap: example images in $build_dir/examples, every style in $build_dir/gallery:"
   ls -1 "$build_dir"/examples/*.png "$build_dir"/examples/*.svg "$build_dir"/gallery/*.png
+elif [[ $task == packages ]]; then
+  wait_stage_chroots packages-bookworm
+  mapfile -t folders < <(make_packages packages-bookworm)
+  ((${#folders[@]} == 2)) || { echo "bootstrap: the packages could not be made" >&2; exit 1; }
+  echo "bootstrap: Debian 12 packages, made in $((SECONDS - run_start)) s" \
+    "(install: Documentation/packages.md):"
+  list_packages "${folders[@]}"
 else
   run_test_stages
 fi
