@@ -4,7 +4,8 @@
 # Sets up a Debian 12 machine for vtkNPR, builds it, then renders the examples or runs the tests.
 #
 #   bash Utilities/bootstrap.sh examples   # install what is missing, build, render the example
-#                                          # scenes into build/examples/
+#                                          # scenes into build/examples/, the gallery into
+#                                          # build/gallery/
 #   bash Utilities/bootstrap.sh test       # install what is missing, build, run every test stage
 #   bash Utilities/bootstrap.sh packages   # install what is missing, build, make this machine's
 #                                          # Debian packages (Debian 12: VTK 9.1, ParaView 5.11)
@@ -390,9 +391,9 @@ start_chroot_setups
 unset DISPLAY
 if [[ $task == examples ]]; then
   build_host
-  cmake --build "$build_dir" --target render-examples
-  echo "bootstrap: example images in $build_dir/examples:"
-  ls -1 "$build_dir"/examples/*.png "$build_dir"/examples/*.svg
+  cmake --build "$build_dir" --target render-examples gallery
+  echo "bootstrap: example images in $build_dir/examples, every style in $build_dir/gallery:"
+  ls -1 "$build_dir"/examples/*.png "$build_dir"/examples/*.svg "$build_dir"/gallery/*.png
 elif [[ $task == packages ]]; then
   wait_stage_chroots packages-bookworm
   mapfile -t folders < <(make_packages packages-bookworm)

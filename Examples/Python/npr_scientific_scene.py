@@ -22,12 +22,14 @@ import sys
 import vtknpr  # noqa: F401  (first: it imports the VTK modules it needs by itself)
 from vtknpr import vtkNPRPass, vtkNPRRenderWindowFactory
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
+from vtkmodules.vtkCommonCore import vtkLookupTable
 from vtkmodules.vtkFiltersCore import vtkContourFilter, vtkImageAppend
+from vtkmodules.vtkFiltersGeometry import vtkImageDataGeometryFilter
 from vtkmodules.vtkFiltersSources import vtkSuperquadricSource
-from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
+from vtkmodules.vtkImagingCore import vtkExtractVOI, vtkRTAnalyticSource
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingAnnotation import vtkCubeAxesActor
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
+from vtkmodules.vtkRenderingAnnotation import vtkCubeAxesActor, vtkScalarBarActor
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkTextActor
 from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 import vtkmodules.vtkRenderingFreeType  # noqa: F401  (the axes' label text)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL object factory overrides)
@@ -49,8 +51,10 @@ def parse_arguments():
     return parser.parse_args()
 
 
-def isosurface_scene(with_surface=True):
-    """The wavelet's isosurface at 160 (white) inside its outline box (black, 1 px)."""
+def isosurface_scene(with_surface=True, with_data=False):
+    """The wavelet's isosurface at 160 (white) inside its outline box (black, 1 px); with_data
+    adds the wavelet's values on the box's back face, colour-mapped, a scalar bar and a title
+    (add_colour_mapped_data: the scene of Examples/Python/npr_gallery.py)."""
     wavelet = vtkRTAnalyticSource()
     contour = vtkContourFilter()
     contour.SetInputConnection(wavelet.GetOutputPort())
@@ -72,11 +76,55 @@ def isosurface_scene(with_surface=True):
     if with_surface:
         renderer.AddActor(surface)
     renderer.AddActor(box)
+    if with_data:
+        add_colour_mapped_data(renderer, wavelet)
     renderer.ResetCamera()
     renderer.GetActiveCamera().Azimuth(30)
     renderer.GetActiveCamera().Elevation(25)
     renderer.ResetCamera()
     return renderer
+
+
+def add_colour_mapped_data(renderer, wavelet):
+    """The wavelet's values on its lowest z slice (the box's back face from the scene's camera),
+    blue to red, a scalar bar and a title, in black for the white background (VTK's default text
+    is white)."""
+    wavelet.Update()
+    low, high = wavelet.GetOutput().GetScalarRange()
+    face = vtkExtractVOI()
+    face.SetInputConnection(wavelet.GetOutputPort())
+    x0, x1, y0, y1, z0, _ = wavelet.GetWholeExtent()
+    face.SetVOI(x0, x1, y0, y1, z0, z0)
+    surface = vtkImageDataGeometryFilter()
+    surface.SetInputConnection(face.GetOutputPort())
+    colours = vtkLookupTable()
+    colours.SetHueRange(0.667, 0.0)  # blue (low) to red (high)
+    colours.SetTableRange(low, high)
+    colours.Build()
+    data = vtkActor()
+    data.SetMapper(vtkPolyDataMapper())
+    data.GetMapper().SetInputConnection(surface.GetOutputPort())
+    data.GetMapper().SetLookupTable(colours)
+    data.GetMapper().SetScalarRange(low, high)
+    renderer.AddActor(data)
+    bar = vtkScalarBarActor()
+    bar.SetLookupTable(colours)
+    bar.SetTitle("RTData")
+    bar.SetNumberOfLabels(3)
+    bar.SetPosition(0.84, 0.12)  # the viewport's right edge, as ParaView places it
+    bar.SetWidth(0.14)
+    bar.SetHeight(0.7)
+    for text in (bar.GetTitleTextProperty(), bar.GetLabelTextProperty()):
+        text.SetColor(0.0, 0.0, 0.0)
+        text.ShadowOff()
+    renderer.AddViewProp(bar)
+    title = vtkTextActor()
+    title.SetInput("Wavelet: isosurface 160")
+    title.GetPositionCoordinate().SetCoordinateSystemToNormalizedViewport()
+    title.SetPosition(0.02, 0.03)
+    title.GetTextProperty().SetColor(0.0, 0.0, 0.0)
+    title.GetTextProperty().SetFontSize(14)
+    renderer.AddViewProp(title)
 
 
 def axes_scene():
