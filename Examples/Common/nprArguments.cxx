@@ -2,6 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nprArguments.h"
 
+#include "vtkNamedColors.h"
+#include "vtkNew.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -111,20 +114,27 @@ void nprParseColor(const std::string& flag, const std::string& text, double rgb[
     }
     return;
   }
-  const std::string expected = flag + " expects r,g,b in 0..1 or #rrggbb, got '" + text + "'";
-  const std::vector<std::string> parts = nprSplitList(text);
-  for (size_t i = 0; i < parts.size(); ++i)
+  vtkNew<vtkNamedColors> names; // CSS and X11 names, as PyVista's (and enable_npr's) colours
+  if (!text.empty() && text.find(',') == std::string::npos && names->ColorExists(text))
   {
-    const double value = i < 3 ? nprParseNumber(flag, parts[i]) : -1.0;
-    if (i >= 3 || value < 0.0 || value > 1.0)
-    {
-      throw nprUsageError(expected);
-    }
-    rgb[i] = value;
+    names->GetColorRGB(text, rgb);
+    return;
   }
+  const std::string expected = flag + " expects a colour name (such as red, navy, wheat), r,g,b " +
+    "in 0..1 or #rrggbb, got '" + text + "'";
+  const std::vector<std::string> parts = nprSplitList(text);
   if (parts.size() != 3)
   {
     throw nprUsageError(expected);
+  }
+  for (size_t i = 0; i < 3; ++i)
+  {
+    char* end = nullptr;
+    rgb[i] = std::strtod(parts[i].c_str(), &end);
+    if (parts[i].empty() || *end || !(rgb[i] >= 0.0 && rgb[i] <= 1.0)) // NaN fails too
+    {
+      throw nprUsageError(expected);
+    }
   }
 }
 

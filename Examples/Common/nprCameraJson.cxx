@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nprCameraJson.h"
 
+#include "nprFiles.h"
+
 #include "vtkCamera.h"
 #include "vtkMath.h"
 #include "vtk_jsoncpp.h"
@@ -115,12 +117,13 @@ std::string nprCameraToJson(const nprCameraState& c)
 
 void nprWriteCameraFile(const std::string& fileName, const nprCameraState& camera)
 {
+  nprMakeOutputFolders(fileName);
   std::ofstream stream(fileName);
   stream << nprCameraToJson(camera) << "\n";
   stream.close();
   if (!stream)
   {
-    throw std::runtime_error(fileName + ": cannot write the camera file");
+    throw nprCannotWrite(fileName, "camera file");
   }
 }
 

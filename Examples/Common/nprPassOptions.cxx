@@ -9,6 +9,7 @@
 #include "vtkNPRPass.h"
 
 #include <algorithm>
+#include <cctype>
 #include <iterator>
 #include <vector>
 
@@ -29,7 +30,8 @@ Lines (--style edges, toon+edges, sketch and drawing):
   --suggestive-threshold X strength of a suggestive contour, 0.0001..1 (default 0.01)
   --contour-side SIDE      inside, outside or both (default inside)
   --line-width PX          line width in pixels, 0.5..16 (default 1.5)
-  --line-color COLOR       colour of every line type (default black)
+  --line-color COLOR       colour of every line type: a name (red, navy, ...), r,g,b in
+                           0..1 or #rrggbb (default black)
   --silhouette-color COLOR, --crease-color COLOR, --contour-color COLOR,
   --suggestive-color COLOR
   --no-antialias           lines without anti-aliasing
@@ -70,6 +72,24 @@ bool nprIsStyleName(const std::string& name)
   return vtkNPRPass::GetStyleFromName(name.c_str()) >= 0;
 }
 
+std::string nprStyleFromText(const std::string& flag, const std::string& text)
+{
+  std::string name; // lower case without spaces: "Toon + Edges" -> "toon+edges"
+  for (char c : text)
+  {
+    if (c != ' ')
+    {
+      name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+  }
+  if (!nprIsStyleName(name))
+  {
+    throw nprUsageError("unknown style '" + text + "'" + (flag == "--style" ? "" : " for " + flag) +
+      " (valid styles: " + nprStyleNames() + ")");
+  }
+  return name;
+}
+
 std::string nprStyleNames()
 {
   std::string names;
@@ -85,12 +105,7 @@ bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
   const std::string& arg = arguments.Current();
   if (arg == "--style")
   {
-    pass.Style = arguments.Value();
-    if (!nprIsStyleName(pass.Style))
-    {
-      throw nprUsageError(
-        "unknown style '" + pass.Style + "' (valid styles: " + nprStyleNames() + ")");
-    }
+    pass.Style = nprStyleFromText(arg, arguments.Value());
   }
   else if (arg == "--lines")
   {
@@ -248,5 +263,150 @@ bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
   {
     return false;
   }
+  pass.GivenFlags.insert(arg);
   return true;
+}
+
+namespace
+{
+constexpr unsigned StyleBit(int style)
+{
+  return 1u << style;
+}
+// The styles that find lines in the image (vtkNPREdgePass), and those that draw any lines.
+constexpr unsigned ImageLines =
+  StyleBit(vtkNPRPass::EDGES) | StyleBit(vtkNPRPass::TOON_EDGES) | StyleBit(vtkNPRPass::SKETCH);
+constexpr unsigned Strokes = ImageLines | StyleBit(vtkNPRPass::DRAWING);
+constexpr unsigned Toon =
+  StyleBit(vtkNPRPass::TOON) | StyleBit(vtkNPRPass::TOON_EDGES) | StyleBit(vtkNPRPass::SKETCH);
+
+// Which styles use each flag of the styles (the sketch uses the toon flags with --sketch-toon).
+struct FlagScope
+{
+  const char* Flag;
+  unsigned Styles;
+};
+const FlagScope FlagScopes[] = { { "--lines", Strokes }, { "--crease-angle", Strokes },
+  { "--silhouette-threshold", ImageLines }, { "--smooth-silhouettes", ImageLines },
+  { "--face-creases", ImageLines }, { "--suggestive-threshold", ImageLines },
+  { "--suggestive-color", ImageLines }, { "--contour-side", ImageLines },
+  { "--contour-color", ImageLines }, { "--no-antialias", ImageLines }, { "--encoding", ImageLines },
+  { "--packed-threshold", ImageLines }, { "--packed-blur", ImageLines },
+  { "--silhouette-color", Strokes }, { "--crease-color", Strokes },
+  { "--line-width", Strokes | StyleBit(vtkNPRPass::INKED) },
+  { "--line-color", Strokes | StyleBit(vtkNPRPass::INKED) }, { "--toon-bands", Toon },
+  { "--toon-per-vertex", Toon }, { "--sketch-toon", StyleBit(vtkNPRPass::SKETCH) },
+  { "--uncertainty", StyleBit(vtkNPRPass::SKETCH) },
+  { "--noise-seed", StyleBit(vtkNPRPass::SKETCH) },
+  { "--noise-frequency", StyleBit(vtkNPRPass::SKETCH) },
+  { "--noise-space", StyleBit(vtkNPRPass::SKETCH) },
+  { "--paper-color", StyleBit(vtkNPRPass::SKETCH) },
+  { "--hidden-lines", StyleBit(vtkNPRPass::DRAWING) } };
+
+// "edges, toon+edges or sketch"
+std::string StyleList(unsigned styles)
+{
+  std::vector<std::string> names;
+  for (int style = vtkNPRPass::SHADED; style <= vtkNPRPass::DRAWING; ++style)
+  {
+    if (styles & StyleBit(style))
+    {
+      names.emplace_back(vtkNPRPass::GetStyleName(style));
+    }
+  }
+  std::string list;
+  for (size_t i = 0; i < names.size(); ++i)
+  {
+    list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  }
+  return list;
+}
+
+// A flag that none of the drawing styles uses.
+void WarnUnusedFlags(const nprPassSettings& pass, unsigned drawn, const std::set<std::string>& also,
+  std::vector<std::string>& warnings)
+{
+  for (const FlagScope& scope : FlagScopes)
+  {
+    if (pass.GivenFlags.count(scope.Flag) && !(scope.Styles & drawn) && !also.count(scope.Flag))
+    {
+      warnings.push_back(std::string(scope.Flag) + " applies to --style " +
+        StyleList(scope.Styles) + "; ignored with --style " + StyleList(drawn));
+    }
+  }
+}
+
+// A flag that another flag turns off.
+void WarnOverriddenFlags(
+  const nprPassSettings& pass, unsigned drawn, std::vector<std::string>& warnings)
+{
+  const bool packed =
+    pass.Encoding == vtkNPREdgePass::PACKED8 || pass.Encoding == vtkNPREdgePass::PACKED16;
+  auto given = [&](const char* flag) { return pass.GivenFlags.count(flag) > 0; };
+  for (const char* flag : { "--packed-threshold", "--packed-blur" })
+  {
+    if (given(flag) && !packed && (drawn & ImageLines))
+    {
+      warnings.push_back(std::string(flag) + " applies only with --encoding packed8 or packed16");
+    }
+  }
+  for (const char* flag : { "--suggestive-threshold", "--suggestive-color" })
+  {
+    if (given(flag) && !pass.SuggestiveContours)
+    {
+      warnings.push_back(std::string(flag) + " has no effect: --lines has no suggestive");
+    }
+  }
+  if ((given("--toon-bands") || given("--toon-per-vertex")) && !pass.SketchToon &&
+    (drawn & Toon) == StyleBit(vtkNPRPass::SKETCH))
+  {
+    warnings.push_back("the toon flags apply to the sketch only with --sketch-toon");
+  }
+}
+
+// Combinations that cannot draw what they ask for.
+void RefuseImpossible(const nprPassSettings& pass, unsigned drawn)
+{
+  const std::string encoding = vtkNPREdgePass::GetEncodingName(pass.Encoding);
+  if ((drawn & ImageLines) && pass.FaceCreases && pass.Encoding != vtkNPREdgePass::FLOAT)
+  {
+    throw nprUsageError("--face-creases needs --encoding float (only it keeps the faces' "
+                        "normals), not " +
+      encoding);
+  }
+  const bool packed =
+    pass.Encoding == vtkNPREdgePass::PACKED8 || pass.Encoding == vtkNPREdgePass::PACKED16;
+  if ((drawn & ImageLines) && packed && (pass.SmoothSilhouettes || pass.SuggestiveContours))
+  {
+    throw nprUsageError(
+      std::string(pass.SmoothSilhouettes ? "--smooth-silhouettes" : "--lines suggestive") +
+      " needs --encoding float or half: the packed encodings find no line types");
+  }
+  if (drawn == StyleBit(vtkNPRPass::DRAWING) && !pass.Silhouettes && !pass.Creases)
+  {
+    throw nprUsageError("--style drawing draws silhouettes (with boundaries) and creases; "
+                        "the --lines given leave it nothing to draw");
+  }
+}
+}
+
+std::vector<std::string> nprCheckPassOptions(const nprPassSettings& pass,
+  const std::vector<std::string>& styles, const std::set<std::string>& alsoUsed)
+{
+  unsigned drawn = 0;
+  for (const std::string& style : styles)
+  {
+    drawn |= StyleBit(vtkNPRPass::GetStyleFromName(style.c_str()));
+  }
+  RefuseImpossible(pass, drawn);
+  std::vector<std::string> warnings;
+  WarnUnusedFlags(pass, drawn, alsoUsed, warnings);
+  WarnOverriddenFlags(pass, drawn, warnings);
+  if ((drawn & Strokes) == StyleBit(vtkNPRPass::DRAWING) &&
+    (pass.Contours || pass.SuggestiveContours) && pass.GivenFlags.count("--lines"))
+  {
+    warnings.push_back("--style drawing draws no contours or suggestive contours (only "
+                       "silhouettes, boundaries and creases)");
+  }
+  return warnings;
 }

@@ -9,6 +9,7 @@
 #include "vtkNPRSketchPass.h"
 #include "vtkSmartPointer.h"
 
+#include <set>
 #include <string>
 
 class vtkNPRPass;
@@ -53,6 +54,9 @@ struct nprPassSettings
 
   // Technical drawing
   bool HiddenLines = false;
+
+  // The flags given on the command line (nprParsePassOption), for nprCheckPassOptions.
+  std::set<std::string> GivenFlags;
 };
 
 // A vtkNPRPass of settings.Style with every setting applied (also for "shaded": whether to use

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nprWindowImage.h"
 
+#include "nprFiles.h"
+
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
 #include "vtkNPRDrawingExporter.h"
@@ -26,13 +28,14 @@ vtkSmartPointer<vtkImageData> nprReadWindowImage(vtkRenderWindow* window, bool r
 
 void nprWritePNG(vtkImageData* image, const std::string& path)
 {
+  nprMakeOutputFolders(path);
   vtkNew<vtkPNGWriter> writer;
   writer->SetFileName(path.c_str());
   writer->SetInputData(image);
   writer->Write();
   if (writer->GetErrorCode() != 0)
   {
-    throw std::runtime_error(path + ": cannot write the PNG");
+    throw nprCannotWrite(path, "PNG");
   }
 }
 

@@ -16,7 +16,8 @@ class vtkRenderer;
 // first; otherwise the image is the frame last rendered.
 vtkSmartPointer<vtkImageData> nprReadWindowImage(vtkRenderWindow* window, bool rerender);
 
-// Throws std::runtime_error "PATH: cannot write the PNG".
+// Makes the folders above path that are missing. Throws std::runtime_error
+// "PATH: cannot write the PNG: REASON".
 void nprWritePNG(vtkImageData* image, const std::string& path);
 
 // Writes the window as a PNG: RGB, or (grey) its first channel as 8-bit grey. It renders the

@@ -4,6 +4,7 @@
 // vtkNPR styles.
 // Run `npr-render --help` for the flags; Documentation/cli.md describes them.
 #include "nprCameraJson.h"
+#include "nprFiles.h"
 #include "nprModel.h"
 #include "nprOrbit.h"
 #include "nprOutputWindow.h"
@@ -116,8 +117,29 @@ void TimeFrames(const nprRenderOptions& options, vtkRenderWindow* window, vtkRen
             << "}" << std::endl;
 }
 
+// The factory's reason, told to a command-line user: where this npr-render cannot load OSMesa
+// (VTK 9.1-9.3), the program that can is npr-render-osmesa, not a CMake target.
+std::string WhyNoWindow(const std::string& reason)
+{
+  if (reason.find("NPR::OSMesa") == std::string::npos)
+  {
+    return reason;
+  }
+  return "no osmesa render window: this npr-render renders with EGL or X; for OSMesa run "
+         "npr-render-osmesa with the same options";
+}
+
 int Run(const nprRenderOptions& options, nprOutputWindow* messages)
 {
+  // Before minutes of reading and rendering: the folders of every file written.
+  for (const std::string* path :
+    { &options.Output, &options.CameraOut, &options.EdgeMask, &options.ReferenceMask })
+  {
+    if (!path->empty())
+    {
+      nprMakeOutputFolders(*path);
+    }
+  }
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(options.Background[0], options.Background[1], options.Background[2]);
   // "shaded" is VTK's own chain, untouched: the baseline every style is measured against.
@@ -151,7 +173,7 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
     vtkNPRRenderWindowFactory::CreateRenderWindow(options.Backend.c_str()));
   if (!window)
   {
-    throw std::runtime_error(messages->Last);
+    throw std::runtime_error(WhyNoWindow(messages->Last));
   }
   window->SetSize(width, height);
   window->AddRenderer(renderer);
@@ -162,12 +184,7 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
   else
   {
     // After the window exists: the reset fits the scene to its aspect ratio.
-    renderer->ResetCamera();
-    camera->Azimuth(options.Azimuth);
-    camera->Elevation(options.Elevation);
-    camera->OrthogonalizeViewUp();
-    camera->Zoom(options.Zoom);
-    renderer->ResetCameraClippingRange();
+    nprApplyCameraMove(renderer, options.Camera);
   }
   progress.Start();
   window->Render();

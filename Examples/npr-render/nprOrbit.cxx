@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nprOrbit.h"
 
+#include "nprFiles.h"
 #include "nprWindowImage.h"
 
 #include "vtkCamera.h"
@@ -79,7 +80,7 @@ void CheckWritable(const std::string& path)
   std::ofstream probe(path, std::ios::binary | std::ios::trunc);
   if (!probe)
   {
-    throw std::runtime_error(path + ": cannot write the video");
+    throw nprCannotWrite(path, "video");
   }
 }
 

@@ -9,8 +9,27 @@
 
 #include "vtkNPRRenderWindowFactory.h"
 
+#include <iostream>
+#include <set>
+
 namespace
 {
+// Flags that the chosen styles do not use, one warning each on stderr.
+void WarnAboutFlags(const nprRenderOptions& options)
+{
+  std::vector<std::string> styles = { options.Pass.Style };
+  styles.insert(styles.end(), options.CompareStyles.begin(), options.CompareStyles.end());
+  std::set<std::string> alsoUsed; // the reference mask is made of --lines and --crease-angle
+  if (!options.ReferenceMask.empty())
+  {
+    alsoUsed = { "--lines", "--crease-angle" };
+  }
+  for (const std::string& warning : nprCheckPassOptions(options.Pass, styles, alsoUsed))
+  {
+    std::cerr << "npr-render: warning: " << warning << "\n";
+  }
+}
+
 const char* const Usage = R"(usage: npr-render [options] MODEL [MODEL...]
 
 Renders one scene of the given models headless and writes a PNG, or a vector drawing
@@ -27,10 +46,7 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
                            each median and its ratio to the main style's
   --backend NAME           egl, osmesa or x (default: NPR_BACKEND, else egl;
                            osmesa in npr-render-osmesa)
-  --azimuth DEG            rotate the camera about the view up after the reset
-  --elevation DEG          rotate the camera up or down after the reset
-  --zoom FACTOR            zoom (> 1 closer) after the reset
-  --background COLOR       r,g,b in 0..1 or #rrggbb (default white)
+  --background COLOR       a colour name, r,g,b in 0..1 or #rrggbb (default white)
   --camera-in FILE         use this camera (JSON; its clipping range as given)
   --camera-out FILE        write the camera used (JSON)
   --frames N               time N frames after a warm-up; print one JSON line
@@ -57,14 +73,15 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
 {
   nprRenderOptions options;
   nprPassSettings& pass = options.Pass;
-  static const std::string help = std::string(Usage) + nprPassOptionsHelp;
+  static const std::string help = std::string(Usage) + "Camera (not with --camera-in):\n" +
+    nprCameraOptionsHelp + "\n" + nprPassOptionsHelp;
   nprArgumentReader arguments(argc, argv, help.c_str());
   while (arguments.Next())
   {
     const std::string& arg = arguments.Current();
-    if (nprParsePassOption(arguments, pass))
+    if (nprParsePassOption(arguments, pass) || nprParseCameraOption(arguments, options.Camera))
     {
-      continue; // --style and the flags of the styles
+      continue; // --style and the flags of the styles; the camera's moves
     }
     if (arg == "-o" || arg == "--output")
     {
@@ -76,25 +93,6 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
       options.Width = size.first;
       options.Height = size.second;
       options.SizeGiven = true;
-    }
-    else if (arg == "--azimuth")
-    {
-      options.Azimuth = nprParseNumber(arg, arguments.Value());
-      options.CameraMoved = true;
-    }
-    else if (arg == "--elevation")
-    {
-      options.Elevation = nprParseNumber(arg, arguments.Value());
-      options.CameraMoved = true;
-    }
-    else if (arg == "--zoom")
-    {
-      options.Zoom = nprParseNumber(arg, arguments.Value());
-      options.CameraMoved = true;
-      if (options.Zoom <= 0.0)
-      {
-        throw nprUsageError("--zoom expects a positive factor");
-      }
     }
     else if (arg == "--background")
     {
@@ -141,11 +139,7 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
     {
       for (const std::string& part : nprSplitList(arguments.Value()))
       {
-        if (!nprIsStyleName(part))
-        {
-          throw nprUsageError("unknown style '" + part + "' for --compare-style");
-        }
-        options.CompareStyles.push_back(part);
+        options.CompareStyles.push_back(nprStyleFromText(arg, part));
       }
     }
     else if (arg == "--edge-mask")
@@ -169,7 +163,7 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
   {
     throw nprUsageError("no model file given (see --help)");
   }
-  if (!options.CameraIn.empty() && options.CameraMoved)
+  if (!options.CameraIn.empty() && options.Camera.Given)
   {
     throw nprUsageError("--azimuth, --elevation and --zoom move the reset camera; they cannot be "
                         "combined with --camera-in");
@@ -212,5 +206,6 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
   {
     throw nprUsageError("--edge-mask needs --style edges, toon+edges or inked");
   }
+  WarnAboutFlags(options);
   return options;
 }

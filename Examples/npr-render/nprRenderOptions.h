@@ -4,6 +4,7 @@
 #ifndef nprRenderOptions_h
 #define nprRenderOptions_h
 
+#include "nprCameraOptions.h"
 #include "nprPassSettings.h"
 
 #include <string>
@@ -16,10 +17,7 @@ struct nprRenderOptions
   int Width = 1024;
   int Height = 768;
   bool SizeGiven = false;
-  double Azimuth = 0.0;
-  double Elevation = 0.0;
-  double Zoom = 1.0;
-  bool CameraMoved = false; // --azimuth, --elevation or --zoom given
+  nprCameraMove Camera; // --azimuth, --elevation, --zoom
   double Background[3] = { 1.0, 1.0, 1.0 };
   std::string CameraIn;
   std::string CameraOut;

@@ -144,7 +144,7 @@ int Run(const nprViewOptions& options, nprOutputWindow* messages)
   }
   else
   {
-    renderer->ResetCamera(); // after the window exists: fitted to its aspect ratio
+    nprApplyCameraMove(renderer, options.Camera); // after the window exists: fits its aspect
   }
   window->Render(); // the first frame, with the shaders' compilation
 

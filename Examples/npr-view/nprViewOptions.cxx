@@ -6,6 +6,10 @@
 #include "nprPassOptions.h"
 #include "nprViewer.h"
 
+#include "vtkNPRPass.h"
+
+#include <iostream>
+
 namespace
 {
 const char* const Usage = R"(usage: npr-view [options] MODEL [MODEL...]
@@ -16,7 +20,7 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
 
   --size WxH               window size in pixels (default 1024x768, or the size in
                            --camera-in's file)
-  --background COLOR       r,g,b in 0..1 or #rrggbb (default white)
+  --background COLOR       a colour name, r,g,b in 0..1 or #rrggbb (default white)
   --camera-in FILE         start with this camera (JSON, as npr-render --camera-in)
   --output-prefix PREFIX   screenshots PREFIXNNNN.png, cameras PREFIXcamera-NNNN.json
                            (default npr-view-, in the current directory)
@@ -31,15 +35,16 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
 nprViewOptions nprParseViewOptions(int argc, char* argv[])
 {
   nprViewOptions options;
-  static const std::string help =
-    std::string(Usage) + "Keys:\n" + nprViewKeys + "\n" + nprPassOptionsHelp;
+  static const std::string help = std::string(Usage) + "Camera (not with --camera-in):\n" +
+    nprCameraOptionsHelp + "\nKeys:\n" + nprViewKeys + "\n" + nprPassOptionsHelp;
   nprArgumentReader arguments(argc, argv, help.c_str());
   while (arguments.Next())
   {
     const std::string& arg = arguments.Current();
-    if (nprParsePassOption(arguments, options.Pass))
+    if (nprParsePassOption(arguments, options.Pass) ||
+      nprParseCameraOption(arguments, options.Camera))
     {
-      continue; // --style and the flags of the styles
+      continue; // --style and the flags of the styles; the camera's moves
     }
     if (arg == "--size")
     {
@@ -76,6 +81,21 @@ nprViewOptions nprParseViewOptions(int argc, char* argv[])
   if (options.Models.empty())
   {
     throw nprUsageError("no model file given (see --help)");
+  }
+  if (!options.CameraIn.empty() && options.Camera.Given)
+  {
+    throw nprUsageError("--azimuth, --elevation and --zoom move the reset camera; they cannot be "
+                        "combined with --camera-in");
+  }
+  // The keys switch between every style: only what no style uses, or cannot work, is told.
+  std::vector<std::string> styles;
+  for (int style = vtkNPRPass::SHADED; style <= vtkNPRPass::DRAWING; ++style)
+  {
+    styles.push_back(vtkNPRPass::GetStyleName(style));
+  }
+  for (const std::string& warning : nprCheckPassOptions(options.Pass, styles))
+  {
+    std::cerr << "npr-view: warning: " << warning << "\n";
   }
   return options;
 }

@@ -4,6 +4,7 @@
 #ifndef nprViewOptions_h
 #define nprViewOptions_h
 
+#include "nprCameraOptions.h"
 #include "nprPassSettings.h"
 
 #include <string>
@@ -17,6 +18,7 @@ struct nprViewOptions
   bool SizeGiven = false;
   double Background[3] = { 1.0, 1.0, 1.0 };
   std::string CameraIn;
+  nprCameraMove Camera; // --azimuth, --elevation, --zoom
   std::string OutputPrefix = "npr-view-";
   int OrbitFrames = 0;  // --orbit-benchmark N
   nprPassSettings Pass; // --style and the flags of the styles, as npr-render takes them

@@ -261,6 +261,8 @@ check(masks["packed8"] != masks["float"] and masks["packed16"] != masks["packed8
       "the packed encodings give their own lines")
 
 # Errors: one line on stderr that names the problem, non-zero exit, no crash.
+open(out("a_file"), "w").close()
+os.makedirs(out("a_folder.png"), exist_ok=True)
 errors = [
     ([os.path.join(models, "missing.ply"), "-o", out("x.png")], "no such file"),
     ([os.path.join(models, "empty.stl"), "-o", out("x.png")], "is empty"),
@@ -292,7 +294,7 @@ errors = [
     ([rotor, "--style", "edges", "--contour-side", "sideways", "-o", out("x.png")], "--contour-side expects inside, outside or both"),
     ([rotor, "--style", "edges", "--suggestive-threshold", "0", "-o", out("x.png")], "--suggestive-threshold expects a number in"),
     ([rotor, "--style", "edges", "--lines", "silhouettes,hatching", "-o", out("x.png")], "--lines expects silhouettes, creases, contours, suggestive or none, got 'hatching'"),
-    ([rotor, "--style", "edges", "--line-color", "2,0,0", "-o", out("x.png")], "--line-color expects r,g,b"),
+    ([rotor, "--style", "edges", "--line-color", "2,0,0", "-o", out("x.png")], "--line-color expects a colour name (such as red, navy, wheat), r,g,b in 0..1 or #rrggbb, got '2,0,0'"),
     ([rotor, "--edge-mask", out("m.png")], "--edge-mask needs --style edges, toon+edges or inked"),
     ([rotor, "--style", "edges", "--encoding", "packed4", "-o", out("x.png")], "--encoding expects float, half, packed8 or packed16, got 'packed4'"),
     ([rotor, "--style", "edges", "--packed-threshold", "0", "-o", out("x.png")], "--packed-threshold expects a number in 0.001..4"),
@@ -300,7 +302,7 @@ errors = [
     ([rotor, "--size", "0x100", "-o", out("x.png")], "--size width expects an integer in 1..16384"),
     ([rotor, "--zoom", "-2", "-o", out("x.png")], "--zoom expects a positive factor"),
     ([rotor, "--azimuth", "north", "-o", out("x.png")], "--azimuth expects a number"),
-    ([rotor, "--background", "1,2,3", "-o", out("x.png")], "--background expects r,g,b"),
+    ([rotor, "--background", "1,2,3", "-o", out("x.png")], "--background expects a colour name"),
     ([rotor, "--frames", "0"], "--frames expects an integer"),
     ([rotor, "--backend", "vulkan", "-o", out("x.png")], "unknown backend 'vulkan'"),
     ([rotor, "--bogus", "-o", out("x.png")], "unknown option '--bogus'"),
@@ -309,13 +311,34 @@ errors = [
     (["-o", out("x.png")], "no model file given"),
     ([rotor, "--camera-in", os.path.join(models, "missing.json"), "-o", out("x.png")], "cannot open the camera file"),
     ([rotor, "--camera-in", os.path.join(models, "bad.gltf"), "-o", out("x.png")], "not valid JSON"),
-    ([rotor, "-o", os.path.join(args.out, "no", "such", "dir", "x.png")], "cannot write the PNG"),
-    ([rotor, "--reference-mask", os.path.join(args.out, "no", "such", "dir", "m.png")], "cannot write the PNG"),
+    # A folder that cannot be made (its parent is a file) and a PNG that is a folder: the reason.
+    ([rotor, "-o", os.path.join(out("a_file"), "dir", "x.png")],
+     "a_file/dir/x.png: cannot create the folder %s: Not a directory" % os.path.join(out("a_file"), "dir")),
+    ([rotor, "--reference-mask", os.path.join(out("a_file"), "m.png")], "cannot create the folder"),
+    ([rotor, "--size", "32x32", "-o", out("a_folder.png")], "a_folder.png: cannot write the PNG: is a directory"),
+    ([rotor, "--size", "32x32", "--camera-out", out("a_folder.png")],
+     "a_folder.png: cannot write the camera file: is a directory"),
+    ([rotor, "--line-color", "reddish", "-o", out("x.png")], "--line-color expects a colour name"),
+    # Combinations that cannot draw what they ask for.
+    ([rotor, "--style", "drawing", "--lines", "contours", "-o", out("x.png")],
+     "--style drawing draws silhouettes (with boundaries) and creases; the --lines given leave it nothing to draw"),
+    ([rotor, "--style", "drawing", "--lines", "none", "-o", out("x.svg")], "leave it nothing to draw"),
+    ([rotor, "--style", "edges", "--face-creases", "--encoding", "half", "-o", out("x.png")],
+     "--face-creases needs --encoding float (only it keeps the faces' normals), not half"),
+    ([rotor, "--style", "toon+edges", "--face-creases", "--encoding", "packed8", "-o", out("x.png")],
+     "--face-creases needs --encoding float"),
+    ([rotor, "--style", "sketch", "--smooth-silhouettes", "--encoding", "packed16", "-o", out("x.png")],
+     "--smooth-silhouettes needs --encoding float or half"),
+    ([rotor, "--style", "edges", "--lines", "suggestive", "--encoding", "packed8", "-o", out("x.png")],
+     "--lines suggestive needs --encoding float or half"),
+    ([rotor, "--style", "Pastel", "-o", out("x.png")], "unknown style 'Pastel'"),
     ([rotor, "--backend", "x", "-o", out("x.png")], "DISPLAY is not set"),
     ([rotor, "--camera-in", out("cam.json"), "--zoom", "2", "-o", out("x.png")], "cannot be combined with --camera-in"),
 ] + ([] if args.osmesa_in_npr_render else [
     ([rotor, "--backend", "osmesa", "-o", out("x.png")],
-     "not available in this build" if args.no_osmesa else "NPR::OSMesa"),
+     "not available in this build" if args.no_osmesa else
+     "no osmesa render window: this npr-render renders with EGL or X; for OSMesa run npr-render-osmesa "
+     "with the same options"),
 ])
 along_view = [f - p for f, p in zip(camera["focal_point"], camera["position"])]
 json.dump(dict(camera, view_up=along_view), open(out("cam_bad_up.json"), "w"))
@@ -328,6 +351,72 @@ for argv, expected in errors:
     ok = rc not in (0,) and rc > 0 and len(lines) == 1 and lines[0].startswith("npr-render: error: ") \
         and expected in lines[0]
     check(ok, "%s -> rc %d, %r" % (" ".join(os.path.basename(a) for a in argv), rc, err.strip()))
+
+
+# ---- What a newcomer types: style names as ParaView writes them, colour names, folders made,
+# and a warning for each flag that the style does not use (the image is then as without it).
+def image(path):
+    dimensions, components, _, values = read_png(path)
+    return dimensions, components, values
+
+
+small = ["--size", "120x90", "--azimuth", "30"]
+rc, _, err = run(rotor, *small, "--style", "toon+edges", "-o", out("style_canonical.png"))
+check(rc == 0 and err == "", "--style toon+edges renders (%r)" % err)
+for spelling in ("Toon+Edges", "TOON+EDGES", "Toon + Edges"):
+    rc, _, err = run(rotor, *small, "--style", spelling, "-o", out("style_spelled.png"))
+    check(rc == 0 and err == "" and image(out("style_spelled.png")) == image(out("style_canonical.png")),
+          "--style '%s' is toon+edges (%r)" % (spelling, err))
+rc, stdout, err = run(rotor, "--size", "64x48", "--frames", "1", "--compare-style", "Sketch,Drawing")
+check(rc == 0 and [c["style"] for c in json.loads(stdout).get("compare", [])] == ["sketch", "drawing"],
+      "--compare-style takes ParaView's spellings (%r)" % err)
+
+rc, _, err = run(rotor, *small, "--style", "edges", "--line-width", "3", "--line-color", "Red",
+                 "-o", out("red_lines.png"))
+_, components, values = image(out("red_lines.png")) if rc == 0 else (None, 3, [])
+pixels = [values[i:i + components] for i in range(0, len(values), components)]
+red = sum(1 for p in pixels if p[0] > 200 and p[1] < 60 and p[2] < 60)
+dark = sum(1 for p in pixels if max(p[:3]) < 60)
+check(rc == 0 and red > 100 and dark < red / 20, "--line-color Red draws red lines (%d red, %d dark pixels)" % (red, dark))
+rc, _, err = run(rotor, *small, "--background", "navy", "--style", "sketch", "--paper-color", "wheat",
+                 "-o", out("named.png"))
+check(rc == 0 and err == "", "colour names for --background and --paper-color (%r)" % err)
+
+made = {"-o": out(os.path.join("made", "a", "x.png")), "--camera-out": out(os.path.join("made", "b", "c.json")),
+        "--edge-mask": out(os.path.join("made", "c", "m.png")),
+        "--reference-mask": out(os.path.join("made", "d", "r.png"))}
+rc, _, err = run(rotor, *small, "--style", "edges", *[x for pair in made.items() for x in pair])
+check(rc == 0 and all(os.path.isfile(path) for path in made.values()),
+      "missing output folders are made for every file written (%r)" % err)
+
+warnings = [
+    (["--style", "edges", "--toon-bands", "4"],
+     "--toon-bands applies to --style toon, toon+edges or sketch; ignored with --style edges"),
+    (["--style", "toon", "--line-width", "3"],
+     "--line-width applies to --style edges, toon+edges, sketch, inked or drawing; ignored with --style toon"),
+    (["--style", "shaded", "--uncertainty", "5"], "--uncertainty applies to --style sketch; ignored with --style shaded"),
+    (["--style", "edges", "--hidden-lines"], "--hidden-lines applies to --style drawing; ignored with --style edges"),
+    (["--style", "inked", "--crease-angle", "20"], "--crease-angle applies to --style edges, toon+edges, sketch or drawing; ignored with --style inked"),
+    (["--style", "edges", "--packed-blur"], "--packed-blur applies only with --encoding packed8 or packed16"),
+    (["--style", "edges", "--suggestive-threshold", "0.1"], "--suggestive-threshold has no effect: --lines has no suggestive"),
+    (["--style", "sketch", "--toon-bands", "5"], "the toon flags apply to the sketch only with --sketch-toon"),
+    (["--style", "drawing", "--lines", "silhouettes,contours"],
+     "--style drawing draws no contours or suggestive contours (only silhouettes, boundaries and creases)"),
+]
+for extra, expected in warnings:
+    style = extra[1]
+    rc, _, plain_err = run(rotor, *small, "--style", style, "-o", out("warn_plain.png"))
+    rc2, _, err = run(rotor, *small, *extra, "-o", out("warn_flag.png"))
+    lines = err.strip().splitlines()
+    same = rc2 == 0 and image(out("warn_flag.png")) == image(out("warn_plain.png")) or "--lines" in extra
+    check(rc == 0 and rc2 == 0 and lines == ["npr-render: warning: " + expected] and same,
+          "%s: one warning, exit 0, the image as without it (%r)" % (" ".join(extra), err.strip()))
+rc, _, err = run(rotor, *small, "--style", "shaded", "--lines", "creases", "--crease-angle", "20",
+                 "--reference-mask", out("ref_only.png"))
+check(rc == 0 and err == "", "--lines and --crease-angle with --reference-mask: no warning (%r)" % err)
+rc, _, err = run(rotor, "--size", "64x48", "--frames", "1", "--style", "edges", "--compare-style", "toon",
+                 "--toon-bands", "4")
+check(rc == 0 and err == "", "a flag of a --compare-style style: no warning (%r)" % err)
 
 print("%d passed, %d failed" % (len(passes), len(failures)))
 sys.exit(1 if failures else 0)

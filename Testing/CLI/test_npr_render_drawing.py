@@ -87,9 +87,13 @@ check(rc == 0 and open(out("image.png"), "rb").read(8) == b"\x89PNG\r\n\x1a\n", 
 
 # Errors: one line each, non-zero, no file.
 os.makedirs(out("folder.svg"), exist_ok=True)
+open(out("a_file"), "w").close()
+rc, _, err = run(part, *common, "-o", out(os.path.join("new", "folder", "x.svg")))
+check(rc == 0 and os.path.isfile(out(os.path.join("new", "folder", "x.svg"))),
+      "-o new/folder/x.svg makes the folders (%r)" % err)
 for target, expected in ((out("drawing.jpg"), "unknown extension (supported: .png, .svg, .pdf, .ps, .eps"),
                          (out("drawing"), "unknown extension"),
-                         (out(os.path.join("no", "such", "dir", "x.svg")), "no such directory"),
+                         (os.path.join(out("a_file"), "x.svg"), "cannot create the folder"),
                          (out("folder.svg"), "is a directory")):
     rc, _, err = run(part, *common, "-o", target)
     lines = err.strip().splitlines()

@@ -146,7 +146,14 @@ else:
     check(rc == 1 and "needs VTK's vtkFFMPEGWriter" in err, "without vtkFFMPEGWriter, AVI is a clear error (%s)"
           % err.strip())
 
+# ---- Frames into a folder that does not exist yet: it is made ----
+rc, _, err = run(cad, "--orbit", "2", "--size", "64x48", "-o", out(os.path.join("frames", "new", "cad.png")))
+check(rc == 0 and sorted(os.listdir(out(os.path.join("frames", "new")))) == ["cad_0001.png", "cad_0002.png"],
+      "--orbit -o frames/new/cad.png makes the folders (%s)" % err.strip())
+
 # ---- Usage errors ----
+open(out("a_file"), "w").close()
+os.makedirs(out("a_folder.ogv"), exist_ok=True)
 for argv, expected in [
     ([cad, "--orbit", "4"], "--orbit needs -o"),
     ([cad, "--orbit", "4", "-o", out("x.gif")], "--orbit needs -o"),
@@ -155,8 +162,9 @@ for argv, expected in [
     ([cad, "--orbit", "0", "-o", out("x.png")], "--orbit"),
     ([cad, "--orbit", "3", "--frames", "2", "-o", out("x.png")], "cannot be combined"),
     ([cad, "--orbit", "3", "--fps", "0", "-o", out("x.ogv")], "--fps"),
-    ([cad, "--orbit", "3", "-o", os.path.join(args.out, "no", "such", "dir", "x.ogv")], "cannot write the video"),
-    ([cad, "--orbit", "3", "-o", os.path.join(args.out, "no", "such", "dir", "x.png")], "cannot write the PNG"),
+    ([cad, "--orbit", "3", "-o", os.path.join(out("a_file"), "x.ogv")], "cannot create the folder"),
+    ([cad, "--orbit", "3", "-o", os.path.join(out("a_file"), "x.png")], "cannot create the folder"),
+    ([cad, "--orbit", "3", "-o", out("a_folder.ogv")], "a_folder.ogv: cannot write the video: is a directory"),
 ]:
     rc, _, err = run(*argv)
     lines = err.strip().splitlines()

@@ -138,10 +138,23 @@ for argv, status, text in [((), 2, "no model file given"),
                            ((bunny, "--size", "big"), 2, "--size expects WxH"),
                            ((bunny, "--wobble"), 2, "unknown option '--wobble'"),
                            ((out("missing.ply"),), 1, "missing.ply: no such file"),
-                           ((bunny, "--camera-in", out("missing.json")), 1, "missing.json")]:
+                           ((bunny, "--camera-in", out("missing.json")), 1, "missing.json"),
+                           ((bunny, "--camera-in", out("missing.json"), "--zoom", "2"), 2,
+                            "cannot be combined with --camera-in"),
+                           ((bunny, "--azimuth", "north"), 2, "--azimuth expects a number"),
+                           ((bunny, "--face-creases", "--encoding", "half"), 2,
+                            "--face-creases needs --encoding float"),
+                           ((bunny, "--line-color", "reddish"), 2, "--line-color expects a colour name")]:
     rc, _, err = run(*argv)
     check(rc == status and err.startswith("npr-view: error: ") and text in err and err.count("\n") == 1,
           "%s: exit %d, one line with %r (got %d, %r)" % (" ".join(argv[1:]) or "no model", status, text, rc, err))
+
+# The keys reach every style, so a style's flag gives no warning; one another flag turns off does.
+rc, stdout, err = run(bunny, "--size", "%dx%d" % (WIDTH, HEIGHT), "--style", "Toon+Edges", "--toon-bands", "4",
+                      "--uncertainty", "5", "--line-color", "navy", "--packed-blur", "--orbit-benchmark", "1")
+check(rc == 0 and json.loads(stdout or "{}").get("style") == "toon+edges" and
+      err == "npr-view: warning: --packed-blur applies only with --encoding packed8 or packed16\n",
+      "--style Toon+Edges, colour names, one warning for a flag that does nothing (%r)" % err)
 
 # ---- --orbit-benchmark: frames timed in the window, one JSON line ------------------------------
 rc, stdout, err = run(bunny, "--size", "%dx%d" % (WIDTH, HEIGHT), "--style", "edges", "--orbit-benchmark", "5")
@@ -268,6 +281,32 @@ except subprocess.TimeoutExpired:
     status = None
 err = viewer.stderr.read()
 check(status == 0 and err == "", "q quits with status 0 and nothing on stderr (%s, %r)" % (status, err))
+
+# ---- --azimuth, --elevation, --zoom: the camera npr-render makes of the same flags -------------
+moves = ["--azimuth", "40", "--elevation", "25", "--zoom", "1.3"]
+moved = subprocess.Popen([args.npr_view, bunny, "--size", "%dx%d" % (WIDTH, HEIGHT), *moves,
+                          "--output-prefix", out("moved-")], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                         text=True)
+found = xdotool("search", "--sync", "--onlyvisible", "--name", "^npr-view: bunny.ply$")
+window = found.stdout.split()[0] if found.returncode == 0 and found.stdout.split() else None
+if window:
+    xdotool("windowfocus", "--sync", window)
+    xdotool("key", "k")
+path = moved.stdout.readline().strip() if window else ""
+xdotool("key", "q")
+try:
+    moved.wait(timeout=60)
+except subprocess.TimeoutExpired:
+    moved.kill()
+result = subprocess.run([args.npr_render, bunny, "--size", "%dx%d" % (WIDTH, HEIGHT), *moves,
+                         "--camera-out", out("moved_render.json")], capture_output=True, text=True, timeout=300)
+view_camera = json.load(open(path)) if os.path.isfile(path) else {}
+render_camera = json.load(open(out("moved_render.json"))) if result.returncode == 0 else {}
+close = all(abs(a - b) <= 1e-6 * max(1.0, abs(b)) for key in ("position", "focal_point", "view_up")
+            for a, b in zip(view_camera.get(key, [1e9]), render_camera.get(key, [0])))
+check(close and view_camera.get("position") != None,
+      "npr-view %s starts from npr-render's camera for the same flags (%s, %s)"
+      % (" ".join(moves), view_camera.get("position"), render_camera.get("position")))
 
 print("%d failure(s)" % len(failures))
 sys.exit(1 if failures else 0)
