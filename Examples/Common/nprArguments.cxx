@@ -5,6 +5,7 @@
 #include "vtkNamedColors.h"
 #include "vtkNew.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -46,6 +47,46 @@ std::string nprArgumentReader::Value()
     throw nprUsageError(this->Argument + " needs a value");
   }
   return this->Arguments[++this->Index];
+}
+
+namespace
+{
+// A colour name read as PyVista reads it (enable_npr's colours): any case, spaces, '_' and '-'
+// ignored, grey spelt either way, looked up among vtkNamedColors' CSS names ("Indian_Red" is
+// CSS's indianred, not VTK's indian_red; "grey" is CSS's 128, not VTK's 192).
+bool LookUpColorName(const std::string& text, double rgb[3])
+{
+  std::string name;
+  for (char c : text)
+  {
+    if (c != ' ' && c != '_' && c != '-')
+    {
+      name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+  }
+  if (name.empty() || name.find_first_not_of("abcdefghijklmnopqrstuvwxyz") != std::string::npos)
+  {
+    return false;
+  }
+  // VTK spells some CSS greys one way only (lightgrey, darkgray): the other spelling is tried too.
+  std::string otherSpelling = name;
+  const size_t grey = name.find("grey"), gray = name.find("gray");
+  if (grey != std::string::npos || gray != std::string::npos)
+  {
+    otherSpelling[(grey != std::string::npos ? grey : gray) + 2] =
+      grey != std::string::npos ? 'a' : 'e';
+  }
+  vtkNew<vtkNamedColors> names;
+  for (const std::string& candidate : { name == "grey" ? otherSpelling : name, otherSpelling })
+  {
+    if (names->ColorExists(candidate))
+    {
+      names->GetColorRGB(candidate, rgb);
+      return true;
+    }
+  }
+  return false;
+}
 }
 
 double nprParseNumber(const std::string& flag, const std::string& text)
@@ -114,10 +155,8 @@ void nprParseColor(const std::string& flag, const std::string& text, double rgb[
     }
     return;
   }
-  vtkNew<vtkNamedColors> names; // CSS and X11 names, as PyVista's (and enable_npr's) colours
-  if (!text.empty() && text.find(',') == std::string::npos && names->ColorExists(text))
+  if (LookUpColorName(text, rgb))
   {
-    names->GetColorRGB(text, rgb);
     return;
   }
   const std::string expected = flag + " expects a colour name (such as red, navy, wheat), r,g,b " +

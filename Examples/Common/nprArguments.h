@@ -53,7 +53,8 @@ int nprParseInteger(const std::string& flag, const std::string& text, int low, i
 // of "FLAG width" or "FLAG height".
 std::pair<int, int> nprParseSize(
   const std::string& flag, const std::string& text, int low, int high, const std::string& format);
-// A colour name of vtkNamedColors ("red", "navy"; any case), r,g,b in 0..1 or #rrggbb.
+// A colour name as PyVista reads it ("red", "Navy", "light_grey": CSS names of vtkNamedColors),
+// r,g,b in 0..1 or #rrggbb.
 void nprParseColor(const std::string& flag, const std::string& text, double rgb[3]);
 // The comma-separated parts, as std::getline splits them: an empty part between two commas is
 // kept (for the caller to refuse), a trailing comma adds none. dropEmpty leaves empty parts out.

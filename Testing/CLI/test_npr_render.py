@@ -378,9 +378,15 @@ pixels = [values[i:i + components] for i in range(0, len(values), components)]
 red = sum(1 for p in pixels if p[0] > 200 and p[1] < 60 and p[2] < 60)
 dark = sum(1 for p in pixels if max(p[:3]) < 60)
 check(rc == 0 and red > 100 and dark < red / 20, "--line-color Red draws red lines (%d red, %d dark pixels)" % (red, dark))
-rc, _, err = run(rotor, *small, "--background", "navy", "--style", "sketch", "--paper-color", "wheat",
-                 "-o", out("named.png"))
-check(rc == 0 and err == "", "colour names for --background and --paper-color (%r)" % err)
+# Names read as PyVista reads them (CSS values): grey is 128 (VTK's own grey is 192), Indian_Red
+# is CSS's indianred (VTK's indian_red differs).
+for name, expected in (("navy", [0, 0, 128]), ("Grey", [128, 128, 128]), ("Indian_Red", [205, 92, 92]),
+                       ("light grey", [211, 211, 211])):
+    rc, _, err = run(rotor, "--size", "32x24", "--background", name, "-o", out("named.png"))
+    corner = image(out("named.png"))[2][:3] if rc == 0 else None
+    check(rc == 0 and err == "" and corner == expected, "--background %s is %s (%s, %r)" % (name, expected, corner, err))
+rc, _, err = run(rotor, *small, "--style", "sketch", "--paper-color", "wheat", "-o", out("named.png"))
+check(rc == 0 and err == "", "a colour name for --paper-color (%r)" % err)
 
 made = {"-o": out(os.path.join("made", "a", "x.png")), "--camera-out": out(os.path.join("made", "b", "c.json")),
         "--edge-mask": out(os.path.join("made", "c", "m.png")),
