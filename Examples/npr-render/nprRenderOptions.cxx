@@ -41,7 +41,8 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
                            over the image unless --style drawing); with --orbit:
                            frames or a video
   --size WxH               image size in pixels (default 1024x768)
-  --compare-style LIST     with --frames: also time these styles (comma separated), frames
+  --compare-style LIST     with --frames: also time these styles (names as --style, comma
+                           separated), frames
                            interleaved with the main style's in the same window; print
                            each median and its ratio to the main style's
   --backend NAME           egl, osmesa or x (default: NPR_BACKEND, else egl;
