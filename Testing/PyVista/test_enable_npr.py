@@ -105,7 +105,13 @@ def case_settings():
     paper = npr.GetSketchPass().GetPaperColor()
     check(np.allclose(paper, (1.0, 128 / 255, 0.0), atol=0.01),
           "paper_color='#ff8000' gives %s" % (paper,))
-    check(len(SETTINGS) >= 15, "%d settings documented" % len(SETTINGS))
+    edges = enable_npr(p, "edges", suggestive_contours=True, suggestive_threshold=0.05,
+                       suggestive_color="navy", smooth_silhouettes=True, face_creases=True).GetEdgePass()
+    check(edges.GetSuggestiveContours() and abs(edges.GetSuggestiveContourThreshold() - 0.05) < 1e-12
+          and np.allclose(edges.GetSuggestiveContourColor(), (0, 0, 128 / 255), atol=0.01)
+          and edges.GetSmoothSilhouettes() and edges.GetFaceCreases(),
+          "the suggestive, smooth-silhouette and face-crease settings reach the edge pass")
+    check(len(SETTINGS) >= 20, "%d settings documented" % len(SETTINGS))
     for args, kwargs, error in (((p, "cartoon"), {}, ValueError),
                                 ((p, "edges"), {"line_widht": 2}, TypeError),
                                 (("not a plotter",), {}, TypeError)):

@@ -23,7 +23,7 @@ import weakref
 import pyvista
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 
-from .vtkRenderingNPR import vtkNPRPass
+from .vtkRenderingNPR import vtkNPRPass, vtkNPRSketchPass
 
 __all__ = ["enable_npr", "disable_npr", "npr_pass", "SETTINGS"]
 
@@ -39,6 +39,11 @@ SETTINGS = {
     "silhouettes": "whether depth discontinuities are drawn (bool)",
     "creases": "whether normal discontinuities are drawn (bool)",
     "contours": "whether object outlines are drawn (bool)",
+    "suggestive_contours": "whether suggestive contours are drawn (bool)",
+    "suggestive_threshold": "strength a suggestive contour needs, 0.0001..1",
+    "suggestive_color": "colour of the suggestive contours",
+    "smooth_silhouettes": "silhouettes also where the shading normal turns away (bool)",
+    "face_creases": "creases between the faces' own normals, for CAD meshes (bool)",
     "crease_angle": "angle in degrees between normals above which a crease is drawn",
     "line_anti_aliasing": "whether lines are anti-aliased (bool)",
     "bands": "number of toon bands",
@@ -64,63 +69,59 @@ def _color(value):
     return pyvista.Color(value).float_rgb
 
 
+def _noise_space(value):
+    spaces = {"screen": vtkNPRSketchPass.SCREEN, "surface": vtkNPRSketchPass.SURFACE}
+    if value not in spaces:
+        raise ValueError("noise_space must be 'surface' or 'screen', got %r" % (value,))
+    return spaces[value]
+
+
+# Each setting: how its value is read, and the (pass, setter) pairs it goes to.
+_SETTERS = {
+    "line_width": (float, [("edges", "SetLineWidth"), ("ink", "SetLineWidth")]),
+    "line_color": (_color, [("edges", "SetSilhouetteColor"), ("edges", "SetCreaseColor"),
+                            ("edges", "SetContourColor"), ("edges", "SetSuggestiveContourColor"),
+                            ("ink", "SetInkColor")]),
+    "silhouette_color": (_color, [("edges", "SetSilhouetteColor")]),
+    "crease_color": (_color, [("edges", "SetCreaseColor")]),
+    "contour_color": (_color, [("edges", "SetContourColor")]),
+    "suggestive_color": (_color, [("edges", "SetSuggestiveContourColor")]),
+    "silhouettes": (bool, [("edges", "SetSilhouettes")]),
+    "creases": (bool, [("edges", "SetCreases")]),
+    "contours": (bool, [("edges", "SetContours")]),
+    "suggestive_contours": (bool, [("edges", "SetSuggestiveContours")]),
+    "suggestive_threshold": (float, [("edges", "SetSuggestiveContourThreshold")]),
+    "smooth_silhouettes": (bool, [("edges", "SetSmoothSilhouettes")]),
+    "face_creases": (bool, [("edges", "SetFaceCreases")]),
+    "crease_angle": (float, [("edges", "SetCreaseAngle")]),
+    "line_anti_aliasing": (bool, [("edges", "SetAntiAliasing")]),
+    "bands": (int, [("toon", "SetNumberOfBands")]),
+    "specular": (bool, [("toon", "SetSpecular")]),
+    "sketch_toon_shading": (bool, [("npr", "SetSketchToonShading")]),
+    "uncertainty": (float, [("sketch", "SetUncertainty")]),
+    "noise_frequency": (float, [("sketch", "SetNoiseFrequency")]),
+    "noise_seed": (int, [("sketch", "SetNoiseSeed")]),
+    "noise_space": (_noise_space, [("sketch", "SetNoiseSpace")]),
+    "paper": (bool, [("sketch", "SetPaper")]),
+    "paper_color": (_color, [("sketch", "SetPaperColor")]),
+    "hidden_lines": (bool, [("npr", "SetHiddenLines")]),
+    "face_color": (_color, [("drawing", "SetFaceColor")]),
+}
+
+
 def _apply(npr, settings):
-    edges, toon, sketch, ink = (npr.GetEdgePass(), npr.GetToonPass(), npr.GetSketchPass(),
-                                npr.GetInkPass())
     unknown = sorted(set(settings) - set(SETTINGS))
     if unknown:
         raise TypeError("enable_npr: unknown setting(s) %s; known: %s"
                         % (", ".join(unknown), ", ".join(sorted(SETTINGS))))
+    passes = {"npr": npr, "edges": npr.GetEdgePass(), "toon": npr.GetToonPass(),
+              "sketch": npr.GetSketchPass(), "ink": npr.GetInkPass(),
+              "drawing": npr.GetDrawingPass()}
     for name, value in settings.items():
-        if name == "line_width":
-            edges.SetLineWidth(float(value))
-            ink.SetLineWidth(float(value))
-        elif name == "line_color":
-            rgb = _color(value)
-            for setter in (edges.SetSilhouetteColor, edges.SetCreaseColor,
-                           edges.SetContourColor, ink.SetInkColor):
-                setter(*rgb)
-        elif name == "silhouette_color":
-            edges.SetSilhouetteColor(*_color(value))
-        elif name == "crease_color":
-            edges.SetCreaseColor(*_color(value))
-        elif name == "contour_color":
-            edges.SetContourColor(*_color(value))
-        elif name == "silhouettes":
-            edges.SetSilhouettes(bool(value))
-        elif name == "creases":
-            edges.SetCreases(bool(value))
-        elif name == "contours":
-            edges.SetContours(bool(value))
-        elif name == "crease_angle":
-            edges.SetCreaseAngle(float(value))
-        elif name == "line_anti_aliasing":
-            edges.SetAntiAliasing(bool(value))
-        elif name == "bands":
-            toon.SetNumberOfBands(int(value))
-        elif name == "specular":
-            toon.SetSpecular(bool(value))
-        elif name == "sketch_toon_shading":
-            npr.SetSketchToonShading(bool(value))
-        elif name == "uncertainty":
-            sketch.SetUncertainty(float(value))
-        elif name == "noise_frequency":
-            sketch.SetNoiseFrequency(float(value))
-        elif name == "noise_seed":
-            sketch.SetNoiseSeed(int(value))
-        elif name == "noise_space":
-            spaces = {"screen": sketch.SCREEN, "surface": sketch.SURFACE}
-            if value not in spaces:
-                raise ValueError("noise_space must be 'surface' or 'screen', got %r" % (value,))
-            sketch.SetNoiseSpace(spaces[value])
-        elif name == "paper":
-            sketch.SetPaper(bool(value))
-        elif name == "paper_color":
-            sketch.SetPaperColor(*_color(value))
-        elif name == "hidden_lines":
-            npr.SetHiddenLines(bool(value))
-        elif name == "face_color":
-            npr.GetDrawingPass().SetFaceColor(*_color(value))
+        read, targets = _SETTERS[name]
+        value = read(value)
+        for which, setter in targets:
+            getattr(passes[which], setter)(*(value if isinstance(value, tuple) else (value,)))
 
 
 def _renderer_of(target):
