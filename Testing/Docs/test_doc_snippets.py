@@ -6,9 +6,12 @@ npr.docs.snippets.<page>; Documentation/testing.md, "Code on the pages").
     test_doc_snippets.py --page Documentation/edges.md --bin-dir build/bin --output-dir DIR
 
 Each fenced block, by its language:
-- sh, cmake, json, xml and unlabelled blocks (commands, build files, file contents, program
-  output): not run here. The npr-render commands of the style pages are run by the pages'
-  images/*/make_images.sh.
+- sh: each npr-render command (a line starting `npr-render` or `build/bin/npr-render`, with its
+  `\` continuations) runs with the built npr-render as python blocks run, and must exit 0 and
+  write the files its -o, --edge-mask, --reference-mask and --camera-out name, as pictures that
+  are not blank. A command whose model is not in the repository (`model.stl`, the benchmark's
+  `build/benchmarks/` meshes) is not run, and says so. Other commands are not run.
+- cmake, json, xml and unlabelled blocks (build files, file contents, program output): not run.
 - python: run as it stands, with /usr/bin/python3, PYTHONPATH and no DISPLAY, from a folder of its
   own whose Testing/ is the repository's (the pages' commands run from the repository root; the
   block's output lands in that folder). It must exit 0, print no VTK error, and write every file
@@ -31,8 +34,10 @@ runs its first block in the ParaView stages). Their blocks are not run here.
 Exits 1 naming each block that failed.
 """
 import argparse
+import json
 import os
 import re
+import shlex
 import shutil
 import subprocess
 import sys
@@ -140,6 +145,14 @@ def is_run_by_a_test(path):
 def blank(path):
     """Why the file is no picture, or None."""
     size = os.path.getsize(path)
+    if path.endswith(".json"):
+        try:
+            json.load(open(path))
+            return None
+        except ValueError:
+            return "not JSON"
+    if path.endswith((".ogv", ".mp4", ".avi")):
+        return None if size > 1000 else "a video of %d bytes" % size
     if path.endswith(".svg"):
         return None if "<path" in open(path).read() else "an SVG without a <path>"
     if path.endswith((".pdf", ".ps", ".eps")):
@@ -163,12 +176,14 @@ def blank(path):
     return None
 
 
-def run(where, command, names, output_dir):
-    """Runs command in a folder of its own with Testing/ reachable and checks the named files."""
-    folder = os.path.join(output_dir, re.sub(r"[^\w.-]", "_", where))
-    shutil.rmtree(folder, ignore_errors=True)
-    os.makedirs(folder)
-    os.symlink(os.path.join(REPOSITORY, "Testing"), os.path.join(folder, "Testing"))
+def run(where, command, names, output_dir, folder_of=None, fresh=True):
+    """Runs command in a folder of its own with Testing/ reachable and checks the named files.
+    The commands of one block share the folder of folder_of; all but the first keep it (fresh)."""
+    folder = os.path.join(output_dir, re.sub(r"[^\w.-]", "_", folder_of or where))
+    if fresh:
+        shutil.rmtree(folder, ignore_errors=True)
+        os.makedirs(folder)
+        os.symlink(os.path.join(REPOSITORY, "Testing"), os.path.join(folder, "Testing"))
     env = dict(os.environ, DISPLAY="")
     result = subprocess.run(command, cwd=folder, env=env, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, universal_newlines=True, timeout=300)
@@ -189,6 +204,46 @@ def run(where, command, names, output_dir):
             fail(where, "%s: %s" % (name, why))
         else:
             print("%s: wrote %s (%d bytes)" % (where, name, os.path.getsize(path)))
+
+
+MODEL = re.compile(r"\.(stl|obj|ply|vtp|vtk|gltf|glb|off)$", re.I)
+WRITTEN = ("-o", "--output", "--edge-mask", "--reference-mask", "--camera-out")
+
+
+def npr_render_commands(text):
+    """The block's npr-render commands, each as its arguments (continuations joined, comments
+    dropped)."""
+    commands, pending = [], ""
+    for line in text.split("\n"):
+        pending += line.rstrip()
+        if pending.endswith("\\"):
+            pending = pending[:-1] + " "
+            continue
+        words = shlex.split(pending, comments=True)
+        while words and re.match(r"^\w+=", words[0]):  # VAR=value before the program
+            words = words[1:]
+        if words and words[0] in ("npr-render", "build/bin/npr-render"):
+            commands.append(words[1:])
+        pending = ""
+    return commands
+
+
+def run_npr_render(where, block, first, arguments, bin_dir, output_dir):
+    """Runs one documented npr-render command from a folder whose Testing/ is the repository's
+    (block's, afresh when first); False when its model is not in the repository."""
+    models = [word for word in arguments if MODEL.search(word) and not word.startswith("-")
+              and (len(arguments) < 2 or arguments[arguments.index(word) - 1] not in WRITTEN)]
+    absent = [model for model in models if not os.path.isfile(os.path.join(REPOSITORY, model))]
+    if absent or not models:
+        print("%s: not run: npr-render %s (its model %s is not in the repository)"
+              % (where, " ".join(arguments), ", ".join(absent) or "?"))
+        return False
+    written = [arguments[i + 1] for i, word in enumerate(arguments[:-1]) if word in WRITTEN]
+    if "--orbit" in arguments:  # -o NAME.png writes NAME_0001.png, ...
+        written = [re.sub(r"\.png$", "_0001.png", name) for name in written]
+    print("%s: npr-render %s" % (where, " ".join(arguments)))
+    run(where, [os.path.join(bin_dir, "npr-render"), *arguments], written, output_dir, block, first)
+    return True
 
 
 def main():
@@ -225,6 +280,13 @@ def main():
             with open(script, "w") as f:
                 f.write(text)
             run(where, ["/usr/bin/python3", script], OUTPUT.findall(text), args.output_dir)
+        elif language == "sh":
+            first = True  # the block's first command that runs starts its folder afresh
+            for number, command in enumerate(npr_render_commands(text)):
+                counted += 1
+                if run_npr_render("%s.%d" % (where, number + 1), where, first, command,
+                                  args.bin_dir, args.output_dir):
+                    first = False
         elif language not in NOT_RUN:
             counted += 1
             fail(where, "a ```%s block needs a marker <!-- snippet: PATH --> naming its program"
