@@ -129,9 +129,9 @@ std::string WhyNoWindow(const std::string& reason)
          "npr-render-osmesa with the same options";
 }
 
-int Run(const nprRenderOptions& options, nprOutputWindow* messages)
+// The folders of every file the options write, before minutes of reading and rendering.
+void MakeOutputFolders(const nprRenderOptions& options)
 {
-  // Before minutes of reading and rendering: the folders of every file written.
   for (const std::string* path :
     { &options.Output, &options.CameraOut, &options.EdgeMask, &options.ReferenceMask })
   {
@@ -140,6 +140,11 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
       nprMakeOutputFolders(*path);
     }
   }
+}
+
+int Run(const nprRenderOptions& options, nprOutputWindow* messages)
+{
+  MakeOutputFolders(options);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(options.Background[0], options.Background[1], options.Background[2]);
   // "shaded" is VTK's own chain, untouched: the baseline every style is measured against.
