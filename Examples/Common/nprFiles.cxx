@@ -3,10 +3,11 @@
 #include "nprFiles.h"
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <system_error>
+
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -47,13 +48,13 @@ std::string nprWhyNotWritable(const std::string& path)
   {
     return "no such directory: " + folder.string();
   }
-  // Opened for appending, so that an existing file is not truncated by the question.
-  std::FILE* probe = std::fopen(path.c_str(), "ab");
-  if (!probe)
+  // Asked without opening, so that the question leaves no file behind.
+  const std::string asked =
+    fs::exists(path, error) ? path : (folder.empty() ? "." : folder.string());
+  if (access(asked.c_str(), W_OK) != 0)
   {
     return std::strerror(errno);
   }
-  std::fclose(probe);
   return "the writer failed (the disk may be full)";
 }
 

@@ -322,6 +322,11 @@ std::string StyleList(unsigned styles)
   return list;
 }
 
+bool IsPacked(int encoding)
+{
+  return encoding == vtkNPREdgePass::PACKED8 || encoding == vtkNPREdgePass::PACKED16;
+}
+
 // A flag that none of the drawing styles uses.
 void WarnUnusedFlags(const nprPassSettings& pass, unsigned drawn, const std::set<std::string>& also,
   std::vector<std::string>& warnings)
@@ -340,8 +345,7 @@ void WarnUnusedFlags(const nprPassSettings& pass, unsigned drawn, const std::set
 void WarnOverriddenFlags(
   const nprPassSettings& pass, unsigned drawn, std::vector<std::string>& warnings)
 {
-  const bool packed =
-    pass.Encoding == vtkNPREdgePass::PACKED8 || pass.Encoding == vtkNPREdgePass::PACKED16;
+  const bool packed = IsPacked(pass.Encoding);
   auto given = [&](const char* flag) { return pass.GivenFlags.count(flag) > 0; };
   for (const char* flag : { "--packed-threshold", "--packed-blur" })
   {
@@ -374,8 +378,7 @@ void RefuseImpossible(const nprPassSettings& pass, unsigned drawn)
                         "normals), not " +
       encoding);
   }
-  const bool packed =
-    pass.Encoding == vtkNPREdgePass::PACKED8 || pass.Encoding == vtkNPREdgePass::PACKED16;
+  const bool packed = IsPacked(pass.Encoding);
   if ((drawn & ImageLines) && packed && (pass.SmoothSilhouettes || pass.SuggestiveContours))
   {
     throw nprUsageError(

@@ -231,8 +231,8 @@ def npr_render_commands(text):
 def run_npr_render(where, block, first, arguments, bin_dir, output_dir):
     """Runs one documented npr-render command from a folder whose Testing/ is the repository's
     (block's, afresh when first); False when its model is not in the repository."""
-    models = [word for word in arguments if MODEL.search(word) and not word.startswith("-")
-              and (len(arguments) < 2 or arguments[arguments.index(word) - 1] not in WRITTEN)]
+    models = [word for before, word in zip([""] + arguments, arguments)
+              if MODEL.search(word) and before not in WRITTEN]
     absent = [model for model in models if not os.path.isfile(os.path.join(REPOSITORY, model))]
     if absent or not models:
         print("%s: not run: npr-render %s (its model %s is not in the repository)"
