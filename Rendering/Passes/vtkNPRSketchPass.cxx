@@ -12,6 +12,7 @@
 #include "vtkNPRPassUtilities.h"
 #include "vtkNPRQuadProgram.h"
 #include "vtkNPRRenderTarget.h"
+#include "vtkNPRSketchNoise.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLCamera.h"
@@ -31,188 +32,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
-#include <mutex>
-#include <random>
 #include <sstream>
 #include <vector>
 
 namespace
 {
-constexpr int NoiseSize = 256; // texels of the tile on each side
-constexpr int NoiseCells = 8;  // lattice cells of the tile on each side
-constexpr int TexelsPerCell = NoiseSize / NoiseCells;
-
-// Periodic 2D Perlin gradient noise over a NoiseCells x NoiseCells lattice.
-struct GradientNoise
-{
-  double Gradients[NoiseCells][NoiseCells][2];
-
-  explicit GradientNoise(std::mt19937& random)
-  {
-    for (auto& row : this->Gradients)
-    {
-      for (auto& gradient : row)
-      {
-        // The raw 32-bit output, so that a seed gives the same angles on every platform.
-        const double angle = random() * (2.0 * vtkMath::Pi() / 4294967296.0);
-        gradient[0] = std::cos(angle);
-        gradient[1] = std::sin(angle);
-      }
-    }
-  }
-
-  static double Fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
-
-  double Corner(int i, int j, double dx, double dy) const
-  {
-    const double* g = this->Gradients[i % NoiseCells][j % NoiseCells];
-    return g[0] * dx + g[1] * dy;
-  }
-
-  // x, y in lattice cells, in [0, NoiseCells).
-  double operator()(double x, double y) const
-  {
-    const int i = static_cast<int>(std::floor(x));
-    const int j = static_cast<int>(std::floor(y));
-    const double fx = x - i, fy = y - j;
-    const double u = Fade(fx), v = Fade(fy);
-    const double n00 = this->Corner(i, j, fx, fy);
-    const double n10 = this->Corner(i + 1, j, fx - 1.0, fy);
-    const double n01 = this->Corner(i, j + 1, fx, fy - 1.0);
-    const double n11 = this->Corner(i + 1, j + 1, fx - 1.0, fy - 1.0);
-    return (n00 + u * (n10 - n00)) + v * ((n01 + u * (n11 - n01)) - (n00 + u * (n10 - n00)));
-  }
-};
-
-// The surface noise's tile: 64^3 texels, interpolated trilinearly by the texture unit. Its rg
-// components are a 3D Perlin gradient noise of 4 texels a cell and a period of 8 cells (twice
-// over the tile), and its ba components the same noise at half the frequency (8 texels a cell),
-// so that one fetch gives both octaves the shader blends, and the coarse octave at one level is
-// the fine one at the next. At 4 texels a cell the interpolation departs from the noise by under
-// 5 % of its range.
-constexpr int SurfaceNoiseCells = 8;         // of the fine octave, in its period
-constexpr int SurfaceNoiseTexelsPerCell = 4; // of the fine octave
-constexpr int SurfaceNoiseSize = 2 * SurfaceNoiseCells * SurfaceNoiseTexelsPerCell;
-constexpr int SurfaceNoiseTileCells = 2 * SurfaceNoiseCells; // fine cells across the tile
-
-struct GradientNoise3D
-{
-  std::vector<double> Gradients; // 3 per lattice point
-
-  explicit GradientNoise3D(std::mt19937& random)
-    : Gradients(3 * SurfaceNoiseCells * SurfaceNoiseCells * SurfaceNoiseCells)
-  {
-    for (size_t i = 0; i < this->Gradients.size(); i += 3)
-    {
-      // Uniform on the sphere, from the raw 32-bit outputs (the same on every platform).
-      const double z = random() * (2.0 / 4294967296.0) - 1.0;
-      const double angle = random() * (2.0 * vtkMath::Pi() / 4294967296.0);
-      const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-      this->Gradients[i] = r * std::cos(angle);
-      this->Gradients[i + 1] = r * std::sin(angle);
-      this->Gradients[i + 2] = z;
-    }
-  }
-
-  double Corner(int i, int j, int k, double dx, double dy, double dz) const
-  {
-    constexpr int n = SurfaceNoiseCells;
-    const double* g = &this->Gradients[3 * (((k % n) * n + (j % n)) * n + (i % n))];
-    return g[0] * dx + g[1] * dy + g[2] * dz;
-  }
-
-  // x, y, z in lattice cells, >= 0.
-  double operator()(double x, double y, double z) const
-  {
-    const int i = static_cast<int>(std::floor(x));
-    const int j = static_cast<int>(std::floor(y));
-    const int k = static_cast<int>(std::floor(z));
-    const double fx = x - i, fy = y - j, fz = z - k;
-    const double u = GradientNoise::Fade(fx), v = GradientNoise::Fade(fy),
-                 w = GradientNoise::Fade(fz);
-    double planes[2];
-    for (int dk = 0; dk < 2; ++dk)
-    {
-      const double cz = fz - dk;
-      const double n00 = this->Corner(i, j, k + dk, fx, fy, cz);
-      const double n10 = this->Corner(i + 1, j, k + dk, fx - 1.0, fy, cz);
-      const double n01 = this->Corner(i, j + 1, k + dk, fx, fy - 1.0, cz);
-      const double n11 = this->Corner(i + 1, j + 1, k + dk, fx - 1.0, fy - 1.0, cz);
-      const double bottom = n00 + u * (n10 - n00);
-      const double top = n01 + u * (n11 - n01);
-      planes[dk] = bottom + v * (top - bottom);
-    }
-    return planes[0] + w * (planes[1] - planes[0]);
-  }
-};
-
-// The surface noise tile of a seed (four bytes per texel: two noise vectors, |vector| <= 1, as v /
-// 2 + 1/2). Kept for the last seed asked, as every new pass of the same seed (a window per view)
-// would make it again.
-std::shared_ptr<const std::vector<unsigned char>> SurfaceNoiseTile(unsigned int seed)
-{
-  static std::mutex mutex;
-  static unsigned int lastSeed = 0;
-  static std::shared_ptr<const std::vector<unsigned char>> last;
-  std::lock_guard<std::mutex> lock(mutex);
-  if (last && lastSeed == seed)
-  {
-    return last;
-  }
-  std::mt19937 random(seed);
-  const GradientNoise3D noiseX(random);
-  const GradientNoise3D noiseY(random);
-  constexpr size_t texels =
-    static_cast<size_t>(SurfaceNoiseSize) * SurfaceNoiseSize * SurfaceNoiseSize;
-  std::vector<double> vectors(4 * texels);
-  double largest = 0.0;
-  size_t index = 0;
-  for (int z = 0; z < SurfaceNoiseSize; ++z)
-  {
-    for (int y = 0; y < SurfaceNoiseSize; ++y)
-    {
-      for (int x = 0; x < SurfaceNoiseSize; ++x, index += 4)
-      {
-        const double at[3] = { static_cast<double>(x) / SurfaceNoiseTexelsPerCell,
-          static_cast<double>(y) / SurfaceNoiseTexelsPerCell,
-          static_cast<double>(z) / SurfaceNoiseTexelsPerCell };
-        vectors[index] = noiseX(at[0], at[1], at[2]);
-        vectors[index + 1] = noiseY(at[0], at[1], at[2]);
-        // Half the frequency: the same noise, read at half the lattice coordinates.
-        vectors[index + 2] = noiseX(0.5 * at[0], 0.5 * at[1], 0.5 * at[2]);
-        vectors[index + 3] = noiseY(0.5 * at[0], 0.5 * at[1], 0.5 * at[2]);
-        largest = std::max(largest, std::hypot(vectors[index], vectors[index + 1]));
-      }
-    }
-  }
-  // 8-bit unsigned normalised storage, v / 2 + 1/2 (the shader undoes it): llvmpipe filters
-  // 8-bit textures much faster than float ones, and 1/255 of the noise's range is 0.01 px of
-  // a 3 px uncertainty.
-  const double scale = largest > 0.0 ? 1.0 / largest : 0.0;
-  auto tile = std::make_shared<std::vector<unsigned char>>(4 * texels);
-  for (size_t i = 0; i < vectors.size(); ++i)
-  {
-    const double value = 127.5 + 127.5 * vectors[i] * scale;
-    (*tile)[i] = static_cast<unsigned char>(std::min(255.0, std::max(0.0, std::round(value))));
-  }
-  lastSeed = seed;
-  last = tile;
-  return last;
-}
-
-// The matrix scaled down to operator norm 1 when its norm is larger.
-void NormalisedMatrix(const double m[4], double out[4])
-{
-  const double t = m[0] * m[0] + m[1] * m[1] + m[2] * m[2] + m[3] * m[3];
-  const double d = m[0] * m[3] - m[1] * m[2];
-  const double norm = std::sqrt(0.5 * (t + std::sqrt(std::max(0.0, t * t - 4.0 * d * d))));
-  const double scale = norm > 1.0 ? 1.0 / norm : 1.0;
-  for (int i = 0; i < 4; ++i)
-  {
-    out[i] = std::isfinite(m[i]) ? m[i] * scale : 0.0;
-  }
-}
+constexpr int NoiseSize = vtkNPRSketchNoise::ScreenTileSize;
 }
 
 struct vtkNPRSketchPass::Internals
@@ -281,7 +106,8 @@ double vtkNPRSketchPass::GetEffectiveUncertainty(vtkRenderer* renderer) const
 
 double vtkNPRSketchPass::GetEffectiveNoiseScale(vtkRenderer* renderer) const
 {
-  return this->NoiseFrequency / 100.0 * TexelsPerCell / vtkNPRWindowScale(renderer);
+  return this->NoiseFrequency / 100.0 * vtkNPRSketchNoise::ScreenTexelsPerCell /
+    vtkNPRWindowScale(renderer);
 }
 
 vtkImageData* vtkNPRSketchPass::GetNoiseImage()
@@ -291,38 +117,12 @@ vtkImageData* vtkNPRSketchPass::GetNoiseImage()
   {
     return internal.NoiseImage;
   }
-  std::mt19937 random(this->NoiseSeed);
-  const GradientNoise noiseX(random);
-  const GradientNoise noiseY(random);
+  const std::vector<float> tile = vtkNPRSketchNoise::ScreenTile(this->NoiseSeed);
   vtkNew<vtkFloatArray> values;
   values->SetName("noise");
   values->SetNumberOfComponents(2);
   values->SetNumberOfTuples(NoiseSize * NoiseSize);
-  std::vector<double> vectors(2 * NoiseSize * NoiseSize);
-  double largest = 0.0;
-  for (int y = 0; y < NoiseSize; ++y)
-  {
-    for (int x = 0; x < NoiseSize; ++x)
-    {
-      const double u = static_cast<double>(x) / TexelsPerCell;
-      const double v = static_cast<double>(y) / TexelsPerCell;
-      double* n = &vectors[2 * (y * NoiseSize + x)];
-      n[0] = noiseX(u, v);
-      n[1] = noiseY(u, v);
-      largest = std::max(largest, std::hypot(n[0], n[1]));
-    }
-  }
-  // Vectors of length up to 1: bilinear mixes of them stay within 1.
-  const double scale = largest > 0.0 ? 1.0 / largest : 0.0;
-  for (vtkIdType i = 0; i < NoiseSize * NoiseSize; ++i)
-  {
-    // Rounded towards zero so that float storage cannot push a length above 1.
-    for (int c = 0; c < 2; ++c)
-    {
-      const double value = vectors[2 * i + c] * scale * (1.0 - 1e-6);
-      values->SetTypedComponent(i, c, static_cast<float>(value));
-    }
-  }
+  std::copy(tile.begin(), tile.end(), values->GetPointer(0));
   internal.NoiseImage->SetDimensions(NoiseSize, NoiseSize, 1);
   internal.NoiseImage->GetPointData()->SetScalars(values);
   internal.NoiseImageSeed = this->NoiseSeed;
@@ -354,7 +154,7 @@ void vtkNPRSketchPass::GetDisplacement(
     n[c] = bottom + (top - bottom) * f[1];
   }
   double m[4];
-  NormalisedMatrix(surfaces ? this->SurfaceMatrix : this->EdgeMatrix, m);
+  vtkNPRSketchNoise::NormalisedMatrix(surfaces ? this->SurfaceMatrix : this->EdgeMatrix, m);
   const double amplitude = this->GetEffectiveUncertainty(renderer);
   displacement[0] = amplitude * (m[0] * n[0] + m[1] * n[1]);
   displacement[1] = amplitude * (m[2] * n[0] + m[3] * n[1]);
@@ -518,7 +318,7 @@ void vtkNPRSketchPass::SetSketchUniforms(
   for (int which = 0; which < 2; ++which)
   {
     double m[4];
-    NormalisedMatrix(which == 0 ? this->EdgeMatrix : this->SurfaceMatrix, m);
+    vtkNPRSketchNoise::NormalisedMatrix(which == 0 ? this->EdgeMatrix : this->SurfaceMatrix, m);
     float displacement[4];
     for (int i = 0; i < 4; ++i)
     {
@@ -681,13 +481,14 @@ vtkTextureObject* vtkNPRSketchPass::PrepareSurfaceNoiseTile(vtkOpenGLRenderWindo
       internal.SurfaceNoiseTexture =
         vtkNPRNewTexture(window, vtkTextureObject::Linear, vtkTextureObject::Repeat);
     }
-    auto tile = SurfaceNoiseTile(this->NoiseSeed);
+    auto tile = vtkNPRSketchNoise::SurfaceTile(this->NoiseSeed);
     vtkTextureObject* texture = internal.SurfaceNoiseTexture;
     texture->SetInternalFormat(GL_RGBA8);
     texture->SetFormat(GL_RGBA);
     texture->SetDataType(GL_UNSIGNED_BYTE);
-    texture->Create3DFromRaw(SurfaceNoiseSize, SurfaceNoiseSize, SurfaceNoiseSize, 4,
-      VTK_UNSIGNED_CHAR, const_cast<unsigned char*>(tile->data()));
+    texture->Create3DFromRaw(vtkNPRSketchNoise::SurfaceTileSize, vtkNPRSketchNoise::SurfaceTileSize,
+      vtkNPRSketchNoise::SurfaceTileSize, 4, VTK_UNSIGNED_CHAR,
+      const_cast<unsigned char*>(tile->data()));
     internal.SurfaceNoiseTextureSeed = this->NoiseSeed;
   }
   return internal.SurfaceNoiseTexture;
@@ -716,7 +517,8 @@ void vtkNPRSketchPass::SetSurfaceNoiseUniforms(
     const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(bounds, bounds + 3));
     if (std::isfinite(diagonal) && diagonal > 0.0)
     {
-      const double grid = SurfaceNoiseTileCells * std::exp2(std::ceil(std::log2(8.0 * diagonal)));
+      const double grid =
+        vtkNPRSketchNoise::SurfaceTileCells * std::exp2(std::ceil(std::log2(8.0 * diagonal)));
       for (int i = 0; i < 3; ++i)
       {
         anchor[i] = std::round(0.5 * (bounds[2 * i] + bounds[2 * i + 1]) / grid) * grid;
@@ -738,7 +540,7 @@ void vtkNPRSketchPass::SetSurfaceNoiseUniforms(
     "pixelFootprint", static_cast<float>(yScale != 0.0 ? 2.0 / height / std::abs(yScale) : 0.0));
   program->SetUniformf(
     "cellPixels", static_cast<float>(100.0 / this->NoiseFrequency * vtkNPRWindowScale(renderer)));
-  program->SetUniformf("noiseCells", static_cast<float>(SurfaceNoiseTileCells));
+  program->SetUniformf("noiseCells", static_cast<float>(vtkNPRSketchNoise::SurfaceTileCells));
   program->SetUniformf("noiseReach", static_cast<float>(reach));
 }
 

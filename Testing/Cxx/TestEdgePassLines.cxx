@@ -3,8 +3,8 @@
 // The lines of the edge pass (vtkNPREdgePass over vtkNPRGBufferPass) where their place can be
 // stated: a cube's visible edges projected analytically, in perspective and parallel; no false
 // line on a plane seen at a grazing angle, nor on a shallow fold seen nearly edge-on (while a step
-// of that size is drawn); the id contour between touching objects, and its
-// sides; anti-aliasing, line width and DPI along a slanted silhouette.
+// of that size is drawn); creases from the crease angle on, never below; the id contour between
+// touching objects, and its sides; anti-aliasing, line width and DPI along a slanted silhouette.
 //
 // usage: TestEdgePassLines CASE [DATA_DIR]   (CASE: see the table at the end of this file)
 #include "nprTesting.h"
@@ -262,6 +262,72 @@ int GrazingFold(bool parallel, bool gap)
   return nprTestResult();
 }
 
+// ---- A roof seen from the front: a crease where its faces turn by more than the crease angle ----
+// The faces turn by `turn` degrees at the fold (flat normals, one object, no depth step); the
+// crease is drawn from the crease angle less its ramp (a quarter of the angle, at most 1 degree)
+// and in full past it, never below. Angles inside the ramp check that no pixel on a crease is
+// skipped as plain surface before its test.
+int CreaseThreshold(double creaseAngle, double turn)
+{
+  Scene scene(400, 300);
+  const double pi = std::acos(-1.0);
+  const double half = 0.5 * turn * pi / 180.0;
+  vtkNew<vtkPlaneSource> faceA; // upwards from the fold, receding; its normal towards the eye
+  faceA->SetOrigin(-1, 0, 0);
+  faceA->SetPoint1(1, 0, 0);
+  faceA->SetPoint2(-1, std::cos(half), -std::sin(half));
+  vtkNew<vtkPlaneSource> faceB; // downwards
+  faceB->SetOrigin(-1, 0, 0);
+  faceB->SetPoint1(-1, -std::cos(half), -std::sin(half));
+  faceB->SetPoint2(1, 0, 0);
+  // Not merged: each face keeps its own normals along the fold, as a mesh split at its creases.
+  vtkNew<vtkAppendPolyData> both;
+  both->AddInputConnection(faceA->GetOutputPort());
+  both->AddInputConnection(faceB->GetOutputPort());
+  nprAddActor(scene.Renderer, both->GetOutputPort(), Grey);
+  vtkCamera* camera = scene.Camera();
+  camera->SetPosition(0, 0, 10);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(14);
+  camera->SetClippingRange(5, 15);
+  scene.Edges()->SetCreaseAngle(creaseAngle);
+  scene.Edges()->SetLineWidth(1.0);
+  scene.Edges()->AntiAliasingOff();
+  auto mask = scene.Mask();
+  const double foldLeft[3] = { -0.8, 0, 0 };
+  const double foldRight[3] = { 0.8, 0, 0 };
+  double left[2], right[2];
+  scene.Project(foldLeft, left);
+  scene.Project(foldRight, right);
+  long long near = 0, elsewhere = 0;
+  for (int y = 0; y < 300; ++y)
+  {
+    for (int x = static_cast<int>(left[0]); x <= static_cast<int>(right[0]); ++x)
+    {
+      const bool onFold = std::abs(y + 0.5 - left[1]) <= 3.0;
+      const bool lit = nprPixel(mask, x, y) > 127;
+      near += onFold && lit ? 1 : 0;
+      // The faces' far borders are silhouettes: only the rows between them and the fold count.
+      elsewhere += !onFold && std::abs(y + 0.5 - left[1]) < 40.0 && lit ? 1 : 0;
+    }
+  }
+  const double ramp = std::min(1.0, 0.25 * creaseAngle) * 1.0027; // 0.0175 rad
+  const double length = right[0] - left[0];
+  std::cout << "crease angle " << creaseAngle << ", faces turning by " << turn << ": " << near
+            << " line pixels on the " << length << " px fold, " << elsewhere << " beside it\n";
+  NPR_CHECK(elsewhere == 0, elsewhere << " line pixels on the faces beside the fold");
+  if (turn < creaseAngle - ramp)
+  {
+    NPR_CHECK(near == 0, near << " line pixels on a fold below the crease angle");
+  }
+  else
+  {
+    NPR_CHECK(near >= 0.95 * length, "the crease is drawn along only " << near << " pixels");
+  }
+  return nprTestResult();
+}
+
 // ---- Two cubes touching face to face, seen straight on: only the id contour separates them ----
 int TouchingObjects()
 {
@@ -438,6 +504,21 @@ int main(int argc, char* argv[])
     { "grazing-step", [] { return GrazingFold(false, true); } },
     { "grazing-step-parallel", [] { return GrazingFold(true, true); } },
     { "touching-objects", TouchingObjects },
+    // Below the ramp, inside it (0.7 of the way up) and past it, at three crease angles.
+    { "crease-threshold",
+      []
+      {
+        int failed = 0;
+        for (double angle : { 30.0, 10.0, 2.0 })
+        {
+          const double ramp = std::min(1.0, 0.25 * angle) * 1.0027;
+          for (double turn : { angle - ramp - 0.5, angle + 0.7 * ramp, angle + ramp + 1.0 })
+          {
+            failed |= CreaseThreshold(angle, turn);
+          }
+        }
+        return failed;
+      } },
     { "antialiasing", AntiAliasing },
   };
   return nprRunTestCase(argc, argv, cases);

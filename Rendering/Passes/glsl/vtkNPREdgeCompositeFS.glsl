@@ -54,8 +54,9 @@ void main()
 #if !NPR_LINES && NPR_OUTPUT == 0
   if (depth >= 1.0)
   {
-    // Background and no line: nothing to write. First, so that a whole block of such pixels ends
-    // llvmpipe's work on it at one fetch (a branch would not: llvmpipe runs both of its sides).
+    // Background and no line: nothing to write. (No saving on llvmpipe, which runs the code after
+    // a discard even for a block of pixels that all took it; what it spares is the background's
+    // branch below, compiled out.)
     discard;
   }
 #endif
