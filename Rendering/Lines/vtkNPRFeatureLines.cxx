@@ -66,6 +66,7 @@ void AddMeshEdges(const vtkNPRMeshAdjacency& adjacency,
 void AddContours(const vtkNPRMeshAdjacency& adjacency, vtkPoints* points, vtkCellArray* lines,
   vtkUnsignedCharArray* types, vtkIdTypeArray* inputIds, vtkIdTypeArray* contourTriangles)
 {
+  const vtkNPRSmoothContours& contours = adjacency.GetContours();
   std::unordered_map<std::uint64_t, vtkIdType> edgePoints;
   auto zeroPoint = [&](std::uint32_t a, std::uint32_t b)
   {
@@ -79,7 +80,7 @@ void AddContours(const vtkNPRMeshAdjacency& adjacency, vtkPoints* points, vtkCel
     {
       return found->second;
     }
-    const double ga = adjacency.GetFacing(a), gb = adjacency.GetFacing(b);
+    const double ga = contours.GetFacing(a), gb = contours.GetFacing(b);
     const double t = ga / (ga - gb); // the signs differ: in [0, 1]
     double pa[3], pb[3];
     adjacency.GetMesh().GetPoint(a, pa);
@@ -91,11 +92,11 @@ void AddContours(const vtkNPRMeshAdjacency& adjacency, vtkPoints* points, vtkCel
     return id;
   };
   const unsigned char type = vtkNPRFeatureLines::SILHOUETTE | vtkNPRFeatureLines::SMOOTH_CONTOUR;
-  for (const auto& listed : adjacency.GetContourSegments())
+  for (const auto& listed : contours.GetSegments())
   {
-    for (const vtkNPRMeshAdjacency::ContourSegment& segment : listed)
+    for (const vtkNPRSmoothContours::Segment& segment : listed)
     {
-      const std::uint32_t* ids = adjacency.GetContourTriangle(segment.Triangle);
+      const std::uint32_t* ids = contours.GetTriangle(segment.Triangle);
       const std::uint32_t rise[2] = { ids[segment.Rise], ids[(segment.Rise + 1) % 3] };
       const std::uint32_t fall[2] = { ids[segment.Fall], ids[(segment.Fall + 1) % 3] };
       const vtkIdType ends[2] = { zeroPoint(rise[0], rise[1]), zeroPoint(fall[0], fall[1]) };
@@ -214,16 +215,15 @@ int vtkNPRFeatureLines::RequestData(
     adjacency.UpdateCreases(this->FeatureAngle);
   }
   // Smooth contours replace the mesh silhouettes only where the input has point normals.
-  vtkDataArray* contourNormals = this->Silhouettes && this->SmoothContours
-    ? vtkNPRMeshAdjacency::ContourNormals(input)
-    : nullptr;
+  vtkDataArray* contourNormals =
+    this->Silhouettes && this->SmoothContours ? vtkNPRSmoothContours::PointNormals(input) : nullptr;
   const bool smooth = contourNormals && adjacency.GetNumberOfEdges() > 0;
   view.Silhouettes = this->Silhouettes && !smooth;
   view.SplitContours = smooth;
   const double* viewpoint = view.Parallel ? view.Direction : view.Eye;
   if (smooth)
   {
-    adjacency.ComputeContours(input, contourNormals, view.Parallel, viewpoint);
+    adjacency.ComputeContours(contourNormals, view.Parallel, viewpoint);
   }
   if (view.Silhouettes || smooth)
   {

@@ -13,8 +13,9 @@
 #ifndef vtkNPRMeshAdjacency_h
 #define vtkNPRMeshAdjacency_h
 
-#include "vtkNPRMeshFaces.h" // for vtkNPRMeshFaces
-#include "vtkType.h"         // for vtkIdType, vtkMTimeType
+#include "vtkNPRMeshFaces.h"      // for vtkNPRMeshFaces
+#include "vtkNPRSmoothContours.h" // for vtkNPRSmoothContours
+#include "vtkType.h"              // for vtkIdType, vtkMTimeType
 
 #include <atomic>  // for the build's buckets
 #include <cstddef> // for size_t
@@ -51,14 +52,21 @@ public:
   vtkIdType GetNumberOfDegenerateFaces() const { return this->DegenerateFaces; }
   vtkIdType GetNumberOfNonFiniteFaces() const { return this->NonFiniteFaces; }
   vtkIdType GetNumberOfUnsureFaces() const { return this->UnsureFaces; }
-  vtkIdType GetNumberOfSkippedContourTriangles() const { return this->SkippedContourTriangles; }
+  vtkIdType GetNumberOfSkippedContourTriangles() const
+  {
+    return this->Contours.GetNumberOfSkippedTriangles();
+  }
   // Bytes held between updates (the smooth contours' tables included, once made).
   size_t GetMemorySize() const;
   const vtkNPRMeshFaces& GetMesh() const { return this->Mesh; }
 
   // ---- Each viewpoint ----
   // Zeroes the counts of the last update (unsure faces, skipped contour triangles).
-  void ClearViewCounts() { this->UnsureFaces = this->SkippedContourTriangles = 0; }
+  void ClearViewCounts()
+  {
+    this->UnsureFaces = 0;
+    this->Contours.ClearSkippedTriangles();
+  }
   // The Crease bits for this angle (degrees), made again only when it changes.
   void UpdateCreases(double angle);
   // FaceSides and UnsureFaces for an eye (perspective) or a direction of projection (parallel).
@@ -87,27 +95,13 @@ public:
   std::vector<TypedEdge> ClassifyEdges(const View& view) const;
 
   // ---- Smooth contours ----
-  // The point normals a smooth contour can use: 3 components, one per point; else nullptr.
-  static vtkDataArray* ContourNormals(vtkPolyData* input);
-  // Facing, ContourSegments and SkippedContourTriangles for an eye (perspective) or a direction
-  // of projection (parallel), from the input's point normals (ContourNormals).
-  void ComputeContours(
-    vtkPolyData* input, vtkDataArray* normals, bool parallel, const double view[3]);
-  struct ContourSegment
+  // Facing, segments and skipped triangles (GetContours) for an eye (perspective) or a direction
+  // of projection (parallel), from the input's point normals (vtkNPRSmoothContours::PointNormals).
+  void ComputeContours(vtkDataArray* normals, bool parallel, const double view[3])
   {
-    std::uint32_t Triangle;
-    unsigned char Rise, Fall; // its edges (0: points 0-1, 1: 1-2, 2: 2-0) where g changes sign
-  };
-  // Per block of triangles, the segments found, in the triangles' order.
-  const std::vector<std::vector<ContourSegment>>& GetContourSegments() const
-  {
-    return this->ContourSegments;
+    this->Contours.Compute(this->Mesh, normals, parallel, view);
   }
-  const std::uint32_t* GetContourTriangle(std::uint32_t t) const
-  {
-    return this->Triangles.data() + 3 * static_cast<size_t>(t);
-  }
-  double GetFacing(std::uint32_t point) const { return this->Facing[point]; }
+  const vtkNPRSmoothContours& GetContours() const { return this->Contours; }
 
 private:
   struct Use; // one face's use of an edge, read back from the mesh
@@ -124,7 +118,6 @@ private:
     const std::vector<std::uint32_t>& renumber);
   void MakeFaceView(vtkIdType face, vtkIdType size, const vtkIdType* ids, const double unit[3]);
   void ReorderFaceViews();
-  void MakeContourTables(vtkDataArray* normals);
   // Helpers.
   std::uint32_t Representative(vtkIdType id) const
   {
@@ -187,18 +180,8 @@ private:
   std::vector<unsigned char> FaceSides;
   vtkIdType UnsureFaces = 0;
 
-  // Smooth contours, made only when asked for: the triangles (fans of the polygons, the strips'
-  // triangles in their winding, none with a repeated or out-of-range point) and the unit point
-  // normals (NaN where zero or not finite), both kept per mesh; each point's facing term for the
-  // last viewpoint; per block of triangles, the segments found.
-  std::vector<std::uint32_t> Triangles;
-  bool TrianglesValid = false;
-  vtkDataArray* NormalsArray = nullptr;
-  vtkMTimeType NormalsTime = 0;
-  std::vector<double> UnitNormals;
-  std::vector<double> Facing;
-  std::vector<std::vector<ContourSegment>> ContourSegments;
-  vtkIdType SkippedContourTriangles = 0;
+  // Smooth contours, made only when asked for.
+  vtkNPRSmoothContours Contours;
 };
 
 #endif

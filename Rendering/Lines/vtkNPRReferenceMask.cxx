@@ -27,6 +27,145 @@ double Seconds(Clock::time_point start)
 {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
+
+// The visible samples as polylines: each run of visible samples along a segment is one line.
+class VisibleRuns
+{
+public:
+  VisibleRuns()
+  {
+    this->Points->SetDataTypeToDouble();
+    this->Types->SetName("FeatureType");
+  }
+  void Add(const double p[3]) { this->Run.push_back(this->Points->InsertNextPoint(p)); }
+  // Ends the current run: a line of `type` where it has two samples or more.
+  void End(unsigned char type)
+  {
+    if (this->Run.size() >= 2)
+    {
+      this->Cells->InsertNextCell(static_cast<vtkIdType>(this->Run.size()), this->Run.data());
+      this->Types->InsertNextValue(type);
+    }
+    this->Run.clear();
+  }
+  void CopyTo(vtkPolyData* lines)
+  {
+    lines->SetPoints(this->Points);
+    lines->SetLines(this->Cells);
+    lines->GetCellData()->AddArray(this->Types);
+  }
+
+private:
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkCellArray> Cells;
+  vtkNew<vtkUnsignedCharArray> Types;
+  std::vector<vtkIdType> Run;
+};
+
+// Samples along each segment's image, a ray for each: marks the pixels of the visible ones, and
+// (where asked) keeps their runs as lines.
+class Sampler
+{
+public:
+  Sampler(const vtkNPRSceneView& view, const vtkNPROccluders& occluders, unsigned char* pixels,
+    double spacing, double epsilon, bool keepRuns)
+    : View(view)
+    , Occluders(occluders)
+    , Pixels(pixels)
+    , Spacing(spacing)
+    , Epsilon(epsilon)
+    , KeepRuns(keepRuns)
+  {
+  }
+
+  void Sample(const vtkNPRSceneLines::Segment& segment)
+  {
+    // Clipped one pixel beyond the image; samples outside it are then skipped.
+    double t0, t1;
+    if (!this->View.ClipSegment(segment.A, segment.B, 1.0, t0, t1))
+    {
+      return;
+    }
+    // How many samples keep them SampleSpacing apart.
+    const double length = this->View.ImageLength(segment.A, segment.B, t0, t1);
+    const vtkIdType steps =
+      std::max<vtkIdType>(1, static_cast<vtkIdType>(std::ceil(length / this->Spacing)));
+    for (vtkIdType k = 0; k <= steps; ++k)
+    {
+      const double t =
+        this->View.ParameterAt(segment.A, segment.B, t0, t1, static_cast<double>(k) / steps);
+      double p[3];
+      for (int i = 0; i < 3; ++i)
+      {
+        p[i] = segment.A[i] + t * (segment.B[i] - segment.A[i]);
+      }
+      if (!this->SampleAt(p, segment))
+      {
+        this->Runs.End(segment.Type);
+      }
+    }
+    this->Runs.End(segment.Type);
+  }
+
+  VisibleRuns Runs;
+  vtkIdType Samples = 0, RayCasts = 0, VisibleSamples = 0;
+
+private:
+  // The pixel of point p, or null where it lies outside the image or the depth range.
+  unsigned char* PixelOf(const double p[3]) const
+  {
+    const int width = this->View.Width, height = this->View.Height;
+    double c[4];
+    this->View.Clip(p, c);
+    const double x = 0.5 * width * (c[0] / c[3] + 1.0);
+    const double y = 0.5 * height * (c[1] / c[3] + 1.0);
+    if (!(c[3] > 0.0 && c[2] >= -c[3] && c[2] <= c[3] && x >= 0.0 && x < width && y >= 0.0 &&
+          y < height))
+    {
+      return nullptr;
+    }
+    return &this->Pixels[static_cast<size_t>(static_cast<int>(y)) * width + static_cast<int>(x)];
+  }
+
+  // Marks the sample at p where it is visible; false where it ends a run of visible samples
+  // (outside the image, or hidden).
+  bool SampleAt(const double p[3], const vtkNPRSceneLines::Segment& segment)
+  {
+    unsigned char* pixel = this->PixelOf(p);
+    if (!pixel)
+    {
+      return false;
+    }
+    ++this->Samples;
+    if (*pixel && !this->KeepRuns)
+    {
+      return true; // marked already: the mask cannot change
+    }
+    double from[3], to[3];
+    this->View.Ray(p, this->Epsilon, from, to);
+    ++this->RayCasts;
+    // A smooth contour lies inside a triangle, often a back-facing one just behind the front
+    // faces next to it: the faces sharing a point with its triangle do not hide it.
+    const bool smooth = (segment.Type & vtkNPRFeatureLines::SMOOTH_CONTOUR) != 0;
+    if (this->Occluders.Hidden(from, to, smooth ? segment.Triangle : nullptr, smooth ? 3 : 0))
+    {
+      return false;
+    }
+    ++this->VisibleSamples;
+    *pixel = 255;
+    if (this->KeepRuns)
+    {
+      this->Runs.Add(p);
+    }
+    return true;
+  }
+
+  const vtkNPRSceneView& View;
+  const vtkNPROccluders& Occluders;
+  unsigned char* Pixels;
+  double Spacing, Epsilon;
+  bool KeepRuns;
+};
 }
 
 struct vtkNPRReferenceMask::Internals
@@ -37,6 +176,54 @@ struct vtkNPRReferenceMask::Internals
 
   vtkIdType FeatureEdges = 0, Samples = 0, RayCasts = 0, VisibleSamples = 0, LinePixels = 0;
   double LinesTime = 0.0, LocatorTime = 0.0, VisibilityTime = 0.0;
+
+  // Zeroes what the last update counted and empties its lines.
+  void Clear()
+  {
+    this->FeatureEdges = this->Samples = this->RayCasts = this->VisibleSamples = this->LinePixels =
+      0;
+    this->LinesTime = this->LocatorTime = this->VisibilityTime = 0.0;
+    this->VisibleLines->Initialize();
+  }
+
+  // The mask at this size, every pixel 0: its pixels.
+  unsigned char* ClearMask(int width, int height)
+  {
+    this->Mask->SetDimensions(width, height, 1);
+    this->Mask->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+    unsigned char* pixels = static_cast<unsigned char*>(this->Mask->GetScalarPointer());
+    std::fill(pixels, pixels + static_cast<size_t>(width) * height, 0);
+    return pixels;
+  }
+
+  // The scene's feature lines and occluders for this camera.
+  void UpdateScene(
+    vtkRenderer* renderer, const vtkNPRSceneLines::Settings& settings, int trianglesPerLocator)
+  {
+    this->Scene.Update(renderer, settings, trianglesPerLocator);
+    this->FeatureEdges = static_cast<vtkIdType>(this->Scene.GetSegments().size());
+    this->LinesTime = this->Scene.GetLinesTime();
+    this->LocatorTime = this->Scene.GetLocatorTime();
+  }
+
+  // The sampler's counts and lines, and the marked pixels counted.
+  void Collect(Sampler& sampler, bool keepLines)
+  {
+    this->Samples = sampler.Samples;
+    this->RayCasts = sampler.RayCasts;
+    this->VisibleSamples = sampler.VisibleSamples;
+    const unsigned char* pixels = static_cast<unsigned char*>(this->Mask->GetScalarPointer());
+    const int* size = this->Mask->GetDimensions();
+    for (size_t i = 0, n = static_cast<size_t>(size[0]) * size[1]; i < n; ++i)
+    {
+      this->LinePixels += pixels[i] ? 1 : 0;
+    }
+    this->Mask->Modified();
+    if (keepLines)
+    {
+      sampler.Runs.CopyTo(this->VisibleLines);
+    }
+  }
 };
 
 vtkStandardNewMacro(vtkNPRReferenceMask);
@@ -115,10 +302,7 @@ vtkIdType vtkNPRReferenceMask::GetNumberOfAdjacencyBuilds() const
 bool vtkNPRReferenceMask::Update()
 {
   Internals& internal = *this->Internal;
-  internal.FeatureEdges = internal.Samples = internal.RayCasts = internal.VisibleSamples =
-    internal.LinePixels = 0;
-  internal.LinesTime = internal.LocatorTime = internal.VisibilityTime = 0.0;
-  internal.VisibleLines->Initialize();
+  internal.Clear();
   if (!this->Renderer)
   {
     vtkErrorMacro("no renderer");
@@ -130,11 +314,7 @@ bool vtkNPRReferenceMask::Update()
     vtkErrorMacro("no size: set Size or put the renderer in a window with a size");
     return false;
   }
-  vtkImageData* mask = internal.Mask;
-  mask->SetDimensions(width, height, 1);
-  mask->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
-  unsigned char* pixels = static_cast<unsigned char*>(mask->GetScalarPointer());
-  std::fill(pixels, pixels + static_cast<size_t>(width) * height, 0);
+  unsigned char* pixels = internal.ClearMask(width, height);
 
   vtkNPRSceneLines::Settings settings;
   settings.Silhouettes = this->Silhouettes;
@@ -144,104 +324,19 @@ bool vtkNPRReferenceMask::Update()
   settings.CreaseAngle = this->CreaseAngle;
   settings.SmoothContours = this->SmoothContours;
   settings.Intersections = this->Creases && this->IntersectionCurves;
-  internal.Scene.Update(this->Renderer, settings, this->TrianglesPerLocator);
-  const std::vector<vtkNPRSceneLines::Segment>& segments = internal.Scene.GetSegments();
-  internal.FeatureEdges = static_cast<vtkIdType>(segments.size());
-  internal.LinesTime = internal.Scene.GetLinesTime();
-  internal.LocatorTime = internal.Scene.GetLocatorTime();
-  const vtkNPROccluders& occluders = internal.Scene.GetOccluders();
+  internal.UpdateScene(this->Renderer, settings, this->TrianglesPerLocator);
 
   // Visibility: samples along each segment's image, a ray for each.
   Clock::time_point start = Clock::now();
   vtkNPRSceneView view;
   view.Set(this->Renderer->GetActiveCamera(), width, height);
-
-  vtkNew<vtkPoints> visiblePoints;
-  visiblePoints->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> visibleCells;
-  vtkNew<vtkUnsignedCharArray> visibleTypes;
-  visibleTypes->SetName("FeatureType");
-  std::vector<vtkIdType> run;
-  auto endRun = [&](unsigned char type)
+  Sampler sampler(view, internal.Scene.GetOccluders(), pixels, this->SampleSpacing,
+    this->OcclusionEpsilon, this->GenerateVisibleLines);
+  for (const vtkNPRSceneLines::Segment& segment : internal.Scene.GetSegments())
   {
-    if (run.size() >= 2)
-    {
-      visibleCells->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
-      visibleTypes->InsertNextValue(type);
-    }
-    run.clear();
-  };
-
-  for (const vtkNPRSceneLines::Segment& segment : segments)
-  {
-    // Clipped one pixel beyond the image; samples outside it are then skipped.
-    double t0, t1;
-    if (!view.ClipSegment(segment.A, segment.B, 1.0, t0, t1))
-    {
-      continue;
-    }
-    // How many samples keep them SampleSpacing apart.
-    const double length = view.ImageLength(segment.A, segment.B, t0, t1);
-    const vtkIdType steps =
-      std::max<vtkIdType>(1, static_cast<vtkIdType>(std::ceil(length / this->SampleSpacing)));
-
-    for (vtkIdType k = 0; k <= steps; ++k)
-    {
-      const double t =
-        view.ParameterAt(segment.A, segment.B, t0, t1, static_cast<double>(k) / steps);
-      double p[3];
-      for (int i = 0; i < 3; ++i)
-      {
-        p[i] = segment.A[i] + t * (segment.B[i] - segment.A[i]);
-      }
-      double c[4];
-      view.Clip(p, c);
-      const double x = 0.5 * width * (c[0] / c[3] + 1.0);
-      const double y = 0.5 * height * (c[1] / c[3] + 1.0);
-      if (!(c[3] > 0.0 && c[2] >= -c[3] && c[2] <= c[3] && x >= 0.0 && x < width && y >= 0.0 &&
-            y < height))
-      {
-        endRun(segment.Type);
-        continue;
-      }
-      ++internal.Samples;
-      unsigned char& pixel =
-        pixels[static_cast<size_t>(static_cast<int>(y)) * width + static_cast<int>(x)];
-      if (pixel && !this->GenerateVisibleLines)
-      {
-        continue; // marked already: the mask cannot change
-      }
-      double from[3], to[3];
-      view.Ray(p, this->OcclusionEpsilon, from, to);
-      ++internal.RayCasts;
-      // A smooth contour lies inside a triangle, often a back-facing one just behind the front
-      // faces next to it: the faces sharing a point with its triangle do not hide it.
-      const bool smooth = (segment.Type & vtkNPRFeatureLines::SMOOTH_CONTOUR) != 0;
-      if (occluders.Hidden(from, to, smooth ? segment.Triangle : nullptr, smooth ? 3 : 0))
-      {
-        endRun(segment.Type);
-        continue;
-      }
-      ++internal.VisibleSamples;
-      pixel = 255;
-      if (this->GenerateVisibleLines)
-      {
-        run.push_back(visiblePoints->InsertNextPoint(p));
-      }
-    }
-    endRun(segment.Type);
+    sampler.Sample(segment);
   }
-  for (size_t i = 0, n = static_cast<size_t>(width) * height; i < n; ++i)
-  {
-    internal.LinePixels += pixels[i] ? 1 : 0;
-  }
-  mask->Modified();
-  if (this->GenerateVisibleLines)
-  {
-    internal.VisibleLines->SetPoints(visiblePoints);
-    internal.VisibleLines->SetLines(visibleCells);
-    internal.VisibleLines->GetCellData()->AddArray(visibleTypes);
-  }
+  internal.Collect(sampler, this->GenerateVisibleLines);
   internal.VisibilityTime = Seconds(start);
   return true;
 }
