@@ -14,7 +14,6 @@
 #include "vtkInformationVector.h"
 #include "vtkNPRBinaryPLY.h"
 #include "vtkNPRDrawableSurface.h"
-#include "vtkNPRGLTFChecks.h"
 #include "vtkNPRModelFormatChecks.h"
 #include "vtkNPROFFReader.h"
 #include "vtkNew.h"
@@ -166,44 +165,6 @@ std::string CheckFile(const std::string& name)
   return "";
 }
 
-// An OBJ file's vertices with a NaN or infinite coordinate (0-based), and how many it has.
-struct OBJVertices
-{
-  std::vector<long long> NonFinite;
-  long long Count = 0;
-};
-
-// The structural check of the format, before VTK's reader trusts the file.
-std::string CheckStructure(
-  const std::string& extension, const std::string& name, OBJVertices& objVertices)
-{
-  if (extension == ".ply")
-  {
-    return vtkNPRModelFormatChecks::CheckPLY(name);
-  }
-  if (extension == ".stl")
-  {
-    return vtkNPRModelFormatChecks::CheckSTL(name);
-  }
-  if (extension == ".obj")
-  {
-    return vtkNPRModelFormatChecks::CheckOBJ(name, objVertices.NonFinite, objVertices.Count);
-  }
-  if (extension == ".vtp")
-  {
-    return vtkNPRModelFormatChecks::CheckVTP(name);
-  }
-  if (extension == ".vtk")
-  {
-    return vtkNPRModelFormatChecks::CheckLegacyVTK(name);
-  }
-  if (extension == ".gltf" || extension == ".glb")
-  {
-    return vtkNPRGLTFChecks::CheckGLTF(name);
-  }
-  return "";
-}
-
 // Runs VTK's reader and makes one polydata of what it read: composite (glTF) and
 // non-polygonal (legacy) data too. Returns why it failed, or "".
 std::string ReadSurface(vtkAlgorithm* reader, const std::string& name, const std::string& extension,
@@ -265,8 +226,8 @@ std::string CheckSurface(
 // vtkOBJReader reads "nan" and "inf" as numbers of its own: the vertices CheckOBJ found with
 // them made NaN again, so that the point check drops them. It keeps the vertices in file order
 // unless faces give texture or normal indices of their own per corner.
-std::string MarkNonFiniteOBJVertices(
-  const std::string& name, const OBJVertices& objVertices, vtkSmartPointer<vtkPolyData>& surface)
+std::string MarkNonFiniteOBJVertices(const std::string& name,
+  const vtkNPRModelFormatChecks::OBJVertices& objVertices, vtkSmartPointer<vtkPolyData>& surface)
 {
   if (objVertices.NonFinite.empty())
   {
@@ -377,9 +338,9 @@ bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
   {
     return read;
   }
-  OBJVertices objVertices;
+  vtkNPRModelFormatChecks::OBJVertices objVertices;
   vtkTimerLog::MarkStartEvent("vtkNPRModelReader: validate");
-  error = CheckStructure(extension, name, objVertices);
+  error = vtkNPRModelFormatChecks::Check(extension, name, objVertices);
   vtkTimerLog::MarkEndEvent("vtkNPRModelReader: validate");
   if (!error.empty())
   {
