@@ -7,7 +7,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkNPRChunkedInput.h"
 #include "vtkNPRIdBuffer.h"
-#include "vtkNPRModelFormatChecks.h"
+#include "vtkNPRPLYChecks.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -22,8 +22,8 @@
 
 namespace
 {
-using vtkNPRModelFormatChecks::PLYElement;
-using vtkNPRModelFormatChecks::PLYProperty;
+using vtkNPRPLYChecks::PLYElement;
+using vtkNPRPLYChecks::PLYProperty;
 
 // Where a vertex row's values are: byte offsets of x, y, z, the normal and the colour (-1:
 // absent), and whether the coordinates are doubles.
@@ -243,7 +243,7 @@ bool vtkNPRBinaryPLY::Read(const std::string& fileName, vtkPolyData* output)
   std::string format;
   std::vector<PLYElement> elements;
   VertexLayout layout;
-  if (!vtkNPRModelFormatChecks::ReadPLYHeader(in, format, elements).empty() ||
+  if (!vtkNPRPLYChecks::ReadPLYHeader(in, format, elements).empty() ||
     format != "binary_little_endian" || elements.size() != 2 || elements[0].Name != "vertex" ||
     !MakeVertexLayout(elements[0], layout) || !IsPlainFaceElement(elements[1]) ||
     elements[1].Properties[0].Size > 4 || elements[1].Properties[0].CountSize > 4 ||

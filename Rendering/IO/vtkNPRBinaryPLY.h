@@ -13,7 +13,7 @@
 //
 // Any other layout (big-endian or ASCII, texture coordinates, face colours or intensity, other
 // elements, a face of more than 255 vertices, which vtkPLYReader's count wraps) is left to
-// vtkPLYReader. It checks what vtkNPRModelFormatChecks::CheckPLY checks of such a file as it
+// vtkPLYReader. It checks what vtkNPRPLYChecks::CheckPLY checks of such a file as it
 // reads (every value there, every face index naming a vertex), so a file it reads needs no check
 // before; one it refuses goes to CheckPLY, which says what is wrong.
 // Private to the module: vtkNPRModelReader's PLY path.

@@ -4,7 +4,6 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
-#include "vtkCellData.h"
 #include "vtkCompositeDataGeometryFilter.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
@@ -14,26 +13,21 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNPRBinaryPLY.h"
-#include "vtkNPRGLTFChecks.h"
+#include "vtkNPRDrawableSurface.h"
 #include "vtkNPRModelFormatChecks.h"
 #include "vtkNPROFFReader.h"
-#include "vtkNPRPointCoordinates.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkPLYReader.h"
-#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPThreadLocal.h"
-#include "vtkSMPTools.h"
 #include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
 #include "vtkTimerLog.h"
 #include "vtkXMLPolyDataReader.h"
 
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstring>
@@ -144,205 +138,6 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& extension, const std
   return nullptr;
 }
 
-enum class CellStatus
-{
-  Drawable,
-  NonFinite,  // uses a point with a NaN or infinite coordinate
-  OutOfRange, // names a point that does not exist
-};
-
-// Whether a cell's points all exist and are finite, given each point's number among the finite
-// ones (-1: not finite).
-CellStatus Classify(vtkIdType size, const vtkIdType* ids, const std::vector<vtkIdType>& newPointIds)
-{
-  const vtkIdType numberOfPoints = static_cast<vtkIdType>(newPointIds.size());
-  CellStatus status = CellStatus::Drawable;
-  for (vtkIdType k = 0; k < size; ++k)
-  {
-    if (ids[k] < 0 || ids[k] >= numberOfPoints)
-    {
-      return CellStatus::OutOfRange;
-    }
-    status = newPointIds[static_cast<size_t>(ids[k])] < 0 ? CellStatus::NonFinite : status;
-  }
-  return status;
-}
-
-// The number of cells of each status.
-struct CellCounts
-{
-  vtkIdType NonFinite = 0;
-  vtkIdType OutOfRange = 0;
-
-  void Add(CellStatus status)
-  {
-    this->NonFinite += status == CellStatus::NonFinite;
-    this->OutOfRange += status == CellStatus::OutOfRange;
-  }
-};
-
-CellCounts CountUndrawableCells(vtkPolyData* surface, const std::vector<vtkIdType>& newPointIds)
-{
-  CellCounts counts;
-  for (vtkCellArray* cells :
-    { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })
-  {
-    vtkIdType size = 0;
-    const vtkIdType* ids = nullptr;
-    for (cells->InitTraversal(); cells->GetNextCell(size, ids);)
-    {
-      counts.Add(Classify(size, ids, newPointIds));
-    }
-  }
-  return counts;
-}
-
-// Copies the drawable cells of one kind, renumbering their points, with their cell data.
-void CopyDrawableCells(vtkCellArray* cells, const std::vector<vtkIdType>& newPointIds,
-  vtkIdType& inputCellId, vtkCellData* inputData, vtkCellData* outputData, vtkCellArray* kept)
-{
-  vtkIdType size = 0;
-  const vtkIdType* ids = nullptr;
-  std::vector<vtkIdType> renumbered;
-  for (cells->InitTraversal(); cells->GetNextCell(size, ids); ++inputCellId)
-  {
-    if (Classify(size, ids, newPointIds) != CellStatus::Drawable)
-    {
-      continue;
-    }
-    renumbered.resize(static_cast<size_t>(size));
-    for (vtkIdType k = 0; k < size; ++k)
-    {
-      renumbered[static_cast<size_t>(k)] = newPointIds[static_cast<size_t>(ids[k])];
-    }
-    kept->InsertNextCell(size, renumbered.data());
-    outputData->CopyData(inputData, inputCellId, outputData->GetNumberOfTuples());
-  }
-}
-
-// For every point, its number among the finite ones (-1: a NaN or infinite coordinate); the
-// test on every core.
-std::vector<vtkIdType> NumberFinitePoints(vtkPoints* points, vtkIdType& finitePoints)
-{
-  const vtkIdType count = points->GetNumberOfPoints();
-  std::vector<unsigned char> finite(static_cast<size_t>(count));
-  const vtkNPRPointCoordinates data(points->GetData());
-  vtkSMPTools::For(0, count,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      double p[3];
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        data.Get(i, p);
-        finite[static_cast<size_t>(i)] =
-          std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
-      }
-    });
-  std::vector<vtkIdType> newPointIds(static_cast<size_t>(count), -1);
-  finitePoints = 0;
-  for (size_t i = 0; i < finite.size(); ++i)
-  {
-    newPointIds[i] = finite[i] ? finitePoints++ : -1;
-  }
-  return newPointIds;
-}
-
-// The surface without its non-finite points and the cells that use them or name a point that
-// does not exist, its point and cell data following.
-void CopyDrawable(vtkPolyData* surface, const std::vector<vtkIdType>& newPointIds,
-  vtkIdType finitePoints, vtkPolyData* output)
-{
-  vtkPoints* points = surface->GetPoints();
-  vtkNew<vtkPoints> keptPoints;
-  keptPoints->SetDataType(points->GetDataType());
-  keptPoints->SetNumberOfPoints(finitePoints);
-  output->GetPointData()->CopyAllocate(surface->GetPointData(), finitePoints);
-  for (size_t i = 0; i < newPointIds.size(); ++i)
-  {
-    if (newPointIds[i] >= 0)
-    {
-      keptPoints->SetPoint(newPointIds[i], points->GetPoint(static_cast<vtkIdType>(i)));
-      output->GetPointData()->CopyData(
-        surface->GetPointData(), static_cast<vtkIdType>(i), newPointIds[i]);
-    }
-  }
-  output->SetPoints(keptPoints);
-  output->GetCellData()->CopyAllocate(surface->GetCellData(), surface->GetNumberOfCells());
-  // vtkPolyData numbers its cells vertices first, then lines, polygons, strips.
-  vtkIdType inputCellId = 0;
-  vtkNew<vtkCellArray> verts, lines, polys, strips;
-  CopyDrawableCells(surface->GetVerts(), newPointIds, inputCellId, surface->GetCellData(),
-    output->GetCellData(), verts);
-  CopyDrawableCells(surface->GetLines(), newPointIds, inputCellId, surface->GetCellData(),
-    output->GetCellData(), lines);
-  CopyDrawableCells(surface->GetPolys(), newPointIds, inputCellId, surface->GetCellData(),
-    output->GetCellData(), polys);
-  CopyDrawableCells(surface->GetStrips(), newPointIds, inputCellId, surface->GetCellData(),
-    output->GetCellData(), strips);
-  output->SetVerts(verts);
-  output->SetLines(lines);
-  output->SetPolys(polys);
-  output->SetStrips(strips);
-}
-
-// How many of the three axes the points the cells use span no length along (2: on one line,
-// 3: at one spot): the points marked, then their bounds on every core.
-int CountFlatAxes(vtkPolyData* mesh)
-{
-  std::vector<unsigned char> used(static_cast<size_t>(mesh->GetNumberOfPoints()), 0);
-  for (vtkCellArray* cells :
-    { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() })
-  {
-    vtkIdType size = 0;
-    const vtkIdType* ids = nullptr;
-    for (cells->InitTraversal(); cells->GetNextCell(size, ids);)
-    {
-      for (vtkIdType k = 0; k < size; ++k)
-      {
-        used[static_cast<size_t>(ids[k])] = 1;
-      }
-    }
-  }
-  using Bounds = std::array<double, 6>;
-  vtkSMPThreadLocal<Bounds> local(Bounds{ VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX,
-    -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX });
-  const vtkNPRPointCoordinates data(mesh->GetPoints()->GetData());
-  vtkSMPTools::For(0, mesh->GetNumberOfPoints(),
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      Bounds& bounds = local.Local();
-      double p[3];
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        if (used[static_cast<size_t>(i)])
-        {
-          data.Get(i, p);
-          for (int axis = 0; axis < 3; ++axis)
-          {
-            bounds[2 * axis] = std::min(bounds[2 * axis], p[axis]);
-            bounds[2 * axis + 1] = std::max(bounds[2 * axis + 1], p[axis]);
-          }
-        }
-      }
-    });
-  Bounds all{ VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX,
-    -VTK_DOUBLE_MAX };
-  for (const Bounds& bounds : local)
-  {
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      all[2 * axis] = std::min(all[2 * axis], bounds[2 * axis]);
-      all[2 * axis + 1] = std::max(all[2 * axis + 1], bounds[2 * axis + 1]);
-    }
-  }
-  int flatAxes = 0;
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    flatAxes += !(all[2 * axis + 1] > all[2 * axis]);
-  }
-  return flatAxes;
-}
-
 // Why the file cannot be read at all, or "".
 std::string CheckFile(const std::string& name)
 {
@@ -366,44 +161,6 @@ std::string CheckFile(const std::string& name)
   if (status.st_size == 0)
   {
     return name + ": is empty (0 bytes)";
-  }
-  return "";
-}
-
-// An OBJ file's vertices with a NaN or infinite coordinate (0-based), and how many it has.
-struct OBJVertices
-{
-  std::vector<long long> NonFinite;
-  long long Count = 0;
-};
-
-// The structural check of the format, before VTK's reader trusts the file.
-std::string CheckStructure(
-  const std::string& extension, const std::string& name, OBJVertices& objVertices)
-{
-  if (extension == ".ply")
-  {
-    return vtkNPRModelFormatChecks::CheckPLY(name);
-  }
-  if (extension == ".stl")
-  {
-    return vtkNPRModelFormatChecks::CheckSTL(name);
-  }
-  if (extension == ".obj")
-  {
-    return vtkNPRModelFormatChecks::CheckOBJ(name, objVertices.NonFinite, objVertices.Count);
-  }
-  if (extension == ".vtp")
-  {
-    return vtkNPRModelFormatChecks::CheckVTP(name);
-  }
-  if (extension == ".vtk")
-  {
-    return vtkNPRModelFormatChecks::CheckLegacyVTK(name);
-  }
-  if (extension == ".gltf" || extension == ".glb")
-  {
-    return vtkNPRGLTFChecks::CheckGLTF(name);
   }
   return "";
 }
@@ -469,8 +226,8 @@ std::string CheckSurface(
 // vtkOBJReader reads "nan" and "inf" as numbers of its own: the vertices CheckOBJ found with
 // them made NaN again, so that the point check drops them. It keeps the vertices in file order
 // unless faces give texture or normal indices of their own per corner.
-std::string MarkNonFiniteOBJVertices(
-  const std::string& name, const OBJVertices& objVertices, vtkSmartPointer<vtkPolyData>& surface)
+std::string MarkNonFiniteOBJVertices(const std::string& name,
+  const vtkNPRModelFormatChecks::OBJVertices& objVertices, vtkSmartPointer<vtkPolyData>& surface)
 {
   if (objVertices.NonFinite.empty())
   {
@@ -581,9 +338,9 @@ bool vtkNPRModelReader::Read(const std::string& name, vtkPolyData* output)
   {
     return read;
   }
-  OBJVertices objVertices;
+  vtkNPRModelFormatChecks::OBJVertices objVertices;
   vtkTimerLog::MarkStartEvent("vtkNPRModelReader: validate");
-  error = CheckStructure(extension, name, objVertices);
+  error = vtkNPRModelFormatChecks::Check(extension, name, objVertices);
   vtkTimerLog::MarkEndEvent("vtkNPRModelReader: validate");
   if (!error.empty())
   {
@@ -639,15 +396,17 @@ bool vtkNPRModelReader::DropUndrawable(
   // a point that does not exist (VTP and VTK files, which VTK's readers take as they are).
   const vtkIdType numberOfPoints = surface->GetNumberOfPoints();
   vtkIdType finitePoints = 0;
-  const std::vector<vtkIdType> newPointIds = NumberFinitePoints(surface->GetPoints(), finitePoints);
-  CellCounts dropped = CountUndrawableCells(surface, newPointIds);
+  const std::vector<vtkIdType> newPointIds =
+    vtkNPRDrawableSurface::NumberFinitePoints(surface->GetPoints(), finitePoints);
+  const vtkNPRDrawableSurface::CellCounts dropped =
+    vtkNPRDrawableSurface::CountUndrawableCells(surface, newPointIds);
   if (finitePoints == numberOfPoints && dropped.OutOfRange == 0)
   {
     output->ShallowCopy(surface);
   }
   else
   {
-    CopyDrawable(surface, newPointIds, finitePoints, output);
+    vtkNPRDrawableSurface::CopyDrawable(surface, newPointIds, finitePoints, output);
     this->NumberOfDroppedPoints = numberOfPoints - finitePoints;
     this->NumberOfDroppedCells = dropped.NonFinite + dropped.OutOfRange;
     this->NumberOfOutOfRangeCells = dropped.OutOfRange;
@@ -669,7 +428,8 @@ bool vtkNPRModelReader::DropUndrawable(
   {
     return this->Fail(name + ": nothing to draw: no cell is left after it " + droppedText);
   }
-  const int flatAxes = CountFlatAxes(output); // every point used at one spot or on one line
+  // Every point the cells use at one spot or on one line.
+  const int flatAxes = vtkNPRDrawableSurface::CountFlatAxes(output);
   if (flatAxes >= 2)
   {
     return this->Fail(name + ": nothing to draw: every point of its " +

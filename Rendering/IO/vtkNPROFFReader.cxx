@@ -162,6 +162,232 @@ unsigned char ColorByte(double value, bool scaled)
   const double byte = scaled ? value * 255.0 : value;
   return static_cast<unsigned char>(std::min(255.0, std::max(0.0, std::round(byte))));
 }
+
+void Describe(vtkDataArray* array, const char* name, int components)
+{
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+}
+
+// 3 or 4 colour values as RGBA bytes: scaled from 0..1 when none is over 1, else as 0..255.
+void ToRGBA(const double* values, size_t count, unsigned char rgba[4])
+{
+  const bool scaled = std::all_of(values, values + count, [](double v) { return v <= 1.0; });
+  for (size_t c = 0; c < count; ++c)
+  {
+    rgba[c] = ColorByte(values[c], scaled);
+  }
+}
+
+// The mesh as the file's parts are read: the header and its counts, the vertices with their
+// attributes, the faces with their colours; then what is left of the file.
+class OFFMesh
+{
+public:
+  explicit OFFMesh(OFFLineReader& lines)
+    : Lines(lines)
+  {
+  }
+
+  void ReadHeader()
+  {
+    this->Lines.Require(this->Tokens, "the OFF keyword");
+    if (!ParseKeyword(this->Tokens[0], this->Header, this->Lines))
+    {
+      this->Lines.Fail(
+        "'" + this->Tokens[0] + "' is no OFF keyword (OFF, COFF, NOFF, CNOFF, STOFF, ...)");
+    }
+    if (this->Tokens.size() > 1 && this->Tokens[1] == "BINARY")
+    {
+      this->Lines.Fail("binary OFF is not supported");
+    }
+    this->Tokens.erase(this->Tokens.begin());
+    if (this->Tokens.empty())
+    {
+      this->Lines.Require(this->Tokens, "the counts 'vertices faces edges'");
+    }
+    if (this->Tokens.size() < 2 || this->Tokens.size() > 3)
+    {
+      this->Lines.Fail("expected the counts 'vertices faces [edges]'");
+    }
+    this->NumberOfVertices = this->Lines.Integer(this->Tokens[0], "vertex count");
+    this->NumberOfFaces = this->Lines.Integer(this->Tokens[1], "face count");
+    if (this->NumberOfVertices < 0 || this->NumberOfFaces < 0)
+    {
+      this->Lines.Fail("negative vertex or face count");
+    }
+  }
+
+  void ReadVertices()
+  {
+    this->Points->SetDataTypeToDouble();
+    // The count is only the file's word (a mutated one asked for 2^31 points): reserve a little,
+    // grow as the vertex lines come.
+    this->Points->Allocate(
+      static_cast<vtkIdType>(std::min<long long>(this->NumberOfVertices, 1 << 16)));
+    Describe(this->Normals, "Normals", 3);
+    Describe(this->TextureCoordinates, "TextureCoordinates", 2);
+    Describe(this->PointColors, "Colors", 4);
+    for (long long i = 0; i < this->NumberOfVertices; ++i)
+    {
+      this->Lines.Require(this->Tokens, "a vertex line");
+      this->ReadVertex();
+    }
+  }
+
+  void ReadFaces()
+  {
+    Describe(this->FaceColors, "Colors", 4);
+    for (long long f = 0; f < this->NumberOfFaces; ++f)
+    {
+      this->Lines.Require(this->Tokens, "a face line");
+      this->ReadFace();
+    }
+  }
+
+  void CheckEnd()
+  {
+    if (this->Lines.Next(this->Tokens))
+    {
+      this->Lines.Fail("unexpected content after the last face ('" + this->Tokens[0] + "')");
+    }
+  }
+
+  void CopyTo(vtkPolyData* output) const
+  {
+    output->SetPoints(this->Points);
+    output->SetPolys(this->Polygons);
+    if (this->Header.Normals)
+    {
+      output->GetPointData()->SetNormals(this->Normals);
+    }
+    if (this->Header.TextureCoordinates)
+    {
+      output->GetPointData()->SetTCoords(this->TextureCoordinates);
+    }
+    if (this->Header.Colors)
+    {
+      output->GetPointData()->SetScalars(this->PointColors);
+    }
+    else if (this->AnyFaceColor)
+    {
+      output->GetCellData()->SetScalars(this->FaceColors);
+    }
+  }
+
+private:
+  // "x y z [nx ny nz] [r g b [a]] [s t]", as the header's prefixes say.
+  void ReadVertex()
+  {
+    const OFFHeader& header = this->Header;
+    const size_t valuesPerVertex =
+      3 + (header.Normals ? 3 : 0) + (header.TextureCoordinates ? 2 : 0);
+    if (this->Tokens.size() < valuesPerVertex)
+    {
+      this->Lines.Fail("vertex line has " + std::to_string(this->Tokens.size()) +
+        " values, expected " + std::to_string(valuesPerVertex) +
+        (header.Colors ? " and a colour" : ""));
+    }
+    std::vector<double> values;
+    for (const std::string& token : this->Tokens)
+    {
+      values.push_back(this->Lines.Number(token, "vertex"));
+    }
+    this->Points->InsertNextPoint(values[0], values[1], values[2]);
+    size_t next = 3;
+    if (header.Normals)
+    {
+      this->Normals->InsertNextTuple3(values[next], values[next + 1], values[next + 2]);
+      next += 3;
+    }
+    if (header.Colors)
+    {
+      const size_t count = values.size() - next - (header.TextureCoordinates ? 2 : 0);
+      if (count != 3 && count != 4)
+      {
+        this->Lines.Fail("a vertex colour has 3 or 4 values, found " + std::to_string(count));
+      }
+      unsigned char rgba[4] = { 0, 0, 0, 255 };
+      ToRGBA(values.data() + next, count, rgba);
+      this->PointColors->InsertNextTypedTuple(rgba);
+      next += count;
+    }
+    if (header.TextureCoordinates)
+    {
+      this->TextureCoordinates->InsertNextTuple2(values[next], values[next + 1]);
+      next += 2;
+    }
+    if (next != values.size())
+    {
+      this->Lines.Fail("vertex line has " + std::to_string(values.size() - next) + " extra values");
+    }
+  }
+
+  // "n i0 ... i(n-1) [r g b [a]]"
+  void ReadFace()
+  {
+    const long long size = this->Lines.Integer(this->Tokens[0], "face size");
+    if (size < 3)
+    {
+      this->Lines.Fail("a face needs at least 3 vertices, this one has " + std::to_string(size));
+    }
+    if (static_cast<long long>(this->Tokens.size()) < size + 1)
+    {
+      this->Lines.Fail("face line lists " + std::to_string(this->Tokens.size() - 1) +
+        " indices of " + std::to_string(size));
+    }
+    this->Ids.resize(static_cast<size_t>(size));
+    for (long long k = 0; k < size; ++k)
+    {
+      const long long index =
+        this->Lines.Integer(this->Tokens[static_cast<size_t>(k + 1)], "face index");
+      if (index < 0 || index >= this->NumberOfVertices)
+      {
+        this->Lines.Fail("face index " + std::to_string(index) + " is out of range [0, " +
+          std::to_string(this->NumberOfVertices) + ")");
+      }
+      this->Ids[static_cast<size_t>(k)] = static_cast<vtkIdType>(index);
+    }
+    this->Polygons->InsertNextCell(static_cast<vtkIdType>(size), this->Ids.data());
+    this->ReadFaceColor(static_cast<size_t>(size) + 1);
+  }
+
+  // The face's colour from tokens[first] on, white when it has none.
+  void ReadFaceColor(size_t first)
+  {
+    const size_t colorCount = this->Tokens.size() - first;
+    unsigned char rgba[4] = { 255, 255, 255, 255 };
+    if (colorCount != 0)
+    {
+      if (colorCount != 3 && colorCount != 4)
+      {
+        this->Lines.Fail("a face colour has 3 or 4 values, found " + std::to_string(colorCount));
+      }
+      std::vector<double> color;
+      for (size_t c = 0; c < colorCount; ++c)
+      {
+        color.push_back(this->Lines.Number(this->Tokens[first + c], "face colour"));
+      }
+      ToRGBA(color.data(), colorCount, rgba);
+      this->AnyFaceColor = true;
+    }
+    this->FaceColors->InsertNextTypedTuple(rgba);
+  }
+
+  OFFLineReader& Lines;
+  std::vector<std::string> Tokens;
+  OFFHeader Header;
+  long long NumberOfVertices = 0;
+  long long NumberOfFaces = 0;
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkFloatArray> Normals;
+  vtkNew<vtkFloatArray> TextureCoordinates;
+  vtkNew<vtkUnsignedCharArray> PointColors;
+  vtkNew<vtkCellArray> Polygons;
+  vtkNew<vtkUnsignedCharArray> FaceColors;
+  bool AnyFaceColor = false;
+  std::vector<vtkIdType> Ids;
+};
 }
 
 vtkNPROFFReader::vtkNPROFFReader()
@@ -216,179 +442,14 @@ int vtkNPROFFReader::RequestData(
   }
 
   OFFLineReader lines(stream, name);
-  std::vector<std::string> tokens;
   try
   {
-    lines.Require(tokens, "the OFF keyword");
-    OFFHeader header;
-    if (!ParseKeyword(tokens[0], header, lines))
-    {
-      lines.Fail("'" + tokens[0] + "' is no OFF keyword (OFF, COFF, NOFF, CNOFF, STOFF, ...)");
-    }
-    if (tokens.size() > 1 && tokens[1] == "BINARY")
-    {
-      lines.Fail("binary OFF is not supported");
-    }
-    tokens.erase(tokens.begin());
-    if (tokens.empty())
-    {
-      lines.Require(tokens, "the counts 'vertices faces edges'");
-    }
-    if (tokens.size() < 2 || tokens.size() > 3)
-    {
-      lines.Fail("expected the counts 'vertices faces [edges]'");
-    }
-    const long long numberOfVertices = lines.Integer(tokens[0], "vertex count");
-    const long long numberOfFaces = lines.Integer(tokens[1], "face count");
-    if (numberOfVertices < 0 || numberOfFaces < 0)
-    {
-      lines.Fail("negative vertex or face count");
-    }
-
-    const size_t valuesPerVertex =
-      3 + (header.Normals ? 3 : 0) + (header.TextureCoordinates ? 2 : 0);
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    // The count is only the file's word (a mutated one asked for 2^31 points): reserve a little,
-    // grow as the vertex lines come.
-    points->Allocate(static_cast<vtkIdType>(std::min<long long>(numberOfVertices, 1 << 16)));
-    vtkNew<vtkFloatArray> normals;
-    normals->SetName("Normals");
-    normals->SetNumberOfComponents(3);
-    vtkNew<vtkFloatArray> textureCoordinates;
-    textureCoordinates->SetName("TextureCoordinates");
-    textureCoordinates->SetNumberOfComponents(2);
-    vtkNew<vtkUnsignedCharArray> pointColors;
-    pointColors->SetName("Colors");
-    pointColors->SetNumberOfComponents(4);
-
-    for (long long i = 0; i < numberOfVertices; ++i)
-    {
-      lines.Require(tokens, "a vertex line");
-      if (tokens.size() < valuesPerVertex)
-      {
-        lines.Fail("vertex line has " + std::to_string(tokens.size()) + " values, expected " +
-          std::to_string(valuesPerVertex) + (header.Colors ? " and a colour" : ""));
-      }
-      std::vector<double> values;
-      for (const std::string& token : tokens)
-      {
-        values.push_back(lines.Number(token, "vertex"));
-      }
-      size_t next = 0;
-      points->InsertNextPoint(values[0], values[1], values[2]);
-      next = 3;
-      if (header.Normals)
-      {
-        normals->InsertNextTuple3(values[next], values[next + 1], values[next + 2]);
-        next += 3;
-      }
-      if (header.Colors)
-      {
-        const size_t count = values.size() - next - (header.TextureCoordinates ? 2 : 0);
-        if (count != 3 && count != 4)
-        {
-          lines.Fail("a vertex colour has 3 or 4 values, found " + std::to_string(count));
-        }
-        const bool scaled = std::all_of(
-          values.begin() + next, values.begin() + next + count, [](double v) { return v <= 1.0; });
-        unsigned char rgba[4] = { 0, 0, 0, 255 };
-        for (size_t c = 0; c < count; ++c)
-        {
-          rgba[c] = ColorByte(values[next + c], scaled);
-        }
-        pointColors->InsertNextTypedTuple(rgba);
-        next += count;
-      }
-      if (header.TextureCoordinates)
-      {
-        textureCoordinates->InsertNextTuple2(values[next], values[next + 1]);
-        next += 2;
-      }
-      if (next != values.size())
-      {
-        lines.Fail("vertex line has " + std::to_string(values.size() - next) + " extra values");
-      }
-    }
-
-    vtkNew<vtkCellArray> polygons;
-    vtkNew<vtkUnsignedCharArray> faceColors;
-    faceColors->SetName("Colors");
-    faceColors->SetNumberOfComponents(4);
-    bool anyFaceColor = false;
-    std::vector<vtkIdType> ids;
-    for (long long f = 0; f < numberOfFaces; ++f)
-    {
-      lines.Require(tokens, "a face line");
-      const long long size = lines.Integer(tokens[0], "face size");
-      if (size < 3)
-      {
-        lines.Fail("a face needs at least 3 vertices, this one has " + std::to_string(size));
-      }
-      if (static_cast<long long>(tokens.size()) < size + 1)
-      {
-        lines.Fail("face line lists " + std::to_string(tokens.size() - 1) + " indices of " +
-          std::to_string(size));
-      }
-      ids.resize(static_cast<size_t>(size));
-      for (long long k = 0; k < size; ++k)
-      {
-        const long long index = lines.Integer(tokens[static_cast<size_t>(k + 1)], "face index");
-        if (index < 0 || index >= numberOfVertices)
-        {
-          lines.Fail("face index " + std::to_string(index) + " is out of range [0, " +
-            std::to_string(numberOfVertices) + ")");
-        }
-        ids[static_cast<size_t>(k)] = static_cast<vtkIdType>(index);
-      }
-      polygons->InsertNextCell(static_cast<vtkIdType>(size), ids.data());
-
-      const size_t colorCount = tokens.size() - static_cast<size_t>(size) - 1;
-      unsigned char rgba[4] = { 255, 255, 255, 255 };
-      if (colorCount != 0)
-      {
-        if (colorCount != 3 && colorCount != 4)
-        {
-          lines.Fail("a face colour has 3 or 4 values, found " + std::to_string(colorCount));
-        }
-        std::vector<double> color;
-        for (size_t c = 0; c < colorCount; ++c)
-        {
-          color.push_back(lines.Number(tokens[static_cast<size_t>(size) + 1 + c], "face colour"));
-        }
-        const bool scaled =
-          std::all_of(color.begin(), color.end(), [](double v) { return v <= 1.0; });
-        for (size_t c = 0; c < colorCount; ++c)
-        {
-          rgba[c] = ColorByte(color[c], scaled);
-        }
-        anyFaceColor = true;
-      }
-      faceColors->InsertNextTypedTuple(rgba);
-    }
-    if (lines.Next(tokens))
-    {
-      lines.Fail("unexpected content after the last face ('" + tokens[0] + "')");
-    }
-
-    output->SetPoints(points);
-    output->SetPolys(polygons);
-    if (header.Normals)
-    {
-      output->GetPointData()->SetNormals(normals);
-    }
-    if (header.TextureCoordinates)
-    {
-      output->GetPointData()->SetTCoords(textureCoordinates);
-    }
-    if (header.Colors)
-    {
-      output->GetPointData()->SetScalars(pointColors);
-    }
-    else if (anyFaceColor)
-    {
-      output->GetCellData()->SetScalars(faceColors);
-    }
+    OFFMesh mesh(lines);
+    mesh.ReadHeader();
+    mesh.ReadVertices();
+    mesh.ReadFaces();
+    mesh.CheckEnd();
+    mesh.CopyTo(output);
   }
   catch (const ParseError& error)
   {

@@ -1,0 +1,54 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+// What vtkNPRModelReader keeps of what VTK's reader read: the points with finite coordinates,
+// the cells whose points all exist and are finite, and whether what is left spans an area. Each
+// step on every core where it walks the points. Private to the module.
+#ifndef vtkNPRDrawableSurface_h
+#define vtkNPRDrawableSurface_h
+
+#include "vtkType.h"
+
+#include <vector>
+
+class vtkPoints;
+class vtkPolyData;
+
+namespace vtkNPRDrawableSurface
+{
+enum class CellStatus
+{
+  Drawable,
+  NonFinite,  // uses a point with a NaN or infinite coordinate
+  OutOfRange, // names a point that does not exist
+};
+
+// The number of cells of each status.
+struct CellCounts
+{
+  vtkIdType NonFinite = 0;
+  vtkIdType OutOfRange = 0;
+
+  void Add(CellStatus status)
+  {
+    this->NonFinite += status == CellStatus::NonFinite;
+    this->OutOfRange += status == CellStatus::OutOfRange;
+  }
+};
+
+// For every point, its number among the finite ones (-1: a NaN or infinite coordinate).
+std::vector<vtkIdType> NumberFinitePoints(vtkPoints* points, vtkIdType& finitePoints);
+
+// The cells of every kind that use a non-finite point, and those that name a missing one.
+CellCounts CountUndrawableCells(vtkPolyData* surface, const std::vector<vtkIdType>& newPointIds);
+
+// The surface without its non-finite points and the cells that use them or name a point that
+// does not exist, its point and cell data following.
+void CopyDrawable(vtkPolyData* surface, const std::vector<vtkIdType>& newPointIds,
+  vtkIdType finitePoints, vtkPolyData* output);
+
+// How many of the three axes the points the cells use span no length along (2: on one line,
+// 3: at one spot).
+int CountFlatAxes(vtkPolyData* mesh);
+}
+
+#endif
