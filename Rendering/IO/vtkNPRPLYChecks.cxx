@@ -116,6 +116,24 @@ bool IsIndexList(const PLYElement& element, const PLYProperty& property)
     (property.Name == "vertex_indices" || property.Name == "vertex_index");
 }
 
+// vtkPLY frees memory it never set for an element without properties (heap corruption), and
+// finds an element by its name: a second one of a name would be checked but not read.
+void CheckElementList(const std::vector<PLYElement>& elements)
+{
+  for (auto element = elements.begin(); element != elements.end(); ++element)
+  {
+    if (element->Properties.empty())
+    {
+      throw Invalid("malformed PLY header: element '" + element->Name + "' has no properties");
+    }
+    if (std::any_of(elements.begin(), element,
+          [&](const PLYElement& earlier) { return earlier.Name == element->Name; }))
+    {
+      throw Invalid("malformed PLY header: element '" + element->Name + "' given twice");
+    }
+  }
+}
+
 // Without a vertex element of x, y and z, vtkPLYReader uses the file it has just closed.
 void CheckVertexElement(const std::vector<PLYElement>& elements)
 {
@@ -438,6 +456,7 @@ std::string vtkNPRPLYChecks::CheckPLY(const std::string& fileName)
   return vtkNPRFormatParsing::WhatIsWrong(
     [&]
     {
+      CheckElementList(elements);
       CheckVertexElement(elements);
       CheckListProperties(elements);
       CheckFormat(format);

@@ -81,6 +81,7 @@ public:
     this->Most = static_cast<long long>(this->Text.size()) * (this->Compressed ? 1100 : 1);
     this->Appended = this->Text.find("<AppendedData");
     const size_t body = this->Appended == std::string::npos ? this->Text.size() : this->Appended;
+    this->CheckNesting(body);
     this->CheckPieceCounts(body);
     this->CheckComponentCounts(body);
     if (this->Appended == std::string::npos ||
@@ -100,6 +101,31 @@ public:
   }
 
 private:
+  // VTK's XML parser builds and frees the element tree recursively: elements nested many
+  // thousands deep overflow the stack. A VTP file nests five or six.
+  void CheckNesting(size_t body) const
+  {
+    constexpr int deepest = 64;
+    int depth = 0;
+    for (size_t tag = this->Text.find('<'); tag < body; tag = this->Text.find('<', tag + 1))
+    {
+      const char next = tag + 1 < body ? this->Text[tag + 1] : '\0';
+      const size_t end = this->Text.find('>', tag);
+      if (next == '/')
+      {
+        --depth;
+      }
+      else if (next != '?' && next != '!' &&
+        (end == std::string::npos || this->Text[end - 1] != '/'))
+      {
+        if (++depth > deepest)
+        {
+          Fail("elements nested more than " + std::to_string(deepest) + " deep");
+        }
+      }
+    }
+  }
+
   // The VTKFile element: the compressor, the byte order and the header type.
   void ReadFileAttributes()
   {

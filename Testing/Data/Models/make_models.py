@@ -56,6 +56,14 @@ write("cube_nan.ply", (header % "ascii").replace("vertex 8", "vertex 9").replace
 write("truncated.ply", (header % "binary_little_endian").encode() + body[:50], "wb")
 write("bad_index.ply", header % "ascii" + "".join("%g %g %g\n" % p for p in P) +
       "".join("4 %d %d %d %d\n" % q for q in QUADS[:5]) + "4 0 1 2 99\n")
+# Elements without properties (vtkPLY frees memory it never set: heap corruption from about 7 of
+# them), and a second vertex element (vtkPLY reads the first of a name)
+write("empty_elements.ply", (header % "ascii").replace("end_header", "".join(
+      "element extra%d 0\n" % i for i in range(8)) + "end_header") +
+      "".join("%g %g %g\n" % p for p in P) + "".join("4 %d %d %d %d\n" % q for q in QUADS))
+write("vertex_twice.ply", (header % "ascii").replace("element face", "element vertex 8\nproperty float x\n"
+      "property float y\nproperty float z\nelement face") + "".join("%g %g %g\n" % p for p in P) * 2 +
+      "".join("4 %d %d %d %d\n" % q for q in QUADS))
 
 # VTK XML polydata and legacy VTK (polydata, and an unstructured hexahedron)
 pts = " ".join("%g %g %g" % p for p in P)
@@ -75,6 +83,8 @@ write("cube.vtp", f"""<?xml version="1.0"?>
 </VTKFile>
 """)
 write("bad.vtp", '<?xml version="1.0"?>\n<VTKFile type="PolyData"><PolyData><Piece NumberOfPoints="8"\n')
+# Elements nested 70 deep (VTK's parser overflows its stack some 100,000 deep: refused from 65)
+write("deep.vtp", open("cube.vtp").read().replace("<PolyData>", "<PolyData>" + "<a>" * 70, 1))
 write("cube.vtk", "# vtk DataFile Version 3.0\ncube\nASCII\nDATASET POLYDATA\nPOINTS 8 float\n" +
       "".join("%g %g %g\n" % p for p in P) + "POLYGONS 6 30\n" + "".join("4 %d %d %d %d\n" % q for q in QUADS))
 write("cube_hexahedron.vtk", "# vtk DataFile Version 3.0\nhexahedron\nASCII\nDATASET UNSTRUCTURED_GRID\n"
