@@ -202,3 +202,43 @@ int vtkNPRDrawableSurface::CountFlatAxes(vtkPolyData* mesh)
   }
   return flatAxes;
 }
+
+bool vtkNPRDrawableSurface::HasOnlyZeroAreaPolygons(vtkPolyData* mesh)
+{
+  if (mesh->GetNumberOfVerts() || mesh->GetNumberOfLines() || mesh->GetNumberOfStrips() ||
+    !mesh->GetNumberOfPolys())
+  {
+    return false;
+  }
+  const double diagonal2 = mesh->GetLength() * mesh->GetLength();
+  const vtkNPRPointCoordinates data(mesh->GetPoints()->GetData());
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkIdType size = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(size, ids);)
+  {
+    // Twice the area vector (Newell), from the first vertex.
+    double first[3], a[3], b[3], area[3] = { 0.0, 0.0, 0.0 };
+    if (size < 3)
+    {
+      continue;
+    }
+    data.Get(ids[0], first);
+    data.Get(ids[1], a);
+    for (vtkIdType k = 2; k < size; ++k)
+    {
+      data.Get(ids[k], b);
+      const double u[3] = { a[0] - first[0], a[1] - first[1], a[2] - first[2] };
+      const double v[3] = { b[0] - first[0], b[1] - first[1], b[2] - first[2] };
+      area[0] += u[1] * v[2] - u[2] * v[1];
+      area[1] += u[2] * v[0] - u[0] * v[2];
+      area[2] += u[0] * v[1] - u[1] * v[0];
+      std::copy_n(b, 3, a);
+    }
+    if (std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]) > 1e-12 * diagonal2)
+    {
+      return false;
+    }
+  }
+  return true;
+}

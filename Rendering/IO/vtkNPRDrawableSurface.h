@@ -49,6 +49,11 @@ void CopyDrawable(vtkPolyData* surface, const std::vector<vtkIdType>& newPointId
 // How many of the three axes the points the cells use span no length along (2: on one line,
 // 3: at one spot).
 int CountFlatAxes(vtkPolyData* mesh);
+
+// True when the mesh has only polygons and every one of them has no area (its vertices on one
+// line, to 1e-12 of the square of its bounds' diagonal): nothing of it can cover a pixel. Stops at
+// the first polygon with an area, so a sound mesh costs one polygon.
+bool HasOnlyZeroAreaPolygons(vtkPolyData* mesh);
 }
 
 #endif

@@ -437,6 +437,13 @@ bool vtkNPRModelReader::DropUndrawable(
       (flatAxes == 3 ? "at one spot" : "on one line") + " (zero-area bounds)" +
       (droppedText.empty() ? std::string() : " after it " + droppedText));
   }
+  if (vtkNPRDrawableSurface::HasOnlyZeroAreaPolygons(output))
+  {
+    return this->Fail(name + ": nothing to draw: every one of its " +
+      std::to_string(output->GetNumberOfCells()) +
+      " faces has zero area (its corners on one line)" +
+      (droppedText.empty() ? std::string() : " after it " + droppedText));
+  }
   if (!droppedText.empty())
   {
     this->WarningMessage = name + ": " + droppedText;

@@ -177,6 +177,7 @@ int main(int argc, char* argv[])
     { "empty_elements.ply", "element 'extra0' has no properties" },
     { "vertex_twice.ply", "element 'vertex' given twice" },
     { "deep.vtp", "elements nested more than 64 deep" },
+    { "zero_area.stl", "every one of its 3 faces has zero area" },
     { "bad.gltf", "malformed glTF file: invalid JSON: Line 2, Column 1" },
     { "no_geometry.obj", "contains no geometry" }, { "cube.xyz", "unknown model format '.xyz'" },
     { "all_nan.off", "no cell is left" },

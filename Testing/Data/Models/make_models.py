@@ -56,6 +56,10 @@ write("cube_nan.ply", (header % "ascii").replace("vertex 8", "vertex 9").replace
 write("truncated.ply", (header % "binary_little_endian").encode() + body[:50], "wb")
 write("bad_index.ply", header % "ascii" + "".join("%g %g %g\n" % p for p in P) +
       "".join("4 %d %d %d %d\n" % q for q in QUADS[:5]) + "4 0 1 2 99\n")
+# Every triangle with its corners on one line (bounds of area, nothing to draw)
+write("zero_area.stl", "solid flat\n" + "".join(
+      "facet normal 0 0 1\nouter loop\nvertex %d %d 0\nvertex %d %d 0\nvertex %d %d 0\nendloop\nendfacet\n"
+      % (0, y, 1, y, 3, y) for y in range(3)) + "endsolid flat\n")
 # Elements without properties (vtkPLY frees memory it never set: heap corruption from about 7 of
 # them), and a second vertex element (vtkPLY reads the first of a name)
 write("empty_elements.ply", (header % "ascii").replace("end_header", "".join(
