@@ -15,6 +15,7 @@
 #include "nprWindowImage.h"
 
 #include "vtkCamera.h"
+#include "vtkFloatArray.h"
 #include "vtkNPRInkPass.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRReferenceMask.h"
@@ -142,6 +143,26 @@ void MakeOutputFolders(const nprRenderOptions& options)
   }
 }
 
+// A picture of the background alone is never silent: nothing wrote a depth (a model far smaller
+// than a pixel at this camera, or one the camera file points away from).
+void WarnWhenNothingDrawn(vtkRenderWindow* window, long long triangles)
+{
+  const int* size = window->GetSize();
+  vtkNew<vtkFloatArray> depth;
+  if (window->GetZbufferData(0, 0, size[0] - 1, size[1] - 1, depth) != VTK_OK)
+  {
+    return;
+  }
+  const float* values = depth->GetPointer(0);
+  if (std::all_of(values, values + depth->GetNumberOfValues(), [](float z) { return z >= 1.0f; }))
+  {
+    std::cerr << "npr-render: warning: the " << size[0] << "x" << size[1]
+              << " picture shows only the background: none of the " << triangles
+              << " triangles covers a pixel (the model is far smaller than a pixel at this "
+                 "camera, or out of its view)\n";
+  }
+}
+
 int Run(const nprRenderOptions& options, nprOutputWindow* messages)
 {
   MakeOutputFolders(options);
@@ -194,6 +215,7 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
   progress.Start();
   window->Render();
   progress.Done("first frame (" + options.Pass.Style + ")");
+  WarnWhenNothingDrawn(window, triangles);
 
   if (options.Orbit > 0)
   {

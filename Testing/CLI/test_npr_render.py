@@ -121,6 +121,16 @@ rc, _, err = run(os.path.join(models, "cube_nan.ply"), "--size", "64x64", "-o", 
 check(rc == 0 and "warning" in err and "NaN/Inf" in err and os.path.exists(out("nan.png")),
       "NaN points are dropped with a warning (%s)" % err.strip())
 
+# A picture of the background alone is never silent: the model zoomed far below a pixel gives one
+# warning (exit 0, the image made); the same model in view none.
+for style in ("shaded", "edges"):
+    rc, _, err = run(rotor, "--size", "64x64", "--style", style, "--zoom", "0.00001", "-o", out("tiny.png"))
+    check(rc == 0 and err.strip().startswith("npr-render: warning: the 64x64 picture shows only the "
+                                             "background: none of the ") and os.path.exists(out("tiny.png")),
+          "%s: a model far below a pixel gives a warning (%r)" % (style, err.strip()))
+rc, _, err = run(rotor, "--size", "64x64", "--style", "edges", "-o", out("in_view.png"))
+check(rc == 0 and err == "", "a model in view: no warning (%r)" % err)
+
 # A partly bad OBJ (NaN/Inf vertices, one face on finite points): one warning, the face drawn.
 from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
 

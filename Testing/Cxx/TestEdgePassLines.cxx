@@ -159,6 +159,28 @@ int CubeEdges(bool parallel)
   return nprTestResult();
 }
 
+// The camera of the fold scenes: straight down the z axis at the fold along x (y = 0), and the
+// fold's ends (x = -0.8 and 0.8) in pixels.
+void LookAtFold(Scene& scene, bool parallel)
+{
+  vtkCamera* camera = scene.Camera();
+  camera->SetPosition(0, 0, 10);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(14);
+  camera->SetParallelProjection(parallel);
+  camera->SetParallelScale(1.2);
+  camera->SetClippingRange(5, 15);
+}
+
+void ProjectFold(Scene& scene, double left[2], double right[2])
+{
+  const double foldLeft[3] = { -0.8, 0, 0 };
+  const double foldRight[3] = { 0.8, 0, 0 };
+  scene.Project(foldLeft, left);
+  scene.Project(foldRight, right);
+}
+
 // ---- A plane at a grazing angle: its far border is a silhouette, its inside has no line ----
 int GrazingPlane()
 {
@@ -226,20 +248,10 @@ int GrazingFold(bool parallel, bool gap)
   vtkNew<vtkCleanPolyData> merged; // one surface along the fold: the faces share its points
   merged->SetInputConnection(both->GetOutputPort());
   nprAddActor(scene.Renderer, merged->GetOutputPort(), Grey);
-  vtkCamera* camera = scene.Camera();
-  camera->SetPosition(0, 0, 10);
-  camera->SetFocalPoint(0, 0, 0);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetViewAngle(14);
-  camera->SetParallelProjection(parallel);
-  camera->SetParallelScale(1.2);
-  camera->SetClippingRange(5, 15);
+  LookAtFold(scene, parallel);
   auto mask = scene.Mask();
-  const double foldLeft[3] = { -0.8, 0, 0 };
-  const double foldRight[3] = { 0.8, 0, 0 };
   double left[2], right[2];
-  scene.Project(foldLeft, left);
-  scene.Project(foldRight, right);
+  ProjectFold(scene, left, right);
   long long near = 0;
   for (int y = 0; y < 300; ++y)
   {
@@ -285,21 +297,13 @@ int CreaseThreshold(double creaseAngle, double turn)
   both->AddInputConnection(faceA->GetOutputPort());
   both->AddInputConnection(faceB->GetOutputPort());
   nprAddActor(scene.Renderer, both->GetOutputPort(), Grey);
-  vtkCamera* camera = scene.Camera();
-  camera->SetPosition(0, 0, 10);
-  camera->SetFocalPoint(0, 0, 0);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetViewAngle(14);
-  camera->SetClippingRange(5, 15);
+  LookAtFold(scene, false);
   scene.Edges()->SetCreaseAngle(creaseAngle);
   scene.Edges()->SetLineWidth(1.0);
   scene.Edges()->AntiAliasingOff();
   auto mask = scene.Mask();
-  const double foldLeft[3] = { -0.8, 0, 0 };
-  const double foldRight[3] = { 0.8, 0, 0 };
   double left[2], right[2];
-  scene.Project(foldLeft, left);
-  scene.Project(foldRight, right);
+  ProjectFold(scene, left, right);
   long long near = 0, elsewhere = 0;
   for (int y = 0; y < 300; ++y)
   {
