@@ -143,6 +143,27 @@ void MakeOutputFolders(const nprRenderOptions& options)
   }
 }
 
+// --edge-mask: the style's line pass draws its coverage alone for one render (the edge pass reuses
+// its G-buffer and line image: only the composite runs).
+void WriteEdgeMask(vtkRenderWindow* window, vtkNPRPass* pass, const nprRenderOptions& options)
+{
+  auto write = [&](auto* linePass)
+  {
+    linePass->CoverageOnlyOn();
+    window->Render();
+    nprWriteWindowPNG(window, options.EdgeMask, true);
+    linePass->CoverageOnlyOff();
+  };
+  if (options.Pass.Style == "inked")
+  {
+    write(pass->GetInkPass());
+  }
+  else
+  {
+    write(pass->GetEdgePass());
+  }
+}
+
 // A picture of the background alone is never silent: nothing wrote a depth (a model far smaller
 // than a pixel at this camera, or one the camera file points away from).
 void WarnWhenNothingDrawn(vtkRenderWindow* window, long long triangles)
@@ -249,19 +270,9 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
   {
     progress.Done("wrote " + options.Output);
   }
-  if (!options.EdgeMask.empty() && options.Pass.Style == "inked")
+  if (!options.EdgeMask.empty())
   {
-    pass->GetInkPass()->CoverageOnlyOn();
-    window->Render();
-    nprWriteWindowPNG(window, options.EdgeMask, true);
-    pass->GetInkPass()->CoverageOnlyOff();
-  }
-  else if (!options.EdgeMask.empty())
-  {
-    pass->GetEdgePass()->CoverageOnlyOn();
-    window->Render(); // the G-buffer and line image are reused: only the composite runs
-    nprWriteWindowPNG(window, options.EdgeMask, true);
-    pass->GetEdgePass()->CoverageOnlyOff();
+    WriteEdgeMask(window, pass, options);
   }
   if (!options.ReferenceMask.empty())
   {

@@ -159,6 +159,7 @@ void vtkNPRGLTFDocument::CheckScenes()
   }
   this->Index(this->Root["scene"], "scene", "scenes");
 }
+
 void vtkNPRGLTFDocument::CheckSkins()
 {
   const Json::Value& skins = this->Array("skins");
