@@ -191,6 +191,8 @@ def problem(code, name):
         if is_output(name) or code.path_exists(name) or code.path_exists(name + ".in"):
             return None
         return None if code.is_vtk_name(name[:-2]) else "no such file or folder"
+    if name.endswith("::"):
+        return None  # a namespace on its own
     if name.startswith("NPR::"):
         return None if name in code.modules or name in code.targets else "no such module"
     library = re.fullmatch(r"lib(vtk\w+NPR)(\.so[.\d]*)?", name)
