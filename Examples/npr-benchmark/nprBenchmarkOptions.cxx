@@ -142,18 +142,7 @@ void ApplyScaleDefaults(
   }
   options.Runs = runsGiven ? options.Runs : 1;
 }
-}
 
-void nprMakeBenchmarkFolder(const std::string& path)
-{
-  if (!vtksys::SystemTools::MakeDirectory(path))
-  {
-    throw std::runtime_error(path + ": cannot create the folder");
-  }
-}
-
-namespace
-{
 // The options that take a text as it is (--data DIR) or switch something on (--quick).
 bool ParseTextOrSwitch(nprArgumentReader& arguments, nprBenchmarkOptions& options)
 {
@@ -187,6 +176,14 @@ bool ParseTextOrSwitch(nprArgumentReader& arguments, nprBenchmarkOptions& option
   }
   return false;
 }
+}
+
+void nprMakeBenchmarkFolder(const std::string& path)
+{
+  if (!vtksys::SystemTools::MakeDirectory(path))
+  {
+    throw std::runtime_error(path + ": cannot create the folder");
+  }
 }
 
 nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])

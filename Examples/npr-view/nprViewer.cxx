@@ -36,6 +36,25 @@ bool Exists(const std::string& path)
 {
   return std::ifstream(path).good();
 }
+
+// The setting that a key (either case) switches on and off: a kind of line, or the hidden lines;
+// nullptr for any other key.
+bool* ToggledBy(char key, nprPassSettings& s)
+{
+  switch (std::tolower(static_cast<unsigned char>(key)))
+  {
+    case 's':
+      return &s.Silhouettes;
+    case 'c':
+      return &s.Creases;
+    case 'o':
+      return &s.Contours;
+    case 'd':
+      return &s.HiddenLines;
+    default:
+      return nullptr;
+  }
+}
 }
 
 const char* const nprViewKeys =
@@ -124,28 +143,6 @@ nprViewer::~nprViewer()
 {
   this->Window->RemoveObserver(this->StartObserver);
   this->Window->RemoveObserver(this->EndObserver);
-}
-
-namespace
-{
-// The setting that a key (either case) switches on and off: a kind of line, or the hidden lines;
-// nullptr for any other key.
-bool* ToggledBy(char key, nprPassSettings& s)
-{
-  switch (std::tolower(static_cast<unsigned char>(key)))
-  {
-    case 's':
-      return &s.Silhouettes;
-    case 'c':
-      return &s.Creases;
-    case 'o':
-      return &s.Contours;
-    case 'd':
-      return &s.HiddenLines;
-    default:
-      return nullptr;
-  }
-}
 }
 
 void nprViewer::Apply()
