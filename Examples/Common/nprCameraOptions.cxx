@@ -50,3 +50,62 @@ void nprApplyCameraMove(vtkRenderer* renderer, const nprCameraMove& move)
   camera->Zoom(move.Zoom);
   renderer->ResetCameraClippingRange();
 }
+
+bool nprParseSceneOption(nprArgumentReader& arguments, nprSceneOptions& scene)
+{
+  const std::string& arg = arguments.Current();
+  if (arg == "--size")
+  {
+    const auto size = nprParseSize("--size", arguments.Value(), 1, 16384, "WxH (e.g. 1024x768)");
+    scene.Width = size.first;
+    scene.Height = size.second;
+    scene.SizeGiven = true;
+  }
+  else if (arg == "--background")
+  {
+    nprParseColor(arg, arguments.Value(), scene.Background);
+  }
+  else if (arg == "--camera-in")
+  {
+    scene.CameraIn = arguments.Value();
+  }
+  else if (arg.size() > 1 && arg[0] == '-')
+  {
+    return nprParseCameraOption(arguments, scene.Camera);
+  }
+  else
+  {
+    scene.Models.push_back(arg);
+  }
+  return true;
+}
+
+void nprCheckSceneOptions(const nprSceneOptions& scene)
+{
+  if (scene.Models.empty())
+  {
+    throw nprUsageError("no model file given (see --help)");
+  }
+  if (!scene.CameraIn.empty() && scene.Camera.Given)
+  {
+    throw nprUsageError("--azimuth, --elevation and --zoom move the reset camera; they cannot be "
+                        "combined with --camera-in");
+  }
+}
+
+nprCameraState nprReadStartCamera(const nprSceneOptions& scene, int& width, int& height)
+{
+  width = scene.Width;
+  height = scene.Height;
+  nprCameraState start;
+  if (!scene.CameraIn.empty())
+  {
+    start = nprReadCameraFile(scene.CameraIn);
+    if (!scene.SizeGiven && start.Size[0] > 0)
+    {
+      width = start.Size[0];
+      height = start.Size[1];
+    }
+  }
+  return start;
+}

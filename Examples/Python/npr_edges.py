@@ -16,32 +16,14 @@ import argparse
 import sys
 
 import vtknpr  # noqa: F401  (first: it imports the VTK modules it needs by itself)
-from vtknpr import vtkNPRModelReader, vtkNPRPass, vtkNPRRenderWindowFactory
-from vtkmodules.vtkCommonCore import vtkObject
-from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+from vtknpr import vtkNPRPass, vtkNPRRenderWindowFactory
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL object factory overrides)
 
+from npr_example_common import grab, read_model, rgb, size, view_from
+
 DARK = 60  # a pixel is dark when its brightest channel is below this (0..255)
-
-
-def size(text):
-    """'WxH' -> [W, H]"""
-    width, height = (int(part) for part in text.split("x"))
-    if width < 1 or height < 1:
-        raise ValueError(text)
-    return [width, height]
-
-
-def rgb(text):
-    """'r,g,b' with each part in 0..1 -> [r, g, b]"""
-    parts = [float(part) for part in text.split(",")]
-    if len(parts) != 3 or not all(0.0 <= part <= 1.0 for part in parts):
-        raise ValueError(text)
-    return parts
 
 
 def parse_arguments():
@@ -62,39 +44,6 @@ def parse_arguments():
                         help="camera elevation after the reset (default 30)")
     parser.add_argument("--check", action="store_true", help="verify the result; exit 1 on failure")
     return parser.parse_args()
-
-
-def read_model(file_name):
-    """The model, with normals computed as npr-render does when the file has none."""
-    reader = vtkNPRModelReader()
-    reader.SetFileName(file_name)
-    vtkObject.GlobalWarningDisplayOff()  # the reader's one-line message is reported below
-    reader.Update()
-    vtkObject.GlobalWarningDisplayOn()
-    if reader.GetErrorMessage():
-        sys.exit("npr_edges: error: " + reader.GetErrorMessage())
-    model = reader.GetOutput()
-    if model.GetPointData().GetNormals() or model.GetNumberOfPolys() + model.GetNumberOfStrips() == 0:
-        return model
-    normals = vtkPolyDataNormals()  # smooth shading that keeps edges over 30 degrees sharp
-    normals.SetInputData(model)
-    normals.SetFeatureAngle(30.0)
-    normals.SplittingOn()
-    normals.ConsistencyOff()
-    normals.Update()
-    return normals.GetOutput()
-
-
-def grab(window):
-    """A copy of the image last rendered into the window (RGB, from the back buffer)."""
-    grabber = vtkWindowToImageFilter()
-    grabber.SetInput(window)
-    grabber.ReadFrontBufferOff()
-    grabber.ShouldRerenderOff()  # the frame as rendered: no extra render
-    grabber.Update()
-    image = vtkImageData()
-    image.DeepCopy(grabber.GetOutput())
-    return image
 
 
 def pixels(image):
@@ -131,7 +80,7 @@ def count_dark(image, box):
 
 def main():
     args = parse_arguments()
-    model = read_model(args.model)
+    model = read_model(args.model, "npr_edges")
 
     mapper = vtkPolyDataMapper()
     mapper.SetInputData(model)
@@ -157,12 +106,7 @@ def main():
     window.SetMultiSamples(0)  # the pass anti-aliases its lines itself
     window.SetSize(*args.size)
     window.AddRenderer(renderer)
-    renderer.ResetCamera()  # once the window exists: the reset fits its aspect ratio
-    camera = renderer.GetActiveCamera()
-    camera.Azimuth(args.azimuth)
-    camera.Elevation(args.elevation)
-    camera.OrthogonalizeViewUp()
-    renderer.ResetCameraClippingRange()
+    view_from(renderer, args.azimuth, args.elevation)
     window.Render()
 
     edge_image = grab(window)

@@ -18,31 +18,14 @@ import argparse
 import sys
 
 import vtknpr  # noqa: F401  (first: it imports the VTK modules it needs by itself)
-from vtknpr import vtkNPRModelReader, vtkNPRPass, vtkNPRRenderWindowFactory
-from vtkmodules.vtkCommonCore import vtkObject
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+from vtknpr import vtkNPRPass, vtkNPRRenderWindowFactory
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL object factory overrides)
 
+from npr_example_common import grab, read_model, rgb, size, view_from
+
 COLOR = (0.85, 0.55, 0.35)  # no shade of it is the white background, so the object stands out
-
-
-def size(text):
-    """'WxH' -> [W, H]"""
-    width, height = (int(part) for part in text.split("x"))
-    if width < 1 or height < 1:
-        raise ValueError(text)
-    return [width, height]
-
-
-def rgb(text):
-    """'r,g,b' with each part in 0..1 -> [r, g, b]"""
-    parts = [float(part) for part in text.split(",")]
-    if len(parts) != 3 or not all(0.0 <= part <= 1.0 for part in parts):
-        raise ValueError(text)
-    return parts
 
 
 def parse_arguments():
@@ -68,28 +51,6 @@ def parse_arguments():
     return args
 
 
-def read_model(file_name):
-    """The model, with normals computed as npr-render does when the file has none."""
-    reader = vtkNPRModelReader()
-    reader.SetFileName(file_name)
-    vtkObject.GlobalWarningDisplayOff()  # the reader's one-line message is reported below
-    reader.Update()
-    vtkObject.GlobalWarningDisplayOn()
-    if reader.GetErrorMessage():
-        sys.exit("npr_toon_sketch: error: " + reader.GetErrorMessage())
-    model = reader.GetOutput()
-    surfaces = model.GetNumberOfPolys() + model.GetNumberOfStrips()
-    if model.GetPointData().GetNormals() or not surfaces:
-        return model
-    normals = vtkPolyDataNormals()  # smooth shading that keeps edges over 30 degrees sharp
-    normals.SetInputData(model)
-    normals.SetFeatureAngle(30.0)
-    normals.SplittingOn()
-    normals.ConsistencyOff()
-    normals.Update()
-    return normals.GetOutput()
-
-
 class Scene:
     """The model in a headless window of its own, drawn by a vtkNPRPass of the given style."""
 
@@ -113,22 +74,12 @@ class Scene:
         self.window.SetMultiSamples(0)  # one colour per pixel: multisampling would blend the bands
         self.window.SetSize(*image_size)
         self.window.AddRenderer(self.renderer)
-        self.renderer.ResetCamera()  # once the window exists: the reset fits its aspect ratio
-        camera = self.renderer.GetActiveCamera()
-        camera.Azimuth(30.0)
-        camera.Elevation(30.0)
-        camera.OrthogonalizeViewUp()
-        self.renderer.ResetCameraClippingRange()
+        view_from(self.renderer, 30.0, 30.0)
 
     def render(self):
         """Renders and returns the frame as a vtkImageData (RGB, read from the back buffer)."""
         self.window.Render()
-        grabber = vtkWindowToImageFilter()
-        grabber.SetInput(self.window)
-        grabber.ReadFrontBufferOff()
-        grabber.ShouldRerenderOff()  # the frame as rendered: no extra render
-        grabber.Update()
-        return grabber.GetOutput()  # a new output per grabber: no copy needed
+        return grab(self.window)
 
 
 def colors(image):
@@ -207,7 +158,7 @@ def run_checks(model, args):
 
 def main():
     args = parse_arguments()
-    model = read_model(args.model)
+    model = read_model(args.model, "npr_toon_sketch")
 
     scene = Scene(model, args.size, args.style)
     scene.npr.GetToonPass().SetNumberOfBands(args.bands)

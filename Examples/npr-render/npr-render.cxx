@@ -203,18 +203,9 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
     triangles += nprAddModel(renderer, options.Models[i], i, "npr-render", &progress);
   }
 
-  int width = options.Width, height = options.Height;
   vtkCamera* camera = renderer->GetActiveCamera();
-  nprCameraState given;
-  if (!options.CameraIn.empty())
-  {
-    given = nprReadCameraFile(options.CameraIn); // before the window: a bad file fails fast
-    if (!options.SizeGiven && given.Size[0] > 0)
-    {
-      width = given.Size[0];
-      height = given.Size[1];
-    }
-  }
+  int width, height;
+  const nprCameraState given = nprReadStartCamera(options, width, height);
 
   vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
     vtkNPRRenderWindowFactory::CreateRenderWindow(options.Backend.c_str()));

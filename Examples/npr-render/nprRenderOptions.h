@@ -10,16 +10,10 @@
 #include <string>
 #include <vector>
 
-struct nprRenderOptions
+// With the models, the frame's options and the camera's start (nprSceneOptions).
+struct nprRenderOptions : nprSceneOptions
 {
-  std::vector<std::string> Models;
   std::string Output;
-  int Width = 1024;
-  int Height = 768;
-  bool SizeGiven = false;
-  nprCameraMove Camera; // --azimuth, --elevation, --zoom
-  double Background[3] = { 1.0, 1.0, 1.0 };
-  std::string CameraIn;
   std::string CameraOut;
   int Frames = 0;
   int Orbit = 0;             // --orbit N frames

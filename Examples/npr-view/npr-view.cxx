@@ -100,17 +100,8 @@ int Run(const nprViewOptions& options, nprOutputWindow* messages)
   {
     triangles += nprAddModel(renderer, options.Models[i], i, "npr-view");
   }
-  int width = options.Width, height = options.Height;
-  nprCameraState given;
-  if (!options.CameraIn.empty())
-  {
-    given = nprReadCameraFile(options.CameraIn); // before the window: a bad file fails fast
-    if (!options.SizeGiven && given.Size[0] > 0)
-    {
-      width = given.Size[0];
-      height = given.Size[1];
-    }
-  }
+  int width, height;
+  const nprCameraState given = nprReadStartCamera(options, width, height);
 
   // The factory's X window (VTK's, without multisampling, as npr-render --backend x), shown.
   vtkSmartPointer<vtkRenderWindow> window =

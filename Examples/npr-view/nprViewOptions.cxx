@@ -41,27 +41,11 @@ nprViewOptions nprParseViewOptions(int argc, char* argv[])
   while (arguments.Next())
   {
     const std::string& arg = arguments.Current();
-    if (nprParsePassOption(arguments, options.Pass) ||
-      nprParseCameraOption(arguments, options.Camera))
+    if (nprParsePassOption(arguments, options.Pass) || nprParseSceneOption(arguments, options))
     {
-      continue; // --style and the flags of the styles; the camera's moves
+      continue; // --style and the flags of the styles; the models, the frame and the camera
     }
-    if (arg == "--size")
-    {
-      const auto size = nprParseSize("--size", arguments.Value(), 1, 16384, "WxH (e.g. 1024x768)");
-      options.Width = size.first;
-      options.Height = size.second;
-      options.SizeGiven = true;
-    }
-    else if (arg == "--background")
-    {
-      nprParseColor(arg, arguments.Value(), options.Background);
-    }
-    else if (arg == "--camera-in")
-    {
-      options.CameraIn = arguments.Value();
-    }
-    else if (arg == "--output-prefix")
+    if (arg == "--output-prefix")
     {
       options.OutputPrefix = arguments.Value();
     }
@@ -69,24 +53,12 @@ nprViewOptions nprParseViewOptions(int argc, char* argv[])
     {
       options.OrbitFrames = nprParseInteger(arg, arguments.Value(), 1, 100000);
     }
-    else if (arg.size() > 1 && arg[0] == '-')
+    else
     {
       throw nprUsageError("unknown option '" + arg + "' (see --help)");
     }
-    else
-    {
-      options.Models.push_back(arg);
-    }
   }
-  if (options.Models.empty())
-  {
-    throw nprUsageError("no model file given (see --help)");
-  }
-  if (!options.CameraIn.empty() && options.Camera.Given)
-  {
-    throw nprUsageError("--azimuth, --elevation and --zoom move the reset camera; they cannot be "
-                        "combined with --camera-in");
-  }
+  nprCheckSceneOptions(options);
   // The keys switch between every style: only what no style uses, or cannot work, is told.
   std::vector<std::string> styles;
   for (int style = vtkNPRPass::SHADED; style <= vtkNPRPass::DRAWING; ++style)

@@ -10,15 +10,9 @@
 #include <string>
 #include <vector>
 
-struct nprViewOptions
+// With the models, the frame's options and the camera's start (nprSceneOptions).
+struct nprViewOptions : nprSceneOptions
 {
-  std::vector<std::string> Models;
-  int Width = 1024;
-  int Height = 768;
-  bool SizeGiven = false;
-  double Background[3] = { 1.0, 1.0, 1.0 };
-  std::string CameraIn;
-  nprCameraMove Camera; // --azimuth, --elevation, --zoom
   std::string OutputPrefix = "npr-view-";
   int OrbitFrames = 0;  // --orbit-benchmark N
   nprPassSettings Pass; // --style and the flags of the styles, as npr-render takes them

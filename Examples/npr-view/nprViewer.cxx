@@ -36,6 +36,25 @@ bool Exists(const std::string& path)
 {
   return std::ifstream(path).good();
 }
+
+// The setting that a key (either case) switches on and off: a kind of line, or the hidden lines;
+// nullptr for any other key.
+bool* ToggledBy(char key, nprPassSettings& s)
+{
+  switch (std::tolower(static_cast<unsigned char>(key)))
+  {
+    case 's':
+      return &s.Silhouettes;
+    case 'c':
+      return &s.Creases;
+    case 'o':
+      return &s.Contours;
+    case 'd':
+      return &s.HiddenLines;
+    default:
+      return nullptr;
+  }
+}
 }
 
 const char* const nprViewKeys =
@@ -137,6 +156,12 @@ void nprViewer::Apply()
 bool nprViewer::HandleKey(char key)
 {
   nprPassSettings& s = this->Settings;
+  if (bool* setting = ToggledBy(key, s))
+  {
+    *setting = !*setting;
+    this->Apply();
+    return true;
+  }
   switch (key)
   {
     case '1':
@@ -162,22 +187,6 @@ bool nprViewer::HandleKey(char key)
       break;
     case '[':
       s.CreaseAngle = std::max(1.0, s.CreaseAngle - 5.0);
-      break;
-    case 's':
-    case 'S':
-      s.Silhouettes = !s.Silhouettes;
-      break;
-    case 'c':
-    case 'C':
-      s.Creases = !s.Creases;
-      break;
-    case 'o':
-    case 'O':
-      s.Contours = !s.Contours;
-      break;
-    case 'd':
-    case 'D':
-      s.HiddenLines = !s.HiddenLines;
       break;
     case 'p':
       this->SaveScreenshot(false);

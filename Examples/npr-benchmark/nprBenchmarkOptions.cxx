@@ -142,6 +142,40 @@ void ApplyScaleDefaults(
   }
   options.Runs = runsGiven ? options.Runs : 1;
 }
+
+// The options that take a text as it is (--data DIR) or switch something on (--quick).
+bool ParseTextOrSwitch(nprArgumentReader& arguments, nprBenchmarkOptions& options)
+{
+  using Options = nprBenchmarkOptions;
+  using Text = std::pair<const char*, std::string Options::*>;
+  using Switch = std::pair<const char*, bool Options::*>;
+  static const Text texts[] = { { "--data", &Options::Data }, { "--out", &Options::Out },
+    { "--dense-mesh", &Options::DenseMesh }, { "--scale-meshes", &Options::ScaleMeshes },
+    { "--scale-steps", &Options::ScaleSteps } };
+  static const Switch switches[] = { { "--quick", &Options::Quick },
+    { "--stress", &Options::Stress }, { "--coherence", &Options::Coherence },
+    { "--drawing", &Options::Drawing }, { "--speed", &Options::Speed },
+    { "--contours", &Options::Contours }, { "--scale", &Options::Scale },
+    { "--save-masks", &Options::SaveMasks } };
+  const std::string& arg = arguments.Current();
+  for (const auto& text : texts)
+  {
+    if (arg == text.first)
+    {
+      options.*text.second = arguments.Value();
+      return true;
+    }
+  }
+  for (const auto& on : switches)
+  {
+    if (arg == on.first)
+    {
+      options.*on.second = true;
+      return true;
+    }
+  }
+  return false;
+}
 }
 
 void nprMakeBenchmarkFolder(const std::string& path)
@@ -160,19 +194,11 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
   while (arguments.Next())
   {
     const std::string& arg = arguments.Current();
-    if (arg == "--data")
+    if (ParseTextOrSwitch(arguments, options))
     {
-      options.Data = arguments.Value();
+      continue;
     }
-    else if (arg == "--out")
-    {
-      options.Out = arguments.Value();
-    }
-    else if (arg == "--dense-mesh")
-    {
-      options.DenseMesh = arguments.Value();
-    }
-    else if (arg == "--frames")
+    if (arg == "--frames")
     {
       options.Frames = nprParseInteger(arg, arguments.Value(), 1, 10000);
       framesGiven = true;
@@ -228,45 +254,9 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
     {
       options.LineWidth = nprParseNumberIn(arg, arguments.Value(), 0.5, 16.0);
     }
-    else if (arg == "--quick")
-    {
-      options.Quick = true;
-    }
-    else if (arg == "--stress")
-    {
-      options.Stress = true;
-    }
-    else if (arg == "--coherence")
-    {
-      options.Coherence = true;
-    }
-    else if (arg == "--drawing")
-    {
-      options.Drawing = true;
-    }
-    else if (arg == "--speed")
-    {
-      options.Speed = true;
-    }
-    else if (arg == "--contours")
-    {
-      options.Contours = true;
-    }
-    else if (arg == "--scale")
-    {
-      options.Scale = true;
-    }
     else if (arg == "--scale-sizes")
     {
       options.ScaleSizes = ParseScaleSizes(arguments.Value());
-    }
-    else if (arg == "--scale-meshes")
-    {
-      options.ScaleMeshes = arguments.Value();
-    }
-    else if (arg == "--scale-steps")
-    {
-      options.ScaleSteps = arguments.Value();
     }
     else if (arg == "--stress-cases")
     {
@@ -275,10 +265,6 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
     else if (arg == "--max-drift")
     {
       options.MaxDrift = nprParseNumberIn(arg, arguments.Value(), 0.0, 1.0);
-    }
-    else if (arg == "--save-masks")
-    {
-      options.SaveMasks = true;
     }
     else
     {

@@ -47,6 +47,10 @@ struct nprBenchmarkInfo
 // The figures that can go wrong (NaN, out of range): empty when every row is sane.
 std::string nprCheckBenchmarkRows(const std::vector<nprBenchmarkRow>& rows);
 
+// A mode's exit status: 0 without problems; else 1, after printing them on stderr under
+// "npr-benchmark: error:" and what (": figures out of range").
+int nprBenchmarkStatus(const std::string& problems, const std::string& what = "");
+
 void nprWriteBenchmarkCSV(const std::string& path, const std::vector<nprBenchmarkRow>& rows);
 void nprWriteBenchmarkMarkdown(
   const std::string& path, const std::vector<nprBenchmarkRow>& rows, const nprBenchmarkInfo& info);

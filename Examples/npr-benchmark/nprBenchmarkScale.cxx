@@ -639,10 +639,5 @@ int nprRunBenchmarkScale(const nprBenchmarkOptions& options)
             << "/scale.{csv,md}, scale_programs.png, scale_steps.png in "
             << nprFixed(nprSecondsSince(runStart), 1) << " s\n";
   const std::string problems = Problems(rows);
-  if (!problems.empty())
-  {
-    std::cerr << "npr-benchmark: error:\n" << problems;
-    return 1;
-  }
-  return 0;
+  return nprBenchmarkStatus(problems);
 }

@@ -249,9 +249,7 @@ void FitSSAO(const std::vector<SpeedMethod>& methods, double sceneSize)
 int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
 {
   const nprClock::time_point runStart = nprClock::now();
-  nprMakeBenchmarkFolders(options);
-  const std::vector<nprBenchmarkScene> scenes =
-    nprLoadBenchmarkScenes(options.Scenes, options.Data, options.DenseMesh, options.ScenesGiven);
+  const std::vector<nprBenchmarkScene> scenes = nprStartBenchmarkRun(options);
   nprBenchmarkStage stage(options.LineWidth);
   stage.Window->SetMultiSamples(0);
   std::vector<SpeedMethod> methods = SelectMethods(options.Methods);
@@ -484,10 +482,5 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
   }
   std::cerr << "npr-benchmark: wrote " << options.Out << "/speed.{csv,md} in "
             << nprFormat(nprSecondsSince(runStart), 4) << " s\n";
-  if (!problems.empty())
-  {
-    std::cerr << "npr-benchmark: error:\n" << problems;
-    return 1;
-  }
-  return 0;
+  return nprBenchmarkStatus(problems);
 }

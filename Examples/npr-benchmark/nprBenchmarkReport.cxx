@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -178,6 +179,16 @@ std::string nprFormat(double value, int digits)
   char text[64];
   std::snprintf(text, sizeof(text), "%.*g", digits, value);
   return text;
+}
+
+int nprBenchmarkStatus(const std::string& problems, const std::string& what)
+{
+  if (problems.empty())
+  {
+    return 0;
+  }
+  std::cerr << "npr-benchmark: error" << what << ":\n" << problems;
+  return 1;
 }
 
 std::string nprCheckBenchmarkRows(const std::vector<nprBenchmarkRow>& rows)

@@ -40,9 +40,7 @@ int RunBenchmark(const nprBenchmarkOptions& options)
   {
     throw std::runtime_error("no method to run");
   }
-  nprMakeBenchmarkFolders(options);
-  const std::vector<nprBenchmarkScene> scenes =
-    nprLoadBenchmarkScenes(options.Scenes, options.Data, options.DenseMesh, options.ScenesGiven);
+  const std::vector<nprBenchmarkScene> scenes = nprStartBenchmarkRun(options);
 
   nprBenchmarkStage stage(options.LineWidth);
   std::vector<vtkSmartPointer<vtkNPRPass>> passes;
@@ -175,13 +173,7 @@ int RunBenchmark(const nprBenchmarkOptions& options)
   std::cerr << "npr-benchmark: wrote " << options.Out << "/results.{csv,md}, time_vs_f1*.png in "
             << nprFormat(nprSecondsSince(runStart), 4) << " s\n";
 
-  const std::string problems = nprCheckBenchmarkRows(rows);
-  if (!problems.empty())
-  {
-    std::cerr << "npr-benchmark: error: figures out of range:\n" << problems;
-    return 1;
-  }
-  return 0;
+  return nprBenchmarkStatus(nprCheckBenchmarkRows(rows), ": figures out of range");
 }
 }
 

@@ -113,9 +113,7 @@ std::vector<unsigned char> LinePixels(vtkImageData* image, int width, int height
 int nprRunBenchmarkDrawing(const nprBenchmarkOptions& options)
 {
   const nprClock::time_point runStart = nprClock::now();
-  nprMakeBenchmarkFolders(options);
-  const std::vector<nprBenchmarkScene> scenes =
-    nprLoadBenchmarkScenes(options.Scenes, options.Data, options.DenseMesh, options.ScenesGiven);
+  const std::vector<nprBenchmarkScene> scenes = nprStartBenchmarkRun(options);
   nprBenchmarkStage stage(options.LineWidth);
   // The drawing style, lines 1 px wide (what the reference mask is compared with).
   nprPassSettings settings;
@@ -281,10 +279,5 @@ int nprRunBenchmarkDrawing(const nprBenchmarkOptions& options)
   }
   std::cerr << "npr-benchmark: wrote " << options.Out << "/drawing.{csv,md}, drawing_style.csv in "
             << nprFormat(nprSecondsSince(runStart), 4) << " s\n";
-  if (!problems.empty())
-  {
-    std::cerr << "npr-benchmark: error:\n" << problems;
-    return 1;
-  }
-  return 0;
+  return nprBenchmarkStatus(problems);
 }

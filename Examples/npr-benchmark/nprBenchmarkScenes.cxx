@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nprBenchmarkScenes.h"
 
+#include "nprBenchmarkOptions.h"
 #include "nprBenchmarkReport.h"
 #include "nprModel.h"
 #include "nprTiming.h"
@@ -300,6 +301,13 @@ std::vector<nprBenchmarkScene> nprLoadBenchmarkScenes(const std::vector<std::str
               << " triangles, prepared in " << nprFormat(nprSecondsSince(start), 3) << " s\n";
   }
   return scenes;
+}
+
+std::vector<nprBenchmarkScene> nprStartBenchmarkRun(const nprBenchmarkOptions& options)
+{
+  nprMakeBenchmarkFolders(options);
+  return nprLoadBenchmarkScenes(
+    options.Scenes, options.Data, options.DenseMesh, options.ScenesGiven);
 }
 
 std::string nprBenchmarkSceneLines(const std::vector<nprBenchmarkScene>& scenes)

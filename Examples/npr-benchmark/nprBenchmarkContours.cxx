@@ -138,9 +138,7 @@ void WriteMarkdown(const std::string& path, const std::vector<ContourRow>& rows,
 int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
 {
   const nprClock::time_point start = nprClock::now();
-  nprMakeBenchmarkFolders(options);
-  const std::vector<nprBenchmarkScene> scenes =
-    nprLoadBenchmarkScenes(options.Scenes, options.Data, options.DenseMesh, options.ScenesGiven);
+  const std::vector<nprBenchmarkScene> scenes = nprStartBenchmarkRun(options);
   nprBenchmarkStage stage(options.LineWidth);
 
   std::vector<nprBenchmarkMethod> methods;

@@ -173,9 +173,7 @@ void StressMeshes(const nprBenchmarkScene& scene, const StressCase& stress, doub
 int nprRunBenchmarkStress(const nprBenchmarkOptions& options)
 {
   const nprClock::time_point runStart = nprClock::now();
-  nprMakeBenchmarkFolders(options);
-  const std::vector<nprBenchmarkScene> scenes =
-    nprLoadBenchmarkScenes(options.Scenes, options.Data, options.DenseMesh, options.ScenesGiven);
+  const std::vector<nprBenchmarkScene> scenes = nprStartBenchmarkRun(options);
   nprBenchmarkStage stage(options.LineWidth);
   nprBenchmarkMethod method; // edges-float at the pass's defaults
   method.Name = "edges-float";

@@ -108,9 +108,7 @@ struct CostRow
 int nprRunBenchmarkCoherence(const nprBenchmarkOptions& options)
 {
   const nprClock::time_point runStart = nprClock::now();
-  nprMakeBenchmarkFolders(options);
-  const std::vector<nprBenchmarkScene> scenes =
-    nprLoadBenchmarkScenes(options.Scenes, options.Data, options.DenseMesh, options.ScenesGiven);
+  const std::vector<nprBenchmarkScene> scenes = nprStartBenchmarkRun(options);
   nprBenchmarkStage stage(options.LineWidth);
   std::vector<CoherenceStyle> styles = MakeStyles(options.LineWidth);
   std::vector<CoherenceRow> rows;
@@ -233,10 +231,5 @@ int nprRunBenchmarkCoherence(const nprBenchmarkOptions& options)
   std::cerr << "npr-benchmark: wrote " << options.Out
             << "/coherence.{csv,md}, coherence_cost.csv in "
             << nprFormat(nprSecondsSince(runStart), 4) << " s\n";
-  if (!problems.empty())
-  {
-    std::cerr << "npr-benchmark: error: figures out of range:\n" << problems;
-    return 1;
-  }
-  return 0;
+  return nprBenchmarkStatus(problems, ": figures out of range");
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+struct nprBenchmarkOptions;
 class vtkCamera;
 class vtkPolyData;
 class vtkRenderer;
@@ -36,6 +37,9 @@ nprBenchmarkScene nprLoadBenchmarkScene(
 // names were given.
 std::vector<nprBenchmarkScene> nprLoadBenchmarkScenes(const std::vector<std::string>& names,
   const std::string& dataDir, const std::string& denseMesh, bool namesGiven);
+
+// What every mode does first: makes the output folders of options and loads its scenes.
+std::vector<nprBenchmarkScene> nprStartBenchmarkRun(const nprBenchmarkOptions& options);
 
 // One line per scene for the report: "- name: description, N triangles".
 std::string nprBenchmarkSceneLines(const std::vector<nprBenchmarkScene>& scenes);

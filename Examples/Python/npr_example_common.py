@@ -1,0 +1,70 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
+"""What the single-model Python examples (npr_edges.py, npr_toon_sketch.py) share: their argument
+types, the model with npr-render's normals, and the rendered frame read back."""
+import sys
+
+import vtknpr  # noqa: F401  (first: it imports the VTK modules it needs by itself)
+from vtknpr import vtkNPRModelReader
+from vtkmodules.vtkCommonCore import vtkObject
+from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+
+
+def size(text):
+    """'WxH' -> [W, H]"""
+    width, height = (int(part) for part in text.split("x"))
+    if width < 1 or height < 1:
+        raise ValueError(text)
+    return [width, height]
+
+
+def rgb(text):
+    """'r,g,b' with each part in 0..1 -> [r, g, b]"""
+    parts = [float(part) for part in text.split(",")]
+    if len(parts) != 3 or not all(0.0 <= part <= 1.0 for part in parts):
+        raise ValueError(text)
+    return parts
+
+
+def read_model(file_name, program):
+    """The model, with normals computed as npr-render does when the file has none; exits with
+    the reader's message, after the program's name, when it cannot be read."""
+    reader = vtkNPRModelReader()
+    reader.SetFileName(file_name)
+    vtkObject.GlobalWarningDisplayOff()  # the reader's one-line message is reported below
+    reader.Update()
+    vtkObject.GlobalWarningDisplayOn()
+    if reader.GetErrorMessage():
+        sys.exit(program + ": error: " + reader.GetErrorMessage())
+    model = reader.GetOutput()
+    if model.GetPointData().GetNormals() or model.GetNumberOfPolys() + model.GetNumberOfStrips() == 0:
+        return model
+    normals = vtkPolyDataNormals()  # smooth shading that keeps edges over 30 degrees sharp
+    normals.SetInputData(model)
+    normals.SetFeatureAngle(30.0)
+    normals.SplittingOn()
+    normals.ConsistencyOff()
+    normals.Update()
+    return normals.GetOutput()
+
+
+def grab(window):
+    """The image last rendered into the window (RGB, from the back buffer), a new one each call."""
+    grabber = vtkWindowToImageFilter()
+    grabber.SetInput(window)
+    grabber.ReadFrontBufferOff()
+    grabber.ShouldRerenderOff()  # the frame as rendered: no extra render
+    grabber.Update()
+    return grabber.GetOutput()  # a new output per grabber: no copy needed
+
+
+def view_from(renderer, azimuth, elevation):
+    """Fits the camera to the scene (once the window exists: the reset fits its aspect ratio),
+    then turns it by azimuth and elevation degrees."""
+    renderer.ResetCamera()
+    camera = renderer.GetActiveCamera()
+    camera.Azimuth(azimuth)
+    camera.Elevation(elevation)
+    camera.OrthogonalizeViewUp()
+    renderer.ResetCameraClippingRange()
