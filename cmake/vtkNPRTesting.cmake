@@ -24,7 +24,7 @@ find_program(NPR_XVFB_RUN xvfb-run)
 # starts, two MPI ranks, VTK probing OpenGL).
 set(npr_xvfb_server_args "-screen 0 1280x1024x24 -noreset")
 
-# A test program on the harness (nprTesting, Testing/Cxx). In a module's Testing folder it is
+# A test program on the harness (nprTesting, Testing/Toolkit). In a module's Testing folder it is
 # VTK's test executable: linked with the module and its vtk.module's TEST_DEPENDS, whose factory
 # overrides (VTK::RenderingOpenGL2) it initialises.
 function (npr_add_test_executable name)

@@ -50,7 +50,7 @@ int main(int argc, char* argv[])
   setenv("NPR_TEST_OUTPUT_DIR", scratch.c_str(), 1);
   unsetenv("NPR_UPDATE_BASELINES");
   const std::string baseline = scratch + "/harness_baseline.png";
-  NPR_CHECK(nprWritePNG(Gradient(80, 60), baseline), "cannot write " << baseline);
+  NPR_CHECK(nprSavePNG(Gradient(80, 60), baseline), "cannot write " << baseline);
   const nprImageTolerance tolerance;
 
   NPR_CHECK(nprCompareWithBaselineFile(Gradient(80, 60), baseline, "harness_same", tolerance),
@@ -87,7 +87,7 @@ int main(int argc, char* argv[])
   std::remove(release.c_str());
   NPR_CHECK(nprBaselinePath(scratch, "harness_release") == scratch + "/harness_release.png",
     "a missing release baseline is chosen");
-  NPR_CHECK(nprWritePNG(Gradient(80, 60), release), "cannot write " << release);
+  NPR_CHECK(nprSavePNG(Gradient(80, 60), release), "cannot write " << release);
   NPR_CHECK(nprBaselinePath(scratch, "harness_release") == release,
     "the release baseline " << release << " is not chosen");
 

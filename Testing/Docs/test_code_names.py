@@ -6,7 +6,8 @@ testing.md, "Pages true to the code").
     test_code_names.py Documentation/architecture.md [more pages]
 
 Every name a page writes in backticks, without spaces, is looked up in the repository:
-- a path (`Rendering/Passes/CMakeLists.txt`, `glsl/vtkNPREdgeDetectFS.glsl`, `Testing/Cxx/Test<Pass>.cxx`)
+- a path (`Rendering/Passes/CMakeLists.txt`, `glsl/vtkNPREdgeDetectFS.glsl`,
+  `Rendering/Passes/Testing/Cxx/Test<Pass>.cxx`)
   must name a file or folder: from the top, or as the end of a tracked path; `<...>` and `*`
   match any part of one name;
 - a module or target (`NPR::FiltersNPR`) must be a module's NAME in a `vtk.module` or a target

@@ -53,9 +53,7 @@ vtkSmartPointer<vtkRenderer> MakeScene(const double color[3], bool cone = false)
   }
   else
   {
-    vtkNew<vtkSphereSource> source;
-    source->SetThetaResolution(64);
-    source->SetPhiResolution(32);
+    auto source = nprSphereSource(0.5, 64, 32);
     mapper->SetInputConnection(source->GetOutputPort());
   }
   vtkNew<vtkActor> actor;

@@ -169,12 +169,5 @@ int Degenerate()
   }
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "degenerate", Degenerate },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("degenerate", Degenerate);
 }

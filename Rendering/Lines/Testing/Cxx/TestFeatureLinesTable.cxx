@@ -8,7 +8,7 @@
 // the cells in 64- and 32-bit storage and float and double points. And the memory the table and
 // the drawing's occlusion structure hold, in bytes per triangle.
 //
-// usage: TestFeatureLinesTable CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestFeatureLinesTable CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprFeatureLineTesting.h"
 
 #include "vtkActor.h"
@@ -341,9 +341,7 @@ std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>> Meshes()
     cylinder->Update();
     meshes.emplace_back("cylinder of " + std::to_string(sides), cylinder->GetOutput());
   }
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(24);
-  sphere->SetPhiResolution(13);
+  auto sphere = nprSphereSource(0.5, 24, 13);
   vtkNew<vtkStripper> strips;
   strips->SetInputConnection(sphere->GetOutputPort());
   strips->Update();
@@ -481,13 +479,12 @@ int TableReference()
   NPR_CHECK(compared > 10000, "too few lines compared: " << compared);
   return nprTestResult();
 }
+NPR_TEST_CASE("table-reference", TableReference);
 
 // ---- What the tables hold, per triangle ----
 int TableMemory()
 {
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(400);
-  sphere->SetPhiResolution(400);
+  auto sphere = nprSphereSource(0.5, 400, 400);
   sphere->Update();
   vtkPolyData* mesh = sphere->GetOutput();
   const double triangles = static_cast<double>(mesh->GetNumberOfPolys());
@@ -517,13 +514,5 @@ int TableMemory()
   NPR_CHECK(drawing->GetNumberOfStrokes() > 0, "no strokes");
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "table-reference", TableReference },
-    { "table-memory", TableMemory },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("table-memory", TableMemory);
 }

@@ -141,6 +141,8 @@ int Accuracy(bool pdf)
   NPR_CHECK(metrics.F1(1.0) >= 0.98, "F1@1 " << metrics.F1(1.0) << " < 0.98");
   return nprTestResult();
 }
+NPR_TEST_CASE("svg-accuracy", [] { return Accuracy(false); });
+NPR_TEST_CASE("pdf-accuracy", [] { return Accuracy(true); });
 
 int SvgStructure()
 {
@@ -196,6 +198,7 @@ int SvgStructure()
   NPR_CHECK(svg.find("npr-hidden") < svg.find("npr-silhouette"), "hidden strokes first");
   return nprTestResult();
 }
+NPR_TEST_CASE("svg-structure", SvgStructure);
 
 int Errors()
 {
@@ -252,6 +255,7 @@ int Errors()
     "formats from names");
   return nprTestResult();
 }
+NPR_TEST_CASE("errors", Errors);
 
 int Empty()
 {
@@ -323,6 +327,7 @@ int Empty()
   }
   return nprTestResult();
 }
+NPR_TEST_CASE("empty", Empty);
 }
 
 // In the drawing style the exporter takes the pass's vtkNPRDrawingLines, whose edge table and
@@ -372,11 +377,4 @@ int DrawingStyle()
          << reference->GetNumberOfStrokes() << " strokes)");
   return nprTestResult();
 }
-
-int main(int argc, char* argv[])
-{
-  return nprRunTestCase(argc, argv,
-    { { "svg-accuracy", [] { return Accuracy(false); } },
-      { "pdf-accuracy", [] { return Accuracy(true); } }, { "svg-structure", SvgStructure },
-      { "errors", Errors }, { "empty", Empty }, { "drawing-style", DrawingStyle } });
-}
+NPR_TEST_CASE("drawing-style", DrawingStyle);

@@ -6,7 +6,7 @@
 // layer hidden where the drawing is in front, lines past the outline at the outline's depth); the
 // strokes computed again only when the frame changes; the CAD part against its baseline.
 //
-// usage: TestDrawingPass CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestDrawingPass CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprTesting.h"
 
 #include "vtkActor.h"
@@ -147,12 +147,13 @@ int DrawingCube()
   vtkPolyData* strokes = scene.Drawing()->GetStrokes();
   if (const char* dump = std::getenv("NPR_TEST_DUMP"))
   {
-    nprWritePNG(image, std::string(dump) + "drawing_cube.png");
+    nprSavePNG(image, std::string(dump) + "drawing_cube.png");
   }
   NPR_CHECK(strokes && strokes->GetNumberOfCells() == 7,
     "the cube's drawing has " << (strokes ? strokes->GetNumberOfCells() : 0) << " strokes, not 7");
   return nprTestResult();
 }
+NPR_TEST_CASE("cube", DrawingCube);
 
 // ---- Depth sprite: a second layer behind the cube is hidden by the faces and by the lines
 // drawn past the outline; beside the cube it shows ----
@@ -160,14 +161,9 @@ int DrawingLayer()
 {
   const int width = 400, height = 300;
   Scene scene(width, height);
-  const double origin[3] = { 0, 0, 0 };
-  nprAddCube(scene.Renderer, origin, 1.0);
-  scene.LookAtOrigin(5.0);
+  scene.ShowCube(5.0);
   scene.Edges()->SetLineWidth(6.0);
-  const double red[3] = { 1, 0, 0 };
-  const double behind[3] = { 0.6, 0, -1.5 };
-  vtkSmartPointer<vtkActor> ball = nprAddSphere(scene.AddOverlay(), behind, 0.6, red, 32);
-  ball->GetProperty()->LightingOff();
+  vtkSmartPointer<vtkActor> ball = scene.AddSphereBehind();
   ball->VisibilityOff();
   vtkSmartPointer<vtkImageData> alone = scene.Render();
   const std::vector<float> depth = scene.Depth();
@@ -181,7 +177,7 @@ int DrawingLayer()
     for (int x = 0; x < width; ++x)
     {
       const size_t i = static_cast<size_t>(y) * width + x;
-      const bool isRed = nprPixel(image, x, y, 0) > 200 && nprPixel(image, x, y, 1) < 60;
+      const bool isRed = nprIsRed(image, x, y);
       const bool drawn = nprPixel(alone, x, y, 0) < 250;
       if (depth[i] < 1.0f)
       {
@@ -203,6 +199,7 @@ int DrawingLayer()
   NPR_CHECK(linesPastOutline > 200, "the wide outline past the square has no depth");
   return nprTestResult();
 }
+NPR_TEST_CASE("layer", DrawingLayer);
 
 // ---- Strokes are computed again only when the frame changed; an unchanged frame is identical ----
 int DrawingReuse()
@@ -241,6 +238,7 @@ int DrawingReuse()
                        << " updates");
   return nprTestResult();
 }
+NPR_TEST_CASE("reuse", DrawingReuse);
 
 // ---- The CAD part with hidden lines, against its baseline ----
 int DrawingBaseline()
@@ -252,15 +250,5 @@ int DrawingBaseline()
   NPR_CHECK(nprCompareWithBaseline(image, "drawing_cad_part"), "differs from its baseline");
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "cube", DrawingCube },
-    { "layer", DrawingLayer },
-    { "reuse", DrawingReuse },
-    { "baseline", DrawingBaseline },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("baseline", DrawingBaseline);
 }

@@ -5,7 +5,7 @@
 // representations, a composite (multiblock) mapper and glyphs. Each is drawn; each surface has
 // lines, the wireframe and points none (they are line and point primitives, not geometry).
 //
-// usage: TestEdgePassActorKinds CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestEdgePassActorKinds CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprTesting.h"
 
 #include "vtkActor.h"
@@ -54,9 +54,7 @@ int ActorKinds()
   };
   auto sphereData = [](bool pointNormals)
   {
-    vtkNew<vtkSphereSource> sphere;
-    sphere->SetThetaResolution(24);
-    sphere->SetPhiResolution(12);
+    auto sphere = nprSphereSource(0.5, 24, 12);
     sphere->Update();
     auto data = vtkSmartPointer<vtkPolyData>::New();
     data->DeepCopy(sphere->GetOutput());
@@ -72,6 +70,15 @@ int ActorKinds()
     mapper->SetInputData(data);
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
+    return actor;
+  };
+  // The sphere drawn as wireframe or points, lines and points of the given size.
+  auto drawnAs = [&](int representation, float lineWidth, float pointSize)
+  {
+    auto actor = actorFor(sphereData(true));
+    actor->GetProperty()->SetRepresentation(representation);
+    actor->GetProperty()->SetLineWidth(lineWidth);
+    actor->GetProperty()->SetPointSize(pointSize);
     return actor;
   };
   const Kind kinds[] = {
@@ -152,22 +159,8 @@ int ActorKinds()
         actor->SetTexture(texture);
         return actor;
       } },
-    { "wireframe lines",
-      [&]
-      {
-        auto actor = actorFor(sphereData(true));
-        actor->GetProperty()->SetRepresentationToWireframe();
-        actor->GetProperty()->SetLineWidth(2);
-        return actor;
-      } },
-    { "points",
-      [&]
-      {
-        auto actor = actorFor(sphereData(true));
-        actor->GetProperty()->SetRepresentationToPoints();
-        actor->GetProperty()->SetPointSize(6);
-        return actor;
-      } },
+    { "wireframe lines", [&] { return drawnAs(VTK_WIREFRAME, 2, 1); } },
+    { "points", [&] { return drawnAs(VTK_POINTS, 1, 6); } },
     { "composite (multiblock)",
       [&]
       {
@@ -233,12 +226,5 @@ int ActorKinds()
   }
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "actor-kinds", ActorKinds },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("actor-kinds", ActorKinds);
 }

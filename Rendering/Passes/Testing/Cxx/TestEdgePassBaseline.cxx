@@ -3,7 +3,7 @@
 // Baseline images of the edge style: the CAD part and the bunny with blue creases, against
 // Testing/Data/Baseline/edges_*.png (the comparison: nprTesting.h).
 //
-// usage: TestEdgePassBaseline CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestEdgePassBaseline CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprTesting.h"
 
 #include "vtkImageData.h"
@@ -35,13 +35,6 @@ int Baseline(const char* model, const char* name)
   NPR_CHECK(nprCompareWithBaseline(scene.Render(), name), name << " differs from its baseline");
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "baseline-cad", [] { return Baseline("cad_part.vtp", "edges_cad_part"); } },
-    { "baseline-bunny", [] { return Baseline("bunny.ply", "edges_bunny"); } },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("baseline-cad", [] { return Baseline("cad_part.vtp", "edges_cad_part"); });
+NPR_TEST_CASE("baseline-bunny", [] { return Baseline("bunny.ply", "edges_bunny"); });
 }

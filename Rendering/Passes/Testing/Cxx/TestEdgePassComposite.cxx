@@ -6,7 +6,7 @@
 // 2D actor is drawn over everything; picking (prop, world point, hardware selection) works with
 // the pass installed.
 //
-// usage: TestEdgePassComposite CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestEdgePassComposite CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprTesting.h"
 
 #include "vtkActor.h"
@@ -39,14 +39,12 @@ namespace
 {
 using Scene = nprPassScene;
 
-const double Grey[3] = { 0.8, 0.8, 0.8 };
-
 // ---- A translucent plane in front tints the lines; behind the surface it does not ----
 int Translucency()
 {
   Scene scene(400, 300);
   const double origin[3] = { 0, 0, 0 };
-  nprAddCube(scene.Renderer, origin, 1.0, Grey);
+  nprAddCube(scene.Renderer, origin, 1.0, nprGrey);
   vtkNew<vtkPlaneSource> plane;
   plane->SetOrigin(-2, -2, 1);
   plane->SetPoint1(0, -2, 1);
@@ -95,17 +93,14 @@ int Translucency()
   }
   return nprTestResult();
 }
+NPR_TEST_CASE("translucency", Translucency);
 
 // ---- A renderer on a higher layer is depth-tested against the sprite ----
 int Layers()
 {
   Scene scene(400, 300);
-  const double origin[3] = { 0, 0, 0 };
-  nprAddCube(scene.Renderer, origin, 1.0, Grey);
-  scene.LookAtOrigin(5);
-  const double behind[3] = { 0.6, 0, -1.5 }, red[3] = { 1, 0, 0 };
-  vtkSmartPointer<vtkActor> ball = nprAddSphere(scene.AddOverlay(), behind, 0.6, red, 32);
-  ball->GetProperty()->LightingOff();
+  scene.ShowCube(5.0, nprGrey);
+  scene.AddSphereBehind();
   auto image = scene.Render();
 
   const double corner0[3] = { -0.5, -0.5, 0.5 }, corner1[3] = { 0.5, 0.5, 0.5 };
@@ -117,7 +112,7 @@ int Layers()
   {
     for (int x = 0; x < 400; ++x)
     {
-      const bool red = nprPixel(image, x, y, 0) > 200 && nprPixel(image, x, y, 1) < 60;
+      const bool red = nprIsRed(image, x, y);
       const bool inside = x > a[0] + 3 && x < b[0] - 3 && y > a[1] + 3 && y < b[1] - 3;
       (inside ? redInside : redOutside) += red ? 1 : 0;
     }
@@ -128,33 +123,18 @@ int Layers()
   NPR_CHECK(redOutside > 100, "the part of the sphere beside the cube should be drawn");
   return nprTestResult();
 }
+NPR_TEST_CASE("layers", Layers);
 
 // ---- A volume behind the surface is hidden by it; a 2D actor is drawn over everything ----
 int VolumeAndOverlay()
 {
   Scene scene(400, 300);
   const double origin[3] = { 0, 0, 0 };
-  nprAddCube(scene.Renderer, origin, 1.0, Grey);
-  vtkNew<vtkImageData> block;
-  block->SetDimensions(16, 16, 16);
-  block->SetSpacing(0.2, 0.1, 0.1);
-  block->SetOrigin(-0.9, -0.75, -3.0); // x -0.9..2.1, behind the cube
-  block->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
-  std::fill_n(static_cast<unsigned char*>(block->GetScalarPointer()), 16 * 16 * 16, 200);
-  vtkNew<vtkGPUVolumeRayCastMapper> volumeMapper;
-  volumeMapper->SetInputData(block);
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(0, 1, 0, 0);
-  color->AddRGBPoint(255, 1, 0, 0);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(0, 1.0);
-  opacity->AddPoint(255, 1.0);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(volumeMapper);
-  volume->GetProperty()->SetColor(color);
-  volume->GetProperty()->SetScalarOpacity(opacity);
-  volume->GetProperty()->ShadeOff();
-  scene.Renderer->AddVolume(volume);
+  nprAddCube(scene.Renderer, origin, 1.0, nprGrey);
+  // x -0.9..2.1, behind the cube
+  const double blockOrigin[3] = { -0.9, -0.75, -3.0 }, spacing[3] = { 0.2, 0.1, 0.1 };
+  const double red[3] = { 1, 0, 0 };
+  nprAddBlockVolume(scene.Renderer, blockOrigin, spacing, red);
   vtkNew<vtkTextActor> label;
   label->SetInput("NPR");
   label->GetTextProperty()->SetFontSize(40);
@@ -189,14 +169,15 @@ int VolumeAndOverlay()
   NPR_CHECK(blue > 100, "the 2D text actor should be drawn");
   return nprTestResult();
 }
+NPR_TEST_CASE("volume-overlay", VolumeAndOverlay);
 
 // ---- Picking with the pass installed ----
 int Picking()
 {
   Scene scene(400, 300);
   const double left[3] = { -1, 0, 0 }, right[3] = { 1, 0, 0 };
-  vtkSmartPointer<vtkActor> a = nprAddCube(scene.Renderer, left, 1.0, Grey);
-  vtkSmartPointer<vtkActor> b = nprAddCube(scene.Renderer, right, 1.0, Grey);
+  vtkSmartPointer<vtkActor> a = nprAddCube(scene.Renderer, left, 1.0, nprGrey);
+  vtkSmartPointer<vtkActor> b = nprAddCube(scene.Renderer, right, 1.0, nprGrey);
   scene.LookAtOrigin(5);
   scene.Render();
   const double frontA[3] = { -1, 0, 0.5 }, frontB[3] = { 1, 0, 0.5 };
@@ -238,15 +219,5 @@ int Picking()
   NPR_CHECK(nprCountAbove(scene.Mask(), 127) > 400, "no lines after picking");
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "translucency", Translucency },
-    { "layers", Layers },
-    { "volume-overlay", VolumeAndOverlay },
-    { "picking", Picking },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("picking", Picking);
 }

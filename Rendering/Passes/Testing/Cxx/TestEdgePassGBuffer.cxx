@@ -6,7 +6,7 @@
 // empty renderer or the shaded style; an unchanged frame copies back the kept composite, bit for
 // bit, and only where that is safe, in every style that composites (edges, sketch, drawing).
 //
-// usage: TestEdgePassGBuffer CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestEdgePassGBuffer CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprTesting.h"
 
 #include "vtkActor.h"
@@ -35,15 +35,11 @@
 namespace
 {
 using Scene = nprPassScene;
-const double Grey[3] = { 0.8, 0.8, 0.8 };
 
 // The sphere the cases draw (kept by the caller, which may change it).
 vtkSmartPointer<vtkSphereSource> NewSphere()
 {
-  auto sphere = vtkSmartPointer<vtkSphereSource>::New();
-  sphere->SetThetaResolution(32);
-  sphere->SetPhiResolution(16);
-  return sphere;
+  return nprSphereSource(0.5, 32, 16);
 }
 
 // ---- Unchanged frames reuse the G-buffer and line image; every kind of change redraws ----
@@ -51,7 +47,7 @@ int Reuse()
 {
   Scene scene(300, 200);
   vtkSmartPointer<vtkSphereSource> sphere = NewSphere();
-  vtkSmartPointer<vtkActor> actor = nprAddActor(scene.Renderer, sphere->GetOutputPort(), Grey);
+  vtkSmartPointer<vtkActor> actor = nprAddActor(scene.Renderer, sphere->GetOutputPort(), nprGrey);
   vtkNPRGBufferPass* gbuffer = scene.GBuffer();
   auto first = scene.Render();
   NPR_CHECK(gbuffer->GetNumberOfGeometryDraws() == 1, "first frame: one draw");
@@ -69,7 +65,8 @@ int Reuse()
     { "actor position", [&] { actor->SetPosition(0.1, 0, 0); } },
     { "source", [&] { sphere->SetRadius(0.4); } },
     { "visibility of a new actor",
-      [&] { nprAddActor(scene.Renderer, sphere->GetOutputPort(), Grey)->SetPosition(1, 0, 0); } },
+      [&]
+      { nprAddActor(scene.Renderer, sphere->GetOutputPort(), nprGrey)->SetPosition(1, 0, 0); } },
     { "light", [&] { scene.Renderer->GetLights()->GetItemAsObject(0)->Modified(); } },
     { "size", [&] { scene.Window->SetSize(320, 200); } },
     { "line types", [&] { scene.Edges()->CreasesOff(); } },
@@ -97,6 +94,7 @@ int Reuse()
   NPR_CHECK(gbuffer->GetNumberOfGeometryDraws() == expected + 1, "ReuseUnchangedFramesOff ignored");
   return nprTestResult();
 }
+NPR_TEST_CASE("reuse", Reuse);
 
 // ---- Only the channels the lines need; nothing for an empty renderer ----
 int Channels()
@@ -112,7 +110,7 @@ int Channels()
   NPR_CHECK(nprPixel(empty, 100, 75, 0) == 255, "the empty renderer's background is not white");
 
   const double origin[3] = { 0, 0, 0 }, beside[3] = { 1.5, 0, 0 };
-  nprAddCube(scene.Renderer, origin, 1.0, Grey);
+  nprAddCube(scene.Renderer, origin, 1.0, nprGrey);
   scene.Renderer->ResetCamera();
   struct Case
   {
@@ -135,7 +133,7 @@ int Channels()
   {
     if (c.TwoProps && !second)
     {
-      second = nprAddCube(scene.Renderer, beside, 1.0, Grey);
+      second = nprAddCube(scene.Renderer, beside, 1.0, nprGrey);
       scene.Renderer->ResetCamera();
     }
     scene.Edges()->SetCreases(c.Creases);
@@ -166,6 +164,7 @@ int Channels()
   NPR_CHECK(gbuffer->GetNumberOfGeometryDraws() == draws, "the shaded style drew a G-buffer");
   return nprTestResult();
 }
+NPR_TEST_CASE("channels", Channels);
 
 // ---- An unchanged frame copies back the kept composite (KeepUnchangedComposite) ----
 std::vector<float> WindowDepths(Scene& scene)
@@ -191,7 +190,7 @@ int KeptCompositeOf(const KeptStyle& style)
   Scene scene(300, 200);
   scene.Pass->SetStyle(style.Style);
   vtkSmartPointer<vtkSphereSource> sphere = NewSphere();
-  nprAddActor(scene.Renderer, sphere->GetOutputPort(), Grey);
+  nprAddActor(scene.Renderer, sphere->GetOutputPort(), nprGrey);
   scene.Renderer->ResetCamera();
   vtkNPRImageEffectPass* effect = style.Effect(scene);
   const nprImageTolerance exact = { 0, 0.0 };
@@ -269,6 +268,7 @@ int KeptComposite()
     { { "silhouette colour", [](Scene& s) { s.Edges()->SetSilhouetteColor(1.0, 0.0, 0.0); } },
       { "line width", [](Scene& s) { s.Edges()->SetLineWidth(3.0); } } } });
 }
+NPR_TEST_CASE("kept-composite", KeptComposite);
 
 int KeptCompositeSketch()
 {
@@ -278,6 +278,7 @@ int KeptCompositeSketch()
       { "noise seed", [](Scene& s) { s.Sketch()->SetNoiseSeed(7); } },
       { "paper", [](Scene& s) { s.Sketch()->PaperOn(); } } } });
 }
+NPR_TEST_CASE("kept-composite-sketch", KeptCompositeSketch);
 
 int KeptCompositeDrawing()
 {
@@ -286,6 +287,7 @@ int KeptCompositeDrawing()
       { "line width", [](Scene& s) { s.Edges()->SetLineWidth(3.0); } },
       { "hidden lines", [](Scene& s) { s.Pass->GetDrawingPass()->HiddenLinesOn(); } } } });
 }
+NPR_TEST_CASE("kept-composite-drawing", KeptCompositeDrawing);
 
 // Where what lies under the composite is not the renderer's own clear, nothing is kept: a
 // renderer on a layer above another, and a multisampled window (blits resolve, never restore).
@@ -294,7 +296,7 @@ int KeptCompositeUnsafe()
   {
     Scene scene(240, 160);
     vtkSmartPointer<vtkSphereSource> sphere = NewSphere();
-    nprAddActor(scene.Renderer, sphere->GetOutputPort(), Grey);
+    nprAddActor(scene.Renderer, sphere->GetOutputPort(), nprGrey);
     scene.Renderer->ResetCamera();
     vtkNew<vtkRenderer> below;
     below->SetBackground(0.0, 0.0, 0.0);
@@ -313,7 +315,7 @@ int KeptCompositeUnsafe()
     Scene scene(240, 160);
     scene.Window->SetMultiSamples(4);
     vtkSmartPointer<vtkSphereSource> sphere = NewSphere();
-    nprAddActor(scene.Renderer, sphere->GetOutputPort(), Grey);
+    nprAddActor(scene.Renderer, sphere->GetOutputPort(), nprGrey);
     scene.Renderer->ResetCamera();
     auto first = scene.Render();
     scene.Render();
@@ -325,17 +327,5 @@ int KeptCompositeUnsafe()
   }
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "reuse", Reuse },
-    { "channels", Channels },
-    { "kept-composite", KeptComposite },
-    { "kept-composite-unsafe", KeptCompositeUnsafe },
-    { "kept-composite-sketch", KeptCompositeSketch },
-    { "kept-composite-drawing", KeptCompositeDrawing },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("kept-composite-unsafe", KeptCompositeUnsafe);
 }

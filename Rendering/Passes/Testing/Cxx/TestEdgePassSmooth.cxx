@@ -4,10 +4,9 @@
 // interior contour drawn to its ending (the cusp, found from the torus's equations and the
 // visibility of each contour point), and not much further; a sphere has no line inside its outline,
 // even with suggestive contours on; suggestive contours appear on a bumpy sphere and not on a
-// smooth one; a crease whose angle wavers about the threshold along a tessellated arc is drawn
-// along the whole of its length where the mesh's faces meet beyond the angle.
+// smooth one. The program's other case: TestEdgePassSmoothCrease.cxx.
 //
-// usage: TestEdgePassSmooth CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestEdgePassSmooth CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprTesting.h"
 
 #include "vtkActor.h"
@@ -41,61 +40,7 @@ namespace
 {
 using Scene = nprPassScene;
 
-const double Grey[3] = { 0.8, 0.8, 0.8 };
-constexpr double Pi = 3.14159265358979323846;
-
-// An actor of the mesh, grey, added to the renderer.
-void AddMesh(vtkRenderer* renderer, vtkPolyData* mesh)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(mesh);
-  mapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(Grey[0], Grey[1], Grey[2]);
-  renderer->AddActor(actor);
-}
-
-// A torus about z (ring radius R, tube radius r) of along x around quads as triangles, with its
-// exact unit normals.
-vtkSmartPointer<vtkPolyData> MakeTorus(double R, double r, int along, int around)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> normals;
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  for (int i = 0; i < along; ++i)
-  {
-    const double u = 2.0 * Pi * i / along;
-    for (int j = 0; j < around; ++j)
-    {
-      const double v = 2.0 * Pi * j / around;
-      const double n[3] = { std::cos(u) * std::cos(v), std::sin(u) * std::cos(v), std::sin(v) };
-      points->InsertNextPoint(
-        (R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
-      normals->InsertNextTuple(n);
-    }
-  }
-  vtkNew<vtkCellArray> triangles;
-  for (int i = 0; i < along; ++i)
-  {
-    for (int j = 0; j < around; ++j)
-    {
-      const vtkIdType a = i * around + j, b = i * around + (j + 1) % around,
-                      c = ((i + 1) % along) * around + j,
-                      d = ((i + 1) % along) * around + (j + 1) % around;
-      const vtkIdType first[3] = { a, c, d }, second[3] = { a, d, b };
-      triangles->InsertNextCell(3, first);
-      triangles->InsertNextCell(3, second);
-    }
-  }
-  auto torus = vtkSmartPointer<vtkPolyData>::New();
-  torus->SetPoints(points);
-  torus->SetPolys(triangles);
-  torus->GetPointData()->SetNormals(normals);
-  return torus;
-}
+const double Pi = vtkMath::Pi();
 
 // The pixels of a mask (white on black) above half coverage.
 std::vector<std::array<double, 2>> LinePixels(vtkImageData* mask)
@@ -129,7 +74,7 @@ int TorusCusp()
 {
   const double R = 1.0, r = 0.4, elevation = vtkMath::RadiansFromDegrees(20.0);
   Scene scene(800, 600);
-  AddMesh(scene.Renderer, MakeTorus(R, r, 720, 360));
+  nprAddMesh(scene.Renderer, nprMakeTorus(R, r, 720, 360));
   const double eye[3] = { 0.0, -4.0 * std::cos(elevation), 4.0 * std::sin(elevation) };
   vtkCamera* camera = scene.Camera();
   camera->SetFocalPoint(0.0, 0.0, 0.0);
@@ -258,13 +203,14 @@ int TorusCusp()
   }
   return nprTestResult();
 }
+NPR_TEST_CASE("torus-cusp", TorusCusp);
 
 // ---- A sphere: lines on its outline only, smooth silhouettes and suggestive contours on ----
 int SphereOutlineOnly()
 {
   Scene scene(400, 400);
   const double centre[3] = { 0.0, 0.0, 0.0 };
-  nprAddSphere(scene.Renderer, centre, 1.0, Grey);
+  nprAddSphere(scene.Renderer, centre, 1.0, nprGrey);
   scene.LookAtOrigin(4.0);
   scene.Edges()->SuggestiveContoursOn();
   auto mask = scene.Mask();
@@ -295,6 +241,7 @@ int SphereOutlineOnly()
   NPR_CHECK(inside == 0, inside << " line pixels inside the sphere's outline");
   return nprTestResult();
 }
+NPR_TEST_CASE("sphere-outline-only", SphereOutlineOnly);
 
 // ---- Suggestive contours: on a bumpy sphere, not on a smooth one ----
 int Suggestive()
@@ -302,9 +249,7 @@ int Suggestive()
   auto count = [](bool bumpy)
   {
     Scene scene(400, 400);
-    vtkNew<vtkSphereSource> source;
-    source->SetThetaResolution(256);
-    source->SetPhiResolution(128);
+    auto source = nprSphereSource(0.5, 256, 128);
     source->Update();
     vtkNew<vtkPolyData> sphere;
     sphere->DeepCopy(source->GetOutput());
@@ -325,7 +270,7 @@ int Suggestive()
     vtkNew<vtkNPRShadingNormals> normals;
     normals->SetInputData(sphere);
     normals->Update();
-    AddMesh(scene.Renderer, normals->GetOutput());
+    nprAddMesh(scene.Renderer, normals->GetOutput());
     scene.LookAtOrigin(4.0);
     scene.Edges()->SilhouettesOff();
     scene.Edges()->CreasesOff();
@@ -339,147 +284,5 @@ int Suggestive()
   NPR_CHECK(bumpy > 20, "too few suggestive contours on the bumpy sphere: " << bumpy);
   return nprTestResult();
 }
-
-// ---- A crease whose angle wavers about the threshold along a tessellated arc ----
-// A flat annulus and a cone rising from its inner rim (a concave crease seen from above, convex
-// from below), the cone's first ring of points raised by a different amount at each point, so
-// that the angle between the faces across the rim wavers between 26 and 42 degrees. Where it
-// exceeds 30 degrees the mesh has a crease; vtkPolyDataNormals splits the normals only along
-// unbroken chains of such edges, so elsewhere the shading normals are averaged across it.
-vtkSmartPointer<vtkPolyData> WaveringCrease()
-{
-  const int n = 48;
-  const double rings[][3] = { { 2.0, 0.0, 0.0 }, { 1.5, 0.0, 0.5 }, { 1.15, 0.0, 0.0 },
-    { 1.0, 0.0, 0.5 }, { 0.85, -1.0, 0.0 }, { 0.6, 0.4, 0.5 }, { 0.4, 0.6, 0.0 } };
-  const int ringCount = 7;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  unsigned state = 12345u;
-  for (const auto& ring : rings)
-  {
-    for (int i = 0; i < n; ++i)
-    {
-      const double angle = 2.0 * Pi * (i + ring[2]) / n;
-      double z = ring[1] * std::tan(vtkMath::RadiansFromDegrees(34.0));
-      if (ring[1] < 0.0)
-      {
-        state = state * 1103515245u + 12345u;
-        const double jitter = ((state >> 8) % 1000) / 999.0 * 16.0 - 8.0;
-        z = 0.15 * std::tan(vtkMath::RadiansFromDegrees(34.0 + jitter));
-      }
-      points->InsertNextPoint(ring[0] * std::cos(angle), ring[0] * std::sin(angle), z);
-    }
-  }
-  vtkNew<vtkCellArray> triangles;
-  for (int k = 0; k + 1 < ringCount; ++k)
-  {
-    const bool shifted = rings[k + 1][2] > rings[k][2];
-    for (int i = 0; i < n; ++i)
-    {
-      const vtkIdType a0 = k * n + i, a1 = k * n + (i + 1) % n;
-      const vtkIdType b0 = (k + 1) * n + i;
-      const vtkIdType b1 = (k + 1) * n + (shifted ? (i + n - 1) % n : (i + 1) % n);
-      const vtkIdType first[3] = { a0, a1, b0 };
-      const vtkIdType second[3] = { a0, b0, b1 };
-      const vtkIdType third[3] = { a1, b1, b0 };
-      triangles->InsertNextCell(3, first);
-      triangles->InsertNextCell(3, shifted ? second : third);
-    }
-  }
-  const vtkIdType apex = points->InsertNextPoint(0.0, 0.0, 0.6 * std::tan(0.6) + 0.2);
-  for (int i = 0; i < n; ++i)
-  {
-    const vtkIdType cap[3] = { (ringCount - 1) * n + i, (ringCount - 1) * n + (i + 1) % n, apex };
-    triangles->InsertNextCell(3, cap);
-  }
-  vtkNew<vtkPolyData> mesh;
-  mesh->SetPoints(points);
-  mesh->SetPolys(triangles);
-  vtkNew<vtkNPRShadingNormals> normals; // as npr-render prepares a model: split at 30 degrees
-  normals->SetInputData(mesh);
-  normals->Update();
-  auto prepared = vtkSmartPointer<vtkPolyData>::New();
-  prepared->ShallowCopy(normals->GetOutput());
-  return prepared;
-}
-
-int WaveringCreaseCase()
-{
-  Scene scene(400, 300);
-  AddMesh(scene.Renderer, WaveringCrease());
-  scene.Edges()->ContoursOff();
-  vtkNew<vtkNPRReferenceMask> reference;
-  reference->SetRenderer(scene.Renderer);
-  reference->SilhouettesOff();
-  reference->BoundariesOff();
-  reference->NonManifoldEdgesOff();
-  // Recall of the mesh's creases (faces meeting beyond 30 degrees) within 1 px, over views
-  // from above and below.
-  auto recall = [&](bool faceCreases, double& worst)
-  {
-    scene.Edges()->SetFaceCreases(faceCreases);
-    long long truth = 0, found = 0;
-    worst = 1.0;
-    for (double azimuth : { 0.0, 70.0, 150.0, 260.0 })
-    {
-      for (double elevation : { -50.0, -25.0, 25.0, 50.0 })
-      {
-        const double a = vtkMath::RadiansFromDegrees(azimuth);
-        const double e = vtkMath::RadiansFromDegrees(elevation);
-        vtkCamera* camera = scene.Camera();
-        camera->SetFocalPoint(0.0, 0.0, 0.0);
-        camera->SetPosition(
-          6.0 * std::cos(e) * std::cos(a), 6.0 * std::cos(e) * std::sin(a), 6.0 * std::sin(e));
-        camera->SetViewUp(0.0, 0.0, 1.0);
-        camera->SetClippingRange(2.0, 12.0);
-        auto mask = scene.Mask();
-        reference->Update();
-        vtkImageData* creases = reference->GetMask();
-        long long viewTruth = 0, viewFound = 0;
-        for (int y = 0; y < 300; ++y)
-        {
-          for (int x = 0; x < 400; ++x)
-          {
-            if (!nprPixel(creases, x, y))
-            {
-              continue;
-            }
-            ++viewTruth;
-            bool near = false;
-            for (const auto& d :
-              { std::array<int, 2>{ 0, 0 }, { 1, 0 }, { -1, 0 }, { 0, 1 }, { 0, -1 } })
-            {
-              near = near || nprPixel(mask, x + d[0], y + d[1]) >= 128;
-            }
-            viewFound += near ? 1 : 0;
-          }
-        }
-        truth += viewTruth;
-        found += viewFound;
-        worst = std::min(worst, viewTruth ? double(viewFound) / viewTruth : 1.0);
-      }
-    }
-    return truth ? double(found) / truth : 0.0;
-  };
-  double worstFaces = 0.0, worstShading = 0.0;
-  const double faces = recall(true, worstFaces);
-  const double shading = recall(false, worstShading);
-  std::cout << "crease recall at 1 px: face normals " << faces << " (worst view " << worstFaces
-            << "), shading normals " << shading << " (worst view " << worstShading << ")\n";
-  NPR_CHECK(faces >= 0.97 && worstFaces >= 0.9, "creases from face normals missed");
-  // The case is one where the shading normals lose part of the crease: the test means something.
-  NPR_CHECK(shading < faces - 0.1, "the shading normals no longer lose this crease");
-  return nprTestResult();
-}
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "torus-cusp", TorusCusp },
-    { "sphere-outline-only", SphereOutlineOnly },
-    { "suggestive", Suggestive },
-    { "wavering-crease", WaveringCreaseCase },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("suggestive", Suggestive);
 }

@@ -3,7 +3,7 @@
 // The edge pass in several windows of one process, through resizes and
 // ReleaseGraphicsResources: lines every time.
 //
-// usage: TestEdgePassWindows CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestEdgePassWindows CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprTesting.h"
 
 #include "vtkCamera.h"
@@ -45,12 +45,5 @@ int Windows()
   }
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "windows", Windows },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("windows", Windows);
 }

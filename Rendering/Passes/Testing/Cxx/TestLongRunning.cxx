@@ -5,7 +5,7 @@
 // warm-up of 50 cycles (frames) the resident memory of the process must stay within a bound, and
 // OpenGL must report no error at any point.
 //
-// usage: TestLongRunning CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestLongRunning CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 //
 // The bounds come from measurement (Documentation/testing.md, "Long-running tests"): a leak of a
 // window's, a pass's or a frame's resources (framebuffers, textures, shader programs, VTK
@@ -125,6 +125,46 @@ void CheckGrowth(
     what << ": resident memory grew by " << growth << " MiB in " << count << " " << unit << "s");
 }
 
+// What a long run records step by step: the steps with OpenGL errors or no image (the first ten
+// reported, one line each) and its resident memory (after the warm-up, then every `Every`
+// steps). Check fails on either.
+struct RunLog
+{
+  const char* What; // "window cycles"
+  const char* Unit; // "cycle"
+  int Every;
+  int Failed = 0;
+  double Warm = 0.0;
+
+  void Record(int step, const std::string& detail, const std::string& errors, bool drawn)
+  {
+    if ((!errors.empty() || !drawn) && ++this->Failed <= 10)
+    {
+      std::cerr << this->Unit << " " << step << detail
+                << ": OpenGL errors:" << (errors.empty() ? " none" : errors)
+                << (drawn ? "" : "; nothing drawn") << "\n";
+    }
+    if (step + 1 == WarmUp)
+    {
+      this->Warm = ResidentMiB();
+    }
+    if ((step + 1) % this->Every == 0)
+    {
+      std::cout << "after " << this->Unit << " " << step + 1 << ": " << ResidentMiB() << " MiB\n";
+    }
+  }
+
+  void Check(int steps, double boundMiB)
+  {
+    // A warm-up reading of 0 (no /proc/self/statm) would make the growth bound meaningless.
+    NPR_CHECK(
+      !CheckResidentMemory || this->Warm > 0.0, "no resident memory read after the warm-up");
+    NPR_CHECK(
+      this->Failed == 0, this->Failed << " " << this->Unit << "s with OpenGL errors or no image");
+    CheckGrowth(this->What, this->Unit, this->Warm, ResidentMiB(), steps - WarmUp, boundMiB);
+  }
+};
+
 // ---- 1000 windows, one after another: styles, a resize, renders, ReleaseGraphicsResources ----
 // One cycle: a window with a sphere and a cube drawn in two styles, resized, released and drawn
 // again, then destroyed. Returns false when there was no window; errors gets the OpenGL errors.
@@ -178,8 +218,7 @@ bool WindowCycle(int cycle, std::string& errors, bool& drawn)
 
 int WindowCyclesCase()
 {
-  double warm = 0.0;
-  int failedCycles = 0;
+  RunLog log{ "window cycles", "cycle", 100 };
   for (int cycle = 0; cycle < WindowCycles; ++cycle)
   {
     std::string errors;
@@ -189,26 +228,12 @@ int WindowCyclesCase()
       NPR_CHECK(false, "no window in cycle " << cycle);
       return nprTestResult();
     }
-    if ((!errors.empty() || !drawn) && ++failedCycles <= 10) // the first ten, one line each
-    {
-      std::cerr << "cycle " << cycle << ": OpenGL errors:" << (errors.empty() ? " none" : errors)
-                << (drawn ? "" : "; nothing drawn") << "\n";
-    }
-    // Measured between cycles, with no window alive.
-    if (cycle + 1 == WarmUp)
-    {
-      warm = ResidentMiB();
-    }
-    if ((cycle + 1) % 100 == 0)
-    {
-      std::cout << "after cycle " << cycle + 1 << ": " << ResidentMiB() << " MiB\n";
-    }
+    log.Record(cycle, "", errors, drawn); // memory measured between cycles, no window alive
   }
-  NPR_CHECK(failedCycles == 0, failedCycles << " cycles with OpenGL errors or no image");
-  CheckGrowth(
-    "window cycles", "cycle", warm, ResidentMiB(), WindowCycles - WarmUp, WindowCyclesBoundMiB);
+  log.Check(WindowCycles, WindowCyclesBoundMiB);
   return nprTestResult();
 }
+NPR_TEST_CASE("window-cycles", WindowCyclesCase);
 
 // ---- 500 frames of a changing scene in one window, a style change every frame ----
 int SceneFramesCase()
@@ -219,8 +244,7 @@ int SceneFramesCase()
     NPR_CHECK(false, "no window");
     return nprTestResult();
   }
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(0.8);
+  auto sphere = nprSphereSource(0.8, 8, 8);
   vtkNew<vtkPolyDataMapper> sphereMapper;
   sphereMapper->SetInputConnection(sphere->GetOutputPort());
   vtkNew<vtkActor> centre;
@@ -229,8 +253,7 @@ int SceneFramesCase()
 
   // Cubes come and go: one added every 4th frame, the oldest removed beyond six.
   std::deque<vtkSmartPointer<vtkActor>> cubes;
-  double warm = 0.0;
-  int failedFrames = 0;
+  RunLog log{ "scene frames", "frame", 50 };
   for (int frame = 0; frame < SceneFrames; ++frame)
   {
     if (frame % 4 == 0)
@@ -273,33 +296,10 @@ int SceneFramesCase()
       scene.Window->Render();
     }
     errors += OpenGLErrors(scene.Window);
-    if ((!errors.empty() || !drawn) && ++failedFrames <= 10) // the first ten, one line each
-    {
-      std::cerr << "frame " << frame << " (style " << style
-                << "): OpenGL errors:" << (errors.empty() ? " none" : errors)
-                << (drawn ? "" : "; nothing drawn") << "\n";
-    }
-    if (frame + 1 == WarmUp)
-    {
-      warm = ResidentMiB();
-    }
-    if ((frame + 1) % 50 == 0)
-    {
-      std::cout << "after frame " << frame + 1 << ": " << ResidentMiB() << " MiB\n";
-    }
+    log.Record(frame, " (style " + std::to_string(style) + ")", errors, drawn);
   }
-  NPR_CHECK(failedFrames == 0, failedFrames << " frames with OpenGL errors or no image");
-  CheckGrowth(
-    "scene frames", "frame", warm, ResidentMiB(), SceneFrames - WarmUp, SceneFramesBoundMiB);
+  log.Check(SceneFrames, SceneFramesBoundMiB);
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "window-cycles", WindowCyclesCase },
-    { "scene-frames", SceneFramesCase },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("scene-frames", SceneFramesCase);
 }

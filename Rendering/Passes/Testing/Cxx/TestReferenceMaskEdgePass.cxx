@@ -3,7 +3,7 @@
 // The ground-truth mask (vtkNPRReferenceMask) against the lines vtkNPREdgePass draws with the
 // same camera (width 1, no anti-aliasing): on a cube and on the bunny they line up within a pixel.
 //
-// usage: TestReferenceMaskEdgePass CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestReferenceMaskEdgePass CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprFeatureLineTesting.h"
 
 #include "vtkCamera.h"
@@ -100,13 +100,6 @@ int MaskAgainstEdgePass(const char* model)
     precision >= (model ? 0.85 : 0.97), "the edge pass is off the reference: " << precision);
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "mask-edge-pass-cube", [] { return MaskAgainstEdgePass(nullptr); } },
-    { "mask-edge-pass-bunny", [] { return MaskAgainstEdgePass("bunny.ply"); } },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("mask-edge-pass-cube", [] { return MaskAgainstEdgePass(nullptr); });
+NPR_TEST_CASE("mask-edge-pass-bunny", [] { return MaskAgainstEdgePass("bunny.ply"); });
 }

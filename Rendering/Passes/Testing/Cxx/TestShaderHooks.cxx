@@ -30,9 +30,7 @@ struct HookScene : nprPassScene
     : nprPassScene(240, 180)
   {
     this->Pass->SetStyle(style);
-    vtkNew<vtkSphereSource> sphere;
-    sphere->SetThetaResolution(48);
-    sphere->SetPhiResolution(24);
+    auto sphere = nprSphereSource(0.5, 48, 24);
     sphere->SetCenter(-0.7, 0, 0);
     const double grey[3] = { 0.8, 0.8, 0.8 };
     nprAddActor(this->Renderer, sphere->GetOutputPort(), grey);
@@ -109,6 +107,9 @@ int TestLines(int style, const char* name)
   NPR_CHECK(dark > 400, name << ": only " << dark << " ink pixels: no lines were drawn");
   return nprTestResult();
 }
+NPR_TEST_CASE("edges", [] { return TestLines(vtkNPRPass::EDGES, "edges"); });
+NPR_TEST_CASE("sketch", [] { return TestLines(vtkNPRPass::SKETCH, "sketch"); });
+NPR_TEST_CASE("inked", [] { return TestLines(vtkNPRPass::INKED, "inked"); });
 
 int TestToon(int style, const char* name)
 {
@@ -122,16 +123,6 @@ int TestToon(int style, const char* name)
   NPR_CHECK(share > 0.75, name << ": the lighting is not banded (" << 100 * share << " %)");
   return style == vtkNPRPass::TOON_EDGES ? TestLines(style, name) : nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  return nprRunTestCase(argc, argv,
-    {
-      { "edges", [] { return TestLines(vtkNPRPass::EDGES, "edges"); } },
-      { "toon", [] { return TestToon(vtkNPRPass::TOON, "toon"); } },
-      { "toon-edges", [] { return TestToon(vtkNPRPass::TOON_EDGES, "toon+edges"); } },
-      { "sketch", [] { return TestLines(vtkNPRPass::SKETCH, "sketch"); } },
-      { "inked", [] { return TestLines(vtkNPRPass::INKED, "inked"); } },
-    });
+NPR_TEST_CASE("toon", [] { return TestToon(vtkNPRPass::TOON, "toon"); });
+NPR_TEST_CASE("toon-edges", [] { return TestToon(vtkNPRPass::TOON_EDGES, "toon+edges"); });
 }

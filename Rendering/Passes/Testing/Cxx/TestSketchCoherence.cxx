@@ -10,7 +10,7 @@
 // - zoom: the wobble of a straight edge (its amplitude and wavelength in pixels) stays within a
 //   factor of two of the unzoomed one, zoomed in and out, parallel and perspective.
 //
-// usage: TestSketchCoherence CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestSketchCoherence CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprCoherence.h"
 #include "nprTesting.h"
 
@@ -79,6 +79,8 @@ int Pan(const std::string& model)
   NPR_CHECK(iou[2] < iou[1], "screen noise swims (IoU " << iou[2] << ") more than surface noise");
   return nprTestResult();
 }
+NPR_TEST_CASE("pan-cad", [] { return Pan("cad_part.vtp"); });
+NPR_TEST_CASE("pan-bunny", [] { return Pan("bunny.ply"); });
 
 int Orbit(const std::string& model)
 {
@@ -111,6 +113,8 @@ int Orbit(const std::string& model)
   NPR_CHECK(landed[1] >= 0.85, "surface noise: " << landed[1]);
   return nprTestResult();
 }
+NPR_TEST_CASE("orbit-cad", [] { return Orbit("cad_part.vtp"); });
+NPR_TEST_CASE("orbit-bunny", [] { return Orbit("bunny.ply"); });
 
 // The wobble of the top edge of a long flat bar seen face on, the edge through the window's
 // centre row: the line's centre row in each column against the edge's own row, as RMS
@@ -214,15 +218,6 @@ int Zoom(bool parallel)
   }
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  return nprRunTestCase(argc, argv,
-    { { "pan-cad", [] { return Pan("cad_part.vtp"); } },
-      { "pan-bunny", [] { return Pan("bunny.ply"); } },
-      { "orbit-cad", [] { return Orbit("cad_part.vtp"); } },
-      { "orbit-bunny", [] { return Orbit("bunny.ply"); } },
-      { "zoom-parallel", [] { return Zoom(true); } },
-      { "zoom-perspective", [] { return Zoom(false); } } });
+NPR_TEST_CASE("zoom-parallel", [] { return Zoom(true); });
+NPR_TEST_CASE("zoom-perspective", [] { return Zoom(false); });
 }

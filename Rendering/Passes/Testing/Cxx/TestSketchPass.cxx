@@ -5,7 +5,7 @@
 // uncertainty; the z-buffer is the smaller of the two displaced depth lookups; a second layer is
 // hidden where the sketch, as drawn, is in front.
 //
-// usage: TestSketchPass CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestSketchPass CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprTesting.h"
 
 #include "vtkActor.h"
@@ -49,6 +49,15 @@ void ShowParts(Scene& scene, const double color[3])
   scene.Camera()->Elevation(20);
   scene.Camera()->OrthogonalizeViewUp();
   scene.Camera()->SetClippingRange(1, 10);
+}
+
+// The parts (ShowParts) sketched with lines of the given width, uncertainty 0 to start from.
+void SketchParts(Scene& scene, const double color[3], double lineWidth)
+{
+  ShowParts(scene, color);
+  scene.Pass->SetStyleToSketch();
+  scene.Edges()->SetLineWidth(lineWidth);
+  scene.Sketch()->SetUncertainty(0.0);
 }
 
 // ---- Uncertainty 0 reproduces the edges on flat colours exactly, colour and depth ----
@@ -106,6 +115,7 @@ int SketchIdentity()
   NPR_CHECK(moved > 500, "an uncertainty of 3 pixels changed only " << moved << " pixels");
   return nprTestResult();
 }
+NPR_TEST_CASE("sketch-identity", SketchIdentity);
 
 // The pixels darker than half: the lines of a white scene on white.
 std::vector<char> DarkPixels(vtkImageData* image, int width, int height)
@@ -127,10 +137,7 @@ int SketchDisplacement()
   const int width = 400, height = 300;
   Scene scene(width, height);
   const double white[3] = { 1, 1, 1 };
-  ShowParts(scene, white);
-  scene.Pass->SetStyleToSketch();
-  scene.Edges()->SetLineWidth(1.5);
-  scene.Sketch()->SetUncertainty(0.0);
+  SketchParts(scene, white, 1.5);
   const std::vector<char> exact = DarkPixels(scene.Render(), width, height);
   for (int space : { vtkNPRSketchPass::SCREEN, vtkNPRSketchPass::SURFACE })
   {
@@ -203,6 +210,7 @@ int SketchDisplacement()
   }
   return nprTestResult();
 }
+NPR_TEST_CASE("sketch-displacement", SketchDisplacement);
 
 // ---- The z-buffer after the sketch is the smaller of the two displaced depth lookups ----
 int SketchDepth()
@@ -210,10 +218,7 @@ int SketchDepth()
   const int width = 400, height = 300;
   Scene scene(width, height);
   const double color[3] = { 0.8, 0.75, 0.6 };
-  ShowParts(scene, color);
-  scene.Pass->SetStyleToSketch();
-  scene.Edges()->SetLineWidth(3.0); // lines reaching onto the background have their own depth
-  scene.Sketch()->SetUncertainty(0.0);
+  SketchParts(scene, color, 3.0); // lines reaching onto the background have their own depth
   scene.Edges()->SetSilhouettes(false);
   scene.Edges()->SetCreases(false);
   scene.Edges()->SetContours(false);
@@ -266,24 +271,18 @@ int SketchDepth()
   NPR_CHECK(changed > 1000, "the displacement changed only " << changed << " depths");
   return nprTestResult();
 }
+NPR_TEST_CASE("sketch-depth", SketchDepth);
 
 // ---- A second layer is hidden where the sketched surface, as drawn, is in front ----
 int SketchLayer()
 {
   const int width = 400, height = 300;
   Scene scene(width, height);
-  const double grey[3] = { 0.8, 0.8, 0.8 };
-  const double origin[3] = { 0, 0, 0 };
-  nprAddCube(scene.Renderer, origin, 1.0, grey);
-  scene.LookAtOrigin(5.0);
+  scene.ShowCube(5.0, nprGrey);
   scene.Pass->SetStyleToSketch();
   scene.Sketch()->SetUncertainty(6.0);
 
-  const double red[3] = { 1, 0, 0 };
-  const double behind[3] = { 0.6, 0, -1.5 };
-  vtkSmartPointer<vtkActor> ball = nprAddSphere(scene.AddOverlay(), behind, 0.6, red, 32);
-  ball->GetProperty()->LightingOff();
-
+  vtkSmartPointer<vtkActor> ball = scene.AddSphereBehind();
   ball->VisibilityOff();
   scene.Sketch()->SetUncertainty(0.0);
   scene.Render();
@@ -300,7 +299,7 @@ int SketchLayer()
     for (int x = 0; x < width; ++x)
     {
       const size_t i = static_cast<size_t>(y) * width + x;
-      const bool isRed = nprPixel(image, x, y, 0) > 200 && nprPixel(image, x, y, 1) < 60;
+      const bool isRed = nprIsRed(image, x, y);
       if (sketched[i] < 1.0f)
       {
         redOverSketch += isRed ? 1 : 0;
@@ -320,15 +319,5 @@ int SketchLayer()
   NPR_CHECK(displacedOnly > 50, "the displacement should reach past the exact outline");
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "sketch-identity", SketchIdentity },
-    { "sketch-displacement", SketchDisplacement },
-    { "sketch-depth", SketchDepth },
-    { "sketch-layer", SketchLayer },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("sketch-layer", SketchLayer);
 }

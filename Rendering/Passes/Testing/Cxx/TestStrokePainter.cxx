@@ -250,6 +250,7 @@ int Raster()
     "strokes without Hidden: " << error);
   return nprTestResult();
 }
+NPR_TEST_CASE("raster", Raster);
 
 int Style()
 {
@@ -293,6 +294,7 @@ int Style()
     "defaults");
   return nprTestResult();
 }
+NPR_TEST_CASE("style", Style);
 
 cairo_status_t Append(void* closure, const unsigned char* data, unsigned int length)
 {
@@ -338,9 +340,5 @@ int Svg()
   std::cout << "Cairo " << cairo_version_string() << "\n";
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  return nprRunTestCase(argc, argv, { { "raster", Raster }, { "style", Style }, { "svg", Svg } });
+NPR_TEST_CASE("svg", Svg);
 }

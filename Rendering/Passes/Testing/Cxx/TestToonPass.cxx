@@ -5,7 +5,7 @@
 // bands over scalar colours, and lines over the bands with the G-buffer redrawn when the bands
 // change.
 //
-// usage: TestToonPass CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestToonPass CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprTesting.h"
 
 #include "vtkActor.h"
@@ -107,16 +107,22 @@ void ShowSphere(Scene& scene, const double color[3])
   scene.LookAtOrigin(4.5);
 }
 
+// The banded cases' orange sphere (ShowSphere) in a parallel view: the silhouette is where the
+// normal is at right angles to the headlight, so every band down to intensity 0 is on screen and
+// the darkest is a ring several pixels wide (in perspective the rim is at n.l = radius /
+// distance, and that band a pixel or two wide).
+const double Orange[3] = { 0.9, 0.6, 0.3 };
+void ShowBandedSphere(Scene& scene)
+{
+  ShowSphere(scene, Orange);
+  scene.ViewParallel(1.1);
+}
+
 // ---- A lit sphere in toon shading shows exactly N shades of its colour ----
 int ToonBands()
 {
   Scene scene(360, 300);
-  const double color[3] = { 0.9, 0.6, 0.3 };
-  ShowSphere(scene, color);
-  // Parallel: the silhouette is where the normal is at right angles to the headlight, so every
-  // band down to intensity 0 is on screen (in perspective the rim is at n.l = radius / distance).
-  scene.Camera()->ParallelProjectionOn();
-  scene.Camera()->SetParallelScale(1.1);
+  ShowBandedSphere(scene);
   scene.Pass->SetStyleToToon();
   for (bool perVertex : { false, true })
   {
@@ -129,23 +135,21 @@ int ToonBands()
       {
         factors.push_back((k + 1.0) / bands);
       }
-      CheckShades(scene.Render(), ExpectedShades(color, factors),
+      CheckShades(scene.Render(), ExpectedShades(Orange, factors),
         std::to_string(bands) + " bands" + (perVertex ? " per vertex" : " per pixel"));
     }
   }
 
   // On a coarse sphere the two differ: per vertex, band borders are straight within a triangle.
   vtkActor* sphere = vtkActor::SafeDownCast(scene.Renderer->GetActors()->GetItemAsObject(0));
-  vtkNew<vtkSphereSource> coarse;
-  coarse->SetThetaResolution(12);
-  coarse->SetPhiResolution(8);
+  auto coarse = nprSphereSource(0.5, 12, 8);
   vtkPolyDataMapper::SafeDownCast(sphere->GetMapper())->SetInputConnection(coarse->GetOutputPort());
   scene.Camera()->SetParallelScale(0.6);
   scene.Toon()->SetNumberOfBands(3);
   auto perVertexImage = scene.Render();
   scene.Toon()->SetPerVertex(false);
   auto perPixelImage = scene.Render();
-  const auto shades = ExpectedShades(color, { 1.0 / 3, 2.0 / 3, 1.0 });
+  const auto shades = ExpectedShades(Orange, { 1.0 / 3, 2.0 / 3, 1.0 });
   CheckShades(perVertexImage, shades, "coarse sphere per vertex");
   CheckShades(perPixelImage, shades, "coarse sphere per pixel");
   long long differing = 0;
@@ -168,7 +172,7 @@ int ToonBands()
   table->SetTableValue(1, 1.0, 1.0, 1.0);
   table->SetRange(0.0, 1.0);
   scene.Toon()->SetTable(table);
-  CheckShades(scene.Render(), ExpectedShades(color, { 0.25, 1.0 }), "a two-entry table");
+  CheckShades(scene.Render(), ExpectedShades(Orange, { 0.25, 1.0 }), "a two-entry table");
   double shade[3];
   scene.Toon()->GetShade(0.2, shade);
   NPR_CHECK(
@@ -202,17 +206,16 @@ int ToonBands()
 
   // An unlit actor keeps its flat colour.
   sphere->GetProperty()->LightingOff();
-  CheckShades(scene.Render(), ExpectedShades(color, { 1.0 }), "an unlit actor");
+  CheckShades(scene.Render(), ExpectedShades(Orange, { 1.0 }), "an unlit actor");
   return nprTestResult();
 }
+NPR_TEST_CASE("toon-bands", ToonBands);
 
 // ---- Scalar colours: each pixel is its flat scalar colour times one of the band factors ----
 int ToonScalars()
 {
   Scene scene(360, 300);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(128);
-  sphere->SetPhiResolution(64);
+  auto sphere = nprSphereSource(0.5, 128, 64);
   vtkNew<vtkElevationFilter> elevation;
   elevation->SetInputConnection(sphere->GetOutputPort());
   elevation->SetLowPoint(0, -0.5, 0);
@@ -263,17 +266,13 @@ int ToonScalars()
   NPR_CHECK(static_cast<int>(seen.size()) == bands, "only " << seen.size() << " bands seen");
   return nprTestResult();
 }
+NPR_TEST_CASE("toon-scalars", ToonScalars);
 
 // ---- Toon with edges: lines over the bands; the G-buffer is redrawn when the bands change ----
 int ToonEdges()
 {
   Scene scene(360, 300);
-  const double color[3] = { 0.9, 0.6, 0.3 };
-  ShowSphere(scene, color);
-  // Parallel, as in ToonBands: the darkest band is then a ring several pixels wide inside the
-  // silhouette (in perspective it is a pixel or two wide, under the line).
-  scene.Camera()->ParallelProjectionOn();
-  scene.Camera()->SetParallelScale(1.1);
+  ShowBandedSphere(scene);
   scene.Pass->SetStyleToToonEdges();
   scene.Toon()->SetNumberOfBands(3);
   scene.Render();
@@ -292,7 +291,7 @@ int ToonEdges()
   std::cout << dark << " line pixels\n";
   NPR_CHECK(dark > 500, "the silhouette of the sphere is missing (" << dark << " dark pixels)");
   const std::set<Color> colors = ObjectColors(image);
-  for (const Color& band : ExpectedShades(color, { 1.0 / 3, 2.0 / 3, 1.0 }))
+  for (const Color& band : ExpectedShades(Orange, { 1.0 / 3, 2.0 / 3, 1.0 }))
   {
     const bool found =
       std::any_of(colors.begin(), colors.end(), [&](const Color& c) { return Near(c, band); });
@@ -305,14 +304,5 @@ int ToonEdges()
     "changing the bands did not redraw the G-buffer");
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "toon-bands", ToonBands },
-    { "toon-scalars", ToonScalars },
-    { "toon-edges", ToonEdges },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("toon-edges", ToonEdges);
 }

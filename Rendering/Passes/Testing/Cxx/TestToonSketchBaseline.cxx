@@ -5,7 +5,7 @@
 // part), sketch with surface noise (the default; bunny and CAD part), against
 // Testing/Data/Baseline/{toon,toon_edges,sketch}_*.png (the comparison: nprTesting.h).
 //
-// usage: TestToonSketchBaseline CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestToonSketchBaseline CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprTesting.h"
 
 #include "vtkImageData.h"
@@ -32,33 +32,24 @@ int Baseline(const char* model, const char* name, int style, bool paper,
   NPR_CHECK(nprCompareWithBaseline(scene.Render(), name), name << " differs from its baseline");
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "baseline-toon-bunny",
-      [] { return Baseline("bunny.ply", "toon_bunny", vtkNPRPass::TOON, false); } },
-    { "baseline-toon-cad",
-      []
-      { return Baseline("cad_part.vtp", "toon_edges_cad_part", vtkNPRPass::TOON_EDGES, false); } },
-    { "baseline-sketch-bunny",
-      []
-      {
-        return Baseline(
-          "bunny.ply", "sketch_bunny", vtkNPRPass::SKETCH, false, vtkNPRSketchPass::SCREEN);
-      } },
-    { "baseline-sketch-cad",
-      []
-      {
-        return Baseline(
-          "cad_part.vtp", "sketch_cad_part", vtkNPRPass::SKETCH, true, vtkNPRSketchPass::SCREEN);
-      } },
-    { "baseline-sketch-surface-bunny",
-      [] { return Baseline("bunny.ply", "sketch_surface_bunny", vtkNPRPass::SKETCH, false); } },
-    { "baseline-sketch-surface-cad",
-      []
-      { return Baseline("cad_part.vtp", "sketch_surface_cad_part", vtkNPRPass::SKETCH, true); } },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("baseline-toon-bunny",
+  [] { return Baseline("bunny.ply", "toon_bunny", vtkNPRPass::TOON, false); });
+NPR_TEST_CASE("baseline-toon-cad",
+  [] { return Baseline("cad_part.vtp", "toon_edges_cad_part", vtkNPRPass::TOON_EDGES, false); });
+NPR_TEST_CASE("baseline-sketch-bunny",
+  []
+  {
+    return Baseline(
+      "bunny.ply", "sketch_bunny", vtkNPRPass::SKETCH, false, vtkNPRSketchPass::SCREEN);
+  });
+NPR_TEST_CASE("baseline-sketch-cad",
+  []
+  {
+    return Baseline(
+      "cad_part.vtp", "sketch_cad_part", vtkNPRPass::SKETCH, true, vtkNPRSketchPass::SCREEN);
+  });
+NPR_TEST_CASE("baseline-sketch-surface-bunny",
+  [] { return Baseline("bunny.ply", "sketch_surface_bunny", vtkNPRPass::SKETCH, false); });
+NPR_TEST_CASE("baseline-sketch-surface-cad",
+  [] { return Baseline("cad_part.vtp", "sketch_surface_cad_part", vtkNPRPass::SKETCH, true); });
 }

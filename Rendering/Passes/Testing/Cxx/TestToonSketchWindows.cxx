@@ -4,7 +4,7 @@
 // a resize and ReleaseGraphicsResources: the object, and its lines where the style has them,
 // drawn every time.
 //
-// usage: TestToonSketchWindows CASE [DATA_DIR]   (CASE: see the table at the end of this file)
+// usage: TestToonSketchWindows CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprTesting.h"
 
 #include "vtkImageData.h"
@@ -65,12 +65,5 @@ int Windows()
   }
   return nprTestResult();
 }
-}
-
-int main(int argc, char* argv[])
-{
-  const std::map<std::string, std::function<int()>> cases = {
-    { "windows", Windows },
-  };
-  return nprRunTestCase(argc, argv, cases);
+NPR_TEST_CASE("windows", Windows);
 }

@@ -6,12 +6,18 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkCubeSource.h"
+#include "vtkDataArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkMath.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
 
 namespace
 {
@@ -43,22 +49,17 @@ std::map<Edge, int> Lines(vtkNPRFeatureLines* filter)
   vtkPolyData* output = filter->GetOutput();
   auto* types = vtkUnsignedCharArray::SafeDownCast(output->GetCellData()->GetArray("FeatureType"));
   std::map<Edge, int> lines;
-  auto iterator = vtk::TakeSmartPointer(output->GetLines()->NewIterator());
-  vtkIdType cell = 0;
-  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal();
-       iterator->GoToNextCell(), ++cell)
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    iterator->GetCurrentCell(size, ids);
-    NPR_CHECK(size == 2, "a line of " << size << " points");
-    Point a, b;
-    output->GetPoint(ids[0], a.data());
-    output->GetPoint(ids[1], b.data());
-    const Edge edge = MakeEdge(a, b);
-    NPR_CHECK(!lines.count(edge), "edge output twice: " << Describe(edge));
-    lines[edge] = types ? types->GetValue(cell) : -1;
-  }
+  nprForEachCell(output->GetLines(),
+    [&](vtkIdType cell, vtkIdType size, const vtkIdType* ids)
+    {
+      NPR_CHECK(size == 2, "a line of " << size << " points");
+      Point a, b;
+      output->GetPoint(ids[0], a.data());
+      output->GetPoint(ids[1], b.data());
+      const Edge edge = MakeEdge(a, b);
+      NPR_CHECK(!lines.count(edge), "edge output twice: " << Describe(edge));
+      lines[edge] = types ? types->GetValue(cell) : -1;
+    });
   return lines;
 }
 
@@ -251,5 +252,138 @@ std::vector<std::array<double, 2>> ConvexHull(std::vector<std::array<double, 2>>
   }
   hull.resize(k - 1);
   return hull;
+}
+
+Contour SmoothContour(vtkNPRFeatureLines* filter)
+{
+  Contour contour;
+  vtkPolyData* output = filter->GetOutput();
+  auto* types = vtkUnsignedCharArray::SafeDownCast(output->GetCellData()->GetArray("FeatureType"));
+  auto* triangles =
+    vtkIdTypeArray::SafeDownCast(output->GetCellData()->GetArray("ContourTriangle"));
+  for (vtkIdType i = 0; types && i < output->GetNumberOfCells(); ++i)
+  {
+    const int type = types->GetValue(i);
+    if (!(type & vtkNPRFeatureLines::SMOOTH_CONTOUR))
+    {
+      continue;
+    }
+    NPR_CHECK(type == (vtkNPRFeatureLines::SMOOTH_CONTOUR | vtkNPRFeatureLines::SILHOUETTE),
+      "a smooth contour of type " << type);
+    vtkIdType size;
+    const vtkIdType* ids;
+    output->GetLines()->GetCellAtId(i, size, ids);
+    contour.Segments.push_back({ ids[0], ids[1] });
+    std::array<vtkIdType, 3> corners = { -1, -1, -1 };
+    for (int k = 0; triangles && k < 3; ++k)
+    {
+      corners[k] = triangles->GetTypedComponent(i, k);
+    }
+    contour.Triangles.push_back(corners);
+    ++contour.Uses[ids[0]];
+    ++contour.Uses[ids[1]];
+  }
+  NPR_CHECK(contour.Segments.empty() || triangles, "smooth contours without ContourTriangle");
+  // Pieces: union-find over the points.
+  std::map<vtkIdType, vtkIdType> parent;
+  std::function<vtkIdType(vtkIdType)> root = [&](vtkIdType x)
+  { return parent[x] == x ? x : parent[x] = root(parent[x]); };
+  for (const auto& use : contour.Uses)
+  {
+    parent[use.first] = use.first;
+  }
+  for (const auto& s : contour.Segments)
+  {
+    parent[root(s[0])] = root(s[1]);
+  }
+  contour.Closed = !contour.Uses.empty();
+  for (const auto& use : contour.Uses)
+  {
+    contour.Loops += root(use.first) == use.first ? 1 : 0;
+    contour.Closed = contour.Closed && use.second == 2;
+  }
+  return contour;
+}
+
+// Each segment end is the zero of g interpolated along one of its triangle's edges, from the
+// input's normals made unit length: recomputed here independently.
+double WorstZeroPoint(vtkNPRFeatureLines* filter, vtkPolyData* mesh, const Contour& contour)
+{
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  const double* eye = filter->GetEyePosition();
+  const double* d = filter->GetDirectionOfProjection();
+  auto g = [&](vtkIdType id)
+  {
+    double n[3], p[3];
+    normals->GetTuple(id, n);
+    mesh->GetPoint(id, p);
+    vtkMath::Normalize(n);
+    const double v[3] = { p[0] - eye[0], p[1] - eye[1], p[2] - eye[2] };
+    return filter->GetParallelProjection() ? vtkMath::Dot(n, d) : vtkMath::Dot(n, v);
+  };
+  double worst = 0.0;
+  for (size_t s = 0; s < contour.Segments.size(); ++s)
+  {
+    for (vtkIdType end : contour.Segments[s])
+    {
+      double x[3];
+      filter->GetOutput()->GetPoint(end, x);
+      double best = 1e300;
+      for (int k = 0; k < 3; ++k)
+      {
+        vtkIdType a = contour.Triangles[s][k], b = contour.Triangles[s][(k + 1) % 3];
+        if (a > b)
+        {
+          std::swap(a, b);
+        }
+        const double ga = g(a), gb = g(b);
+        if ((ga >= 0.0) == (gb >= 0.0))
+        {
+          continue;
+        }
+        double pa[3], pb[3];
+        mesh->GetPoint(a, pa);
+        mesh->GetPoint(b, pb);
+        const double t = ga / (ga - gb);
+        const double z[3] = { pa[0] + t * (pb[0] - pa[0]), pa[1] + t * (pb[1] - pa[1]),
+          pa[2] + t * (pb[2] - pa[2]) };
+        best = std::min(best, std::sqrt(vtkMath::Distance2BetweenPoints(x, z)));
+      }
+      worst = std::max(worst, best);
+    }
+  }
+  return worst;
+}
+
+std::vector<Stroke> ReadStrokes(vtkNPRDrawingLines* lines)
+{
+  vtkPolyData* strokes = lines->GetStrokes();
+  vtkDataArray* image = strokes->GetPointData()->GetArray("ImageCoordinates");
+  auto* types = vtkUnsignedCharArray::SafeDownCast(strokes->GetCellData()->GetArray("FeatureType"));
+  auto* hidden = vtkUnsignedCharArray::SafeDownCast(strokes->GetCellData()->GetArray("Hidden"));
+  std::vector<Stroke> result;
+  NPR_CHECK(image && image->GetNumberOfComponents() == 3 && types && hidden,
+    "the strokes lack ImageCoordinates, FeatureType or Hidden");
+  if (!image || !types || !hidden)
+  {
+    return result;
+  }
+  nprForEachCell(strokes->GetLines(),
+    [&](vtkIdType cell, vtkIdType size, const vtkIdType* ids)
+    {
+      Stroke stroke;
+      for (vtkIdType i = 0; i < size; ++i)
+      {
+        stroke.Ids.push_back(ids[i]);
+        stroke.Points.push_back({ image->GetComponent(ids[i], 0), image->GetComponent(ids[i], 1) });
+        const double z = image->GetComponent(ids[i], 2);
+        NPR_CHECK(z >= 0.0 && z <= 1.0, "a stroke point's depth is " << z);
+      }
+      stroke.Type = types->GetValue(cell);
+      stroke.Hidden = hidden->GetValue(cell) != 0;
+      NPR_CHECK(size >= 2, "a stroke of " << size << " points");
+      result.push_back(stroke);
+    });
+  return result;
 }
 }

@@ -8,6 +8,7 @@
 
 #include "nprTesting.h"
 
+#include "vtkNPRDrawingLines.h"
 #include "vtkNPRFeatureLines.h"
 #include "vtkNPRReferenceMask.h"
 #include "vtkNew.h"
@@ -73,6 +74,21 @@ vtkSmartPointer<vtkPolyData> CubeSource(double size = 1.0);
 // Andrew's monotone chain: the convex hull of 2D points, counter-clockwise.
 std::vector<std::array<double, 2>> ConvexHull(std::vector<std::array<double, 2>> points);
 
+// The smooth-contour segments of the output, chained by their shared points.
+struct Contour
+{
+  std::vector<std::array<vtkIdType, 2>> Segments;  // output point ids
+  std::vector<std::array<vtkIdType, 3>> Triangles; // ContourTriangle of each
+  std::map<vtkIdType, int> Uses;                   // segments per point
+  int Loops = 0;                                   // connected pieces
+  bool Closed = false;                             // every point used by exactly two segments
+};
+// The output's smooth-contour segments, each checked to be of type SMOOTH_CONTOUR | SILHOUETTE.
+Contour SmoothContour(vtkNPRFeatureLines* filter);
+// The largest distance of a segment end from the zero of the facing function interpolated along
+// an edge of its triangle (from the mesh's normals made unit length, recomputed here).
+double WorstZeroPoint(vtkNPRFeatureLines* filter, vtkPolyData* mesh, const Contour& contour);
+
 // A window whose renderer the reference mask reads; nothing is rendered unless a test does.
 struct MaskScene
 {
@@ -101,6 +117,38 @@ struct MaskScene
     std::array<double, 2> display;
     nprWorldToDisplay(this->Renderer, world.data(), display.data());
     return display;
+  }
+};
+
+// ---- The strokes of technical drawings (vtkNPRDrawingLines) ----
+using Image2 = std::array<double, 2>;
+
+// A stroke as read back: its points in the image, its type and visibility.
+struct Stroke
+{
+  std::vector<Image2> Points;
+  std::vector<vtkIdType> Ids;
+  int Type;
+  bool Hidden;
+  bool Closed() const { return this->Ids.size() > 2 && this->Ids.front() == this->Ids.back(); }
+};
+
+// The strokes of the lines' output, with checks of their arrays, depths and sizes.
+std::vector<Stroke> ReadStrokes(vtkNPRDrawingLines* lines);
+
+// A reference-mask scene whose drawing lines read the same renderer.
+struct DrawingScene : MaskScene
+{
+  vtkNew<vtkNPRDrawingLines> Lines;
+  DrawingScene(int width, int height)
+    : MaskScene(width, height)
+  {
+    this->Lines->SetRenderer(this->Renderer);
+  }
+  std::vector<Stroke> Strokes()
+  {
+    NPR_CHECK(this->Lines->Update(), "the drawing lines failed");
+    return ReadStrokes(this->Lines);
   }
 };
 }
