@@ -488,25 +488,13 @@ bool vtkNPRDrawingLines::Update()
   internal.FeatureEdges = internal.RayCasts = internal.StrokeCount = 0;
   internal.LinesTime = internal.LocatorTime = internal.VisibilityTime = internal.ChainTime = 0.0;
   internal.Strokes->Initialize();
-  if (!this->Renderer)
-  {
-    vtkErrorMacro("no renderer");
-    return false;
-  }
   int width, height;
-  if (!vtkNPRImageSize(this->Renderer, this->Size, width, height))
+  if (!vtkNPRUpdateImageSize(this, this->Renderer, this->Size, width, height))
   {
-    vtkErrorMacro("no size: set Size or put the renderer in a window with a size");
     return false;
   }
 
-  vtkNPRSceneLines::Settings settings;
-  settings.Silhouettes = this->Silhouettes;
-  settings.Creases = this->Creases;
-  settings.Boundaries = this->Boundaries;
-  settings.NonManifoldEdges = this->NonManifoldEdges;
-  settings.CreaseAngle = this->CreaseAngle;
-  internal.Scene.Update(this->Renderer, settings, 16384);
+  internal.Scene.Update(this->Renderer, vtkNPRSceneLines::Settings(this->LineSettings), 16384);
   const std::vector<vtkNPRSceneLines::Segment>& segments = internal.Scene.GetSegments();
   internal.FeatureEdges = static_cast<vtkIdType>(segments.size());
   internal.LinesTime = internal.Scene.GetLinesTime();
@@ -541,11 +529,7 @@ void vtkNPRDrawingLines::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Renderer: " << this->Renderer << "\n";
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
-  os << indent << "Silhouettes: " << this->Silhouettes << "\n";
-  os << indent << "Creases: " << this->Creases << "\n";
-  os << indent << "Boundaries: " << this->Boundaries << "\n";
-  os << indent << "NonManifoldEdges: " << this->NonManifoldEdges << "\n";
-  os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";
+  this->LineSettings->PrintSettings(os, indent, "CreaseAngle");
   os << indent << "HiddenLines: " << this->HiddenLines << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "OcclusionEpsilon: " << this->OcclusionEpsilon << "\n";

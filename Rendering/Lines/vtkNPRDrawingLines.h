@@ -54,6 +54,8 @@
 #define vtkNPRDrawingLines_h
 
 #include "vtkFiltersNPRModule.h" // for export macro
+#include "vtkNPRLineSettings.h"  // for vtkNPRLineSettingsMacro
+#include "vtkNew.h"              // for LineSettings
 #include "vtkObject.h"
 
 #include <cstddef> // for size_t
@@ -87,29 +89,11 @@ public:
 
   ///@{
   /**
-   * The line types (all on by default), as in vtkNPRFeatureLines.
+   * The line types (all on by default, as in vtkNPRFeatureLines) and CreaseAngle, the angle
+   * between face normals in degrees above which an edge is a crease (default 30, clamped to
+   * [0, 180]): GetLineSettings()'s, forwarded (vtkNPRLineSettings).
    */
-  vtkSetMacro(Silhouettes, bool);
-  vtkGetMacro(Silhouettes, bool);
-  vtkBooleanMacro(Silhouettes, bool);
-  vtkSetMacro(Creases, bool);
-  vtkGetMacro(Creases, bool);
-  vtkBooleanMacro(Creases, bool);
-  vtkSetMacro(Boundaries, bool);
-  vtkGetMacro(Boundaries, bool);
-  vtkBooleanMacro(Boundaries, bool);
-  vtkSetMacro(NonManifoldEdges, bool);
-  vtkGetMacro(NonManifoldEdges, bool);
-  vtkBooleanMacro(NonManifoldEdges, bool);
-  ///@}
-
-  ///@{
-  /**
-   * The angle between face normals, in degrees, above which an edge is a crease (default 30;
-   * clamped to [0, 180]).
-   */
-  vtkSetClampMacro(CreaseAngle, double, 0.0, 180.0);
-  vtkGetMacro(CreaseAngle, double);
+  vtkNPRLineSettingsMacro(CreaseAngle);
   ///@}
 
   ///@{
@@ -179,11 +163,7 @@ protected:
 
   vtkRenderer* Renderer = nullptr;
   int Size[2] = { 0, 0 };
-  bool Silhouettes = true;
-  bool Creases = true;
-  bool Boundaries = true;
-  bool NonManifoldEdges = true;
-  double CreaseAngle = 30.0;
+  vtkNew<vtkNPRLineSettings> LineSettings;
   bool HiddenLines = false;
   double SampleSpacing = 1.0;
   double OcclusionEpsilon = 1e-6;

@@ -303,27 +303,16 @@ bool vtkNPRReferenceMask::Update()
 {
   Internals& internal = *this->Internal;
   internal.Clear();
-  if (!this->Renderer)
-  {
-    vtkErrorMacro("no renderer");
-    return false;
-  }
   int width, height;
-  if (!vtkNPRImageSize(this->Renderer, this->Size, width, height))
+  if (!vtkNPRUpdateImageSize(this, this->Renderer, this->Size, width, height))
   {
-    vtkErrorMacro("no size: set Size or put the renderer in a window with a size");
     return false;
   }
   unsigned char* pixels = internal.ClearMask(width, height);
 
-  vtkNPRSceneLines::Settings settings;
-  settings.Silhouettes = this->Silhouettes;
-  settings.Creases = this->Creases;
-  settings.Boundaries = this->Boundaries;
-  settings.NonManifoldEdges = this->NonManifoldEdges;
-  settings.CreaseAngle = this->CreaseAngle;
+  vtkNPRSceneLines::Settings settings(this->LineSettings);
   settings.SmoothContours = this->SmoothContours;
-  settings.Intersections = this->Creases && this->IntersectionCurves;
+  settings.Intersections = settings.Creases && this->IntersectionCurves;
   internal.UpdateScene(this->Renderer, settings, this->TrianglesPerLocator);
 
   // Visibility: samples along each segment's image, a ray for each.
@@ -346,12 +335,8 @@ void vtkNPRReferenceMask::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Renderer: " << this->Renderer << "\n";
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
-  os << indent << "Silhouettes: " << this->Silhouettes << "\n";
-  os << indent << "Creases: " << this->Creases << "\n";
+  this->LineSettings->PrintSettings(os, indent, "CreaseAngle");
   os << indent << "IntersectionCurves: " << this->IntersectionCurves << "\n";
-  os << indent << "Boundaries: " << this->Boundaries << "\n";
-  os << indent << "NonManifoldEdges: " << this->NonManifoldEdges << "\n";
-  os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";
   os << indent << "SmoothContours: " << this->SmoothContours << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "OcclusionEpsilon: " << this->OcclusionEpsilon << "\n";

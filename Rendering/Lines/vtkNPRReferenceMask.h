@@ -73,6 +73,8 @@
 #define vtkNPRReferenceMask_h
 
 #include "vtkFiltersNPRModule.h" // for export macro
+#include "vtkNPRLineSettings.h"  // for vtkNPRLineSettingsMacro
+#include "vtkNew.h"              // for LineSettings
 #include "vtkObject.h"
 
 #include <memory> // for std::unique_ptr
@@ -106,20 +108,11 @@ public:
 
   ///@{
   /**
-   * The line types (all on by default), as in vtkNPRFeatureLines.
+   * The line types (all on by default, as in vtkNPRFeatureLines) and CreaseAngle, the angle
+   * between face normals in degrees above which an edge is a crease (default 30, vtkNPREdgePass's
+   * default; clamped to [0, 180]): GetLineSettings()'s, forwarded (vtkNPRLineSettings).
    */
-  vtkSetMacro(Silhouettes, bool);
-  vtkGetMacro(Silhouettes, bool);
-  vtkBooleanMacro(Silhouettes, bool);
-  vtkSetMacro(Creases, bool);
-  vtkGetMacro(Creases, bool);
-  vtkBooleanMacro(Creases, bool);
-  vtkSetMacro(Boundaries, bool);
-  vtkGetMacro(Boundaries, bool);
-  vtkBooleanMacro(Boundaries, bool);
-  vtkSetMacro(NonManifoldEdges, bool);
-  vtkGetMacro(NonManifoldEdges, bool);
-  vtkBooleanMacro(NonManifoldEdges, bool);
+  vtkNPRLineSettingsMacro(CreaseAngle);
   ///@}
 
   ///@{
@@ -134,15 +127,6 @@ public:
   vtkSetMacro(IntersectionCurves, bool);
   vtkGetMacro(IntersectionCurves, bool);
   vtkBooleanMacro(IntersectionCurves, bool);
-  ///@}
-
-  ///@{
-  /**
-   * The angle between face normals, in degrees, above which an edge is a crease (default 30,
-   * vtkNPREdgePass's default; clamped to [0, 180]).
-   */
-  vtkSetClampMacro(CreaseAngle, double, 0.0, 180.0);
-  vtkGetMacro(CreaseAngle, double);
   ///@}
 
   ///@{
@@ -245,11 +229,7 @@ protected:
 
   vtkRenderer* Renderer = nullptr;
   int Size[2] = { 0, 0 };
-  bool Silhouettes = true;
-  bool Creases = true;
-  bool Boundaries = true;
-  bool NonManifoldEdges = true;
-  double CreaseAngle = 30.0;
+  vtkNew<vtkNPRLineSettings> LineSettings;
   bool IntersectionCurves = true;
   bool SmoothContours = false;
   double SampleSpacing = 0.25;
