@@ -73,47 +73,19 @@
 #define vtkNPRReferenceMask_h
 
 #include "vtkFiltersNPRModule.h" // for export macro
-#include "vtkNPRLineSettings.h"  // for vtkNPRLineSettingsMacro
-#include "vtkNew.h"              // for LineSettings
-#include "vtkObject.h"
+#include "vtkNPRRendererLines.h"
 
 #include <memory> // for std::unique_ptr
 
 class vtkImageData;
 class vtkPolyData;
-class vtkRenderer;
 
-class VTKFILTERSNPR_EXPORT vtkNPRReferenceMask : public vtkObject
+class VTKFILTERSNPR_EXPORT vtkNPRReferenceMask : public vtkNPRRendererLines
 {
 public:
   static vtkNPRReferenceMask* New();
-  vtkTypeMacro(vtkNPRReferenceMask, vtkObject);
+  vtkTypeMacro(vtkNPRReferenceMask, vtkNPRRendererLines);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * The renderer whose camera and actors are used.
-   */
-  virtual void SetRenderer(vtkRenderer* renderer);
-  vtkGetObjectMacro(Renderer, vtkRenderer);
-  ///@}
-
-  ///@{
-  /**
-   * The mask's size in pixels; 0, 0 (the default): the renderer's size in its window.
-   */
-  vtkSetVector2Macro(Size, int);
-  vtkGetVector2Macro(Size, int);
-  ///@}
-
-  ///@{
-  /**
-   * The line types (all on by default, as in vtkNPRFeatureLines) and CreaseAngle, the angle
-   * between face normals in degrees above which an edge is a crease (default 30, vtkNPREdgePass's
-   * default; clamped to [0, 180]): GetLineSettings()'s, forwarded (vtkNPRLineSettings).
-   */
-  vtkNPRLineSettingsMacro(CreaseAngle);
-  ///@}
 
   ///@{
   /**
@@ -152,15 +124,6 @@ public:
 
   ///@{
   /**
-   * How much of the segment from the near plane to a sample is left untested at the sample's
-   * end, relative to its length (default 1e-6, clamped to [0, 0.01]).
-   */
-  vtkSetClampMacro(OcclusionEpsilon, double, 0.0, 0.01);
-  vtkGetMacro(OcclusionEpsilon, double);
-  ///@}
-
-  ///@{
-  /**
    * Also output the visible parts of the lines as polylines (off by default; costs a ray for
    * every sample).
    */
@@ -184,7 +147,7 @@ public:
    * Computes the mask (and the visible lines). False, with an error, when there is no renderer
    * or no size.
    */
-  bool Update();
+  bool Update() override;
 
   /**
    * The mask of the last Update(): Size, unsigned char, 255 on lines, row 0 at the bottom.
@@ -199,23 +162,13 @@ public:
 
   ///@{
   /**
-   * What the last Update() did.
+   * What the last Update() did besides vtkNPRRendererLines's counts (whose rays are the
+   * samples tested by a ray).
    */
-  vtkIdType GetNumberOfFeatureEdges() const;   // line segments of all actors
   vtkIdType GetNumberOfSamples() const;        // samples inside the view
-  vtkIdType GetNumberOfRayCasts() const;       // samples tested by a ray
   vtkIdType GetNumberOfVisibleSamples() const; // tested samples that nothing hides
   vtkIdType GetNumberOfLinePixels() const;     // pixels set in the mask
-  double GetLinesTime() const;                 // seconds finding the feature lines
-  double GetLocatorTime() const;               // seconds building the occlusion structure
-  double GetVisibilityTime() const;            // seconds sampling and casting rays
   ///@}
-
-  /**
-   * How many times the occlusion structure (all actors' triangles, located) has been built:
-   * again only when an actor's mesh or matrix, the set of actors or TrianglesPerLocator changed.
-   */
-  vtkIdType GetNumberOfLocatorBuilds() const;
 
   /**
    * The sum of the adjacency builds of the actors' vtkNPRFeatureLines (each mesh once while it
@@ -227,13 +180,9 @@ protected:
   vtkNPRReferenceMask();
   ~vtkNPRReferenceMask() override;
 
-  vtkRenderer* Renderer = nullptr;
-  int Size[2] = { 0, 0 };
-  vtkNew<vtkNPRLineSettings> LineSettings;
   bool IntersectionCurves = true;
   bool SmoothContours = false;
   double SampleSpacing = 0.25;
-  double OcclusionEpsilon = 1e-6;
   bool GenerateVisibleLines = false;
   int TrianglesPerLocator = 16384;
 

@@ -15,7 +15,6 @@
 #include "vtkIdTypeArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNPRFeatureLines.h"
-#include "vtkNPRLineSettings.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderer.h"
@@ -343,30 +342,4 @@ void vtkNPRSceneLines::UpdateOccluders(const std::vector<vtkNPRMeshInstance>& ac
       }
     }
   }
-}
-
-bool vtkNPRUpdateImageSize(
-  vtkObject* caller, vtkRenderer* renderer, const int size[2], int& width, int& height)
-{
-  if (!renderer)
-  {
-    vtkErrorWithObjectMacro(caller, "no renderer");
-    return false;
-  }
-  if (!vtkNPRImageSize(renderer, size, width, height))
-  {
-    vtkErrorWithObjectMacro(
-      caller, "no size: set Size or put the renderer in a window with a size");
-    return false;
-  }
-  return true;
-}
-
-vtkNPRSceneLines::Settings::Settings(vtkNPRLineSettings* lines)
-  : Silhouettes(lines->GetSilhouettes())
-  , Creases(lines->GetCreases())
-  , Boundaries(lines->GetBoundaries())
-  , NonManifoldEdges(lines->GetNonManifoldEdges())
-  , CreaseAngle(lines->GetCreaseAngle())
-{
 }

@@ -19,18 +19,12 @@
 
 class vtkCamera;
 class vtkNPRFeatureLines;
-class vtkNPRLineSettings;
-class vtkObject;
 class vtkPolyData;
 class vtkRenderer;
 
 // The image size of a renderer: `size` when both are positive, else the renderer's size in its
 // window. False when there is none.
 bool vtkNPRImageSize(vtkRenderer* renderer, const int size[2], int& width, int& height);
-// The same for an update of `caller` (vtkNPRReferenceMask, vtkNPRDrawingLines), which reports
-// as its error that there is no renderer or no size.
-bool vtkNPRUpdateImageSize(
-  vtkObject* caller, vtkRenderer* renderer, const int size[2], int& width, int& height);
 
 // The camera of a frame as the image sees it.
 struct vtkNPRSceneView
@@ -64,13 +58,10 @@ class vtkNPRSceneLines
 public:
   struct Settings
   {
-    // The line types and crease angle of `lines`, without smooth contours or intersections.
-    explicit Settings(vtkNPRLineSettings* lines);
-
-    bool Silhouettes, Creases, Boundaries, NonManifoldEdges;
+    bool Silhouettes = true, Creases = true, Boundaries = true, NonManifoldEdges = true;
     bool SmoothContours = false;
     bool Intersections = false; // crossing surfaces at more than CreaseAngle, as creases
-    double CreaseAngle;
+    double CreaseAngle = 30.0;
   };
   // A feature edge in world coordinates; Nodes identify its end points across the scene (the
   // same mesh vertex of the same actor, or the same crossed edge of a smooth contour: the same
