@@ -413,38 +413,23 @@ private:
 
 struct vtkNPRDrawingLines::Internals
 {
-  vtkNPRSceneLines Scene;
   vtkNew<vtkPolyData> Strokes;
-  vtkIdType FeatureEdges = 0, RayCasts = 0, StrokeCount = 0;
-  double LinesTime = 0.0, LocatorTime = 0.0, VisibilityTime = 0.0, ChainTime = 0.0;
+  vtkIdType StrokeCount = 0;
+  double ChainTime = 0.0;
 };
 
 vtkStandardNewMacro(vtkNPRDrawingLines);
-vtkCxxSetObjectMacro(vtkNPRDrawingLines, Renderer, vtkRenderer);
 
 vtkNPRDrawingLines::vtkNPRDrawingLines()
   : Internal(new Internals)
 {
 }
 
-vtkNPRDrawingLines::~vtkNPRDrawingLines()
-{
-  this->SetRenderer(nullptr);
-}
+vtkNPRDrawingLines::~vtkNPRDrawingLines() = default;
 
 vtkPolyData* vtkNPRDrawingLines::GetStrokes()
 {
   return this->Internal->Strokes;
-}
-
-vtkIdType vtkNPRDrawingLines::GetNumberOfFeatureEdges() const
-{
-  return this->Internal->FeatureEdges;
-}
-
-vtkIdType vtkNPRDrawingLines::GetNumberOfRayCasts() const
-{
-  return this->Internal->RayCasts;
 }
 
 vtkIdType vtkNPRDrawingLines::GetNumberOfStrokes() const
@@ -452,75 +437,41 @@ vtkIdType vtkNPRDrawingLines::GetNumberOfStrokes() const
   return this->Internal->StrokeCount;
 }
 
-double vtkNPRDrawingLines::GetLinesTime() const
-{
-  return this->Internal->LinesTime;
-}
-
-double vtkNPRDrawingLines::GetLocatorTime() const
-{
-  return this->Internal->LocatorTime;
-}
-
-double vtkNPRDrawingLines::GetVisibilityTime() const
-{
-  return this->Internal->VisibilityTime;
-}
-
 double vtkNPRDrawingLines::GetChainTime() const
 {
   return this->Internal->ChainTime;
 }
 
-vtkIdType vtkNPRDrawingLines::GetNumberOfLocatorBuilds() const
-{
-  return this->Internal->Scene.GetNumberOfLocatorBuilds();
-}
-
 size_t vtkNPRDrawingLines::GetMemorySize() const
 {
-  return this->Internal->Scene.GetMemorySize();
+  return this->GetScene().GetMemorySize();
 }
 
 bool vtkNPRDrawingLines::Update()
 {
   Internals& internal = *this->Internal;
-  internal.FeatureEdges = internal.RayCasts = internal.StrokeCount = 0;
-  internal.LinesTime = internal.LocatorTime = internal.VisibilityTime = internal.ChainTime = 0.0;
+  internal.StrokeCount = 0;
+  internal.ChainTime = 0.0;
   internal.Strokes->Initialize();
-  if (!this->Renderer)
-  {
-    vtkErrorMacro("no renderer");
-    return false;
-  }
   int width, height;
-  if (!vtkNPRImageSize(this->Renderer, this->Size, width, height))
+  if (!this->StartUpdate(width, height))
   {
-    vtkErrorMacro("no size: set Size or put the renderer in a window with a size");
     return false;
   }
 
-  vtkNPRSceneLines::Settings settings;
-  settings.Silhouettes = this->Silhouettes;
-  settings.Creases = this->Creases;
-  settings.Boundaries = this->Boundaries;
-  settings.NonManifoldEdges = this->NonManifoldEdges;
-  settings.CreaseAngle = this->CreaseAngle;
-  internal.Scene.Update(this->Renderer, settings, 16384);
-  const std::vector<vtkNPRSceneLines::Segment>& segments = internal.Scene.GetSegments();
-  internal.FeatureEdges = static_cast<vtkIdType>(segments.size());
-  internal.LinesTime = internal.Scene.GetLinesTime();
-  internal.LocatorTime = internal.Scene.GetLocatorTime();
+  this->UpdateScene(false, false, 16384);
+  const vtkNPRSceneLines& scene = this->GetScene();
+  const std::vector<vtkNPRSceneLines::Segment>& segments = scene.GetSegments();
 
   // Split each edge where it passes behind a surface (the rays on all cores).
   Clock::time_point start = Clock::now();
   vtkNPRSceneView view;
   view.Set(this->Renderer->GetActiveCamera(), width, height);
   const Visibility visibility = FindVisibility(
-    segments, view, internal.Scene.GetOccluders(), this->SampleSpacing, this->OcclusionEpsilon);
-  internal.RayCasts = visibility.RayCasts;
+    segments, view, scene.GetOccluders(), this->SampleSpacing, this->OcclusionEpsilon);
+  this->RayCasts = visibility.RayCasts;
   const std::vector<Piece> pieces = MakePieces(segments, view, visibility, this->HiddenLines);
-  internal.VisibilityTime = Seconds(start);
+  this->VisibilityTime = Seconds(start);
 
   // Chain the pieces of one kind through the nodes where exactly two of that kind meet.
   start = Clock::now();
@@ -539,15 +490,7 @@ bool vtkNPRDrawingLines::Update()
 void vtkNPRDrawingLines::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Renderer: " << this->Renderer << "\n";
-  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
-  os << indent << "Silhouettes: " << this->Silhouettes << "\n";
-  os << indent << "Creases: " << this->Creases << "\n";
-  os << indent << "Boundaries: " << this->Boundaries << "\n";
-  os << indent << "NonManifoldEdges: " << this->NonManifoldEdges << "\n";
-  os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";
   os << indent << "HiddenLines: " << this->HiddenLines << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
-  os << indent << "OcclusionEpsilon: " << this->OcclusionEpsilon << "\n";
   os << indent << "NumberOfStrokes: " << this->Internal->StrokeCount << "\n";
 }

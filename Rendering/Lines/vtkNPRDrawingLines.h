@@ -54,63 +54,19 @@
 #define vtkNPRDrawingLines_h
 
 #include "vtkFiltersNPRModule.h" // for export macro
-#include "vtkObject.h"
+#include "vtkNPRRendererLines.h"
 
 #include <cstddef> // for size_t
 #include <memory>  // for std::unique_ptr
 
 class vtkPolyData;
-class vtkRenderer;
 
-class VTKFILTERSNPR_EXPORT vtkNPRDrawingLines : public vtkObject
+class VTKFILTERSNPR_EXPORT vtkNPRDrawingLines : public vtkNPRRendererLines
 {
 public:
   static vtkNPRDrawingLines* New();
-  vtkTypeMacro(vtkNPRDrawingLines, vtkObject);
+  vtkTypeMacro(vtkNPRDrawingLines, vtkNPRRendererLines);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * The renderer whose camera and actors are used.
-   */
-  virtual void SetRenderer(vtkRenderer* renderer);
-  vtkGetObjectMacro(Renderer, vtkRenderer);
-  ///@}
-
-  ///@{
-  /**
-   * The image size in pixels; 0, 0 (the default): the renderer's size in its window.
-   */
-  vtkSetVector2Macro(Size, int);
-  vtkGetVector2Macro(Size, int);
-  ///@}
-
-  ///@{
-  /**
-   * The line types (all on by default), as in vtkNPRFeatureLines.
-   */
-  vtkSetMacro(Silhouettes, bool);
-  vtkGetMacro(Silhouettes, bool);
-  vtkBooleanMacro(Silhouettes, bool);
-  vtkSetMacro(Creases, bool);
-  vtkGetMacro(Creases, bool);
-  vtkBooleanMacro(Creases, bool);
-  vtkSetMacro(Boundaries, bool);
-  vtkGetMacro(Boundaries, bool);
-  vtkBooleanMacro(Boundaries, bool);
-  vtkSetMacro(NonManifoldEdges, bool);
-  vtkGetMacro(NonManifoldEdges, bool);
-  vtkBooleanMacro(NonManifoldEdges, bool);
-  ///@}
-
-  ///@{
-  /**
-   * The angle between face normals, in degrees, above which an edge is a crease (default 30;
-   * clamped to [0, 180]).
-   */
-  vtkSetClampMacro(CreaseAngle, double, 0.0, 180.0);
-  vtkGetMacro(CreaseAngle, double);
-  ///@}
 
   ///@{
   /**
@@ -130,18 +86,10 @@ public:
   vtkGetMacro(SampleSpacing, double);
   ///@}
 
-  ///@{
-  /**
-   * As vtkNPRReferenceMask's (default 1e-6, clamped to [0, 0.01]).
-   */
-  vtkSetClampMacro(OcclusionEpsilon, double, 0.0, 0.01);
-  vtkGetMacro(OcclusionEpsilon, double);
-  ///@}
-
   /**
    * Computes the strokes. False, with an error, when there is no renderer or no size.
    */
-  bool Update();
+  bool Update() override;
 
   /**
    * The strokes of the last Update() (see the class description).
@@ -150,21 +98,12 @@ public:
 
   ///@{
   /**
-   * What the last Update() did.
+   * What the last Update() did besides vtkNPRRendererLines's counts (whose rays include the
+   * bisection's and whose visibility time includes the splitting).
    */
-  vtkIdType GetNumberOfFeatureEdges() const; // edges of all actors
-  vtkIdType GetNumberOfRayCasts() const;     // visibility tests, bisection included
   vtkIdType GetNumberOfStrokes() const;
-  double GetLinesTime() const;      // seconds finding the feature lines
-  double GetLocatorTime() const;    // seconds building the occlusion structure
-  double GetVisibilityTime() const; // seconds sampling, casting rays and splitting
-  double GetChainTime() const;      // seconds chaining the pieces into strokes
+  double GetChainTime() const; // seconds chaining the pieces into strokes
   ///@}
-
-  /**
-   * How many times the occlusion structure has been built (see vtkNPRReferenceMask).
-   */
-  vtkIdType GetNumberOfLocatorBuilds() const;
 
   /**
    * Bytes held between updates: each mesh's edge table (vtkNPRFeatureLines::
@@ -177,16 +116,8 @@ protected:
   vtkNPRDrawingLines();
   ~vtkNPRDrawingLines() override;
 
-  vtkRenderer* Renderer = nullptr;
-  int Size[2] = { 0, 0 };
-  bool Silhouettes = true;
-  bool Creases = true;
-  bool Boundaries = true;
-  bool NonManifoldEdges = true;
-  double CreaseAngle = 30.0;
   bool HiddenLines = false;
   double SampleSpacing = 1.0;
-  double OcclusionEpsilon = 1e-6;
 
 private:
   vtkNPRDrawingLines(const vtkNPRDrawingLines&) = delete;

@@ -207,18 +207,20 @@ int vtkNPRFeatureLines::RequestData(
   view.Parallel = this->ParallelProjection;
   std::copy_n(this->EyePosition, 3, view.Eye);
   std::copy_n(this->DirectionOfProjection, 3, view.Direction);
-  view.Creases = this->Creases;
-  view.Boundaries = this->Boundaries;
-  view.NonManifoldEdges = this->NonManifoldEdges;
-  if (this->Creases)
+  vtkNPRLineSettings& settings = *this->LineSettings;
+  view.Creases = settings.GetCreases();
+  view.Boundaries = settings.GetBoundaries();
+  view.NonManifoldEdges = settings.GetNonManifoldEdges();
+  if (view.Creases)
   {
-    adjacency.UpdateCreases(this->FeatureAngle);
+    adjacency.UpdateCreases(settings.GetCreaseAngle());
   }
   // Smooth contours replace the mesh silhouettes only where the input has point normals.
-  vtkDataArray* contourNormals =
-    this->Silhouettes && this->SmoothContours ? vtkNPRSmoothContours::PointNormals(input) : nullptr;
+  vtkDataArray* contourNormals = settings.GetSilhouettes() && this->SmoothContours
+    ? vtkNPRSmoothContours::PointNormals(input)
+    : nullptr;
   const bool smooth = contourNormals && adjacency.GetNumberOfEdges() > 0;
-  view.Silhouettes = this->Silhouettes && !smooth;
+  view.Silhouettes = settings.GetSilhouettes() && !smooth;
   view.SplitContours = smooth;
   const double* viewpoint = view.Parallel ? view.Direction : view.Eye;
   if (smooth)
@@ -265,11 +267,7 @@ void vtkNPRFeatureLines::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ParallelProjection: " << this->ParallelProjection << "\n";
   os << indent << "DirectionOfProjection: " << this->DirectionOfProjection[0] << ", "
      << this->DirectionOfProjection[1] << ", " << this->DirectionOfProjection[2] << "\n";
-  os << indent << "Silhouettes: " << this->Silhouettes << "\n";
-  os << indent << "Creases: " << this->Creases << "\n";
-  os << indent << "Boundaries: " << this->Boundaries << "\n";
-  os << indent << "NonManifoldEdges: " << this->NonManifoldEdges << "\n";
-  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  this->LineSettings->PrintSettings(os, indent, "FeatureAngle");
   os << indent << "MergeCoincidentPoints: " << this->MergeCoincidentPoints << "\n";
   os << indent << "SmoothContours: " << this->SmoothContours << "\n";
   os << indent << "NumberOfAdjacencyBuilds: " << this->NumberOfAdjacencyBuilds << "\n";

@@ -116,6 +116,8 @@
 #define vtkNPRFeatureLines_h
 
 #include "vtkFiltersNPRModule.h" // for export macro
+#include "vtkNPRLineSettings.h"  // for vtkNPRLineSettingsMacro
+#include "vtkNew.h"              // for LineSettings
 #include "vtkPolyDataAlgorithm.h"
 
 #include <cstddef> // for size_t
@@ -181,29 +183,11 @@ public:
 
   ///@{
   /**
-   * The line types output (all on by default).
+   * The line types output (all on by default) and FeatureAngle, the angle between face normals
+   * in degrees above which an edge is a crease (default 30, clamped to [0, 180]):
+   * GetLineSettings()'s, forwarded (vtkNPRLineSettings, where FeatureAngle is CreaseAngle).
    */
-  vtkSetMacro(Silhouettes, bool);
-  vtkGetMacro(Silhouettes, bool);
-  vtkBooleanMacro(Silhouettes, bool);
-  vtkSetMacro(Creases, bool);
-  vtkGetMacro(Creases, bool);
-  vtkBooleanMacro(Creases, bool);
-  vtkSetMacro(Boundaries, bool);
-  vtkGetMacro(Boundaries, bool);
-  vtkBooleanMacro(Boundaries, bool);
-  vtkSetMacro(NonManifoldEdges, bool);
-  vtkGetMacro(NonManifoldEdges, bool);
-  vtkBooleanMacro(NonManifoldEdges, bool);
-  ///@}
-
-  ///@{
-  /**
-   * The angle between face normals, in degrees, above which an edge is a crease (default 30,
-   * clamped to [0, 180]).
-   */
-  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
-  vtkGetMacro(FeatureAngle, double);
+  vtkNPRLineSettingsMacro(FeatureAngle);
   ///@}
 
   ///@{
@@ -274,11 +258,7 @@ protected:
   double EyePosition[3] = { 0.0, 0.0, 0.0 };
   bool ParallelProjection = false;
   double DirectionOfProjection[3] = { 0.0, 0.0, -1.0 };
-  bool Silhouettes = true;
-  bool Creases = true;
-  bool Boundaries = true;
-  bool NonManifoldEdges = true;
-  double FeatureAngle = 30.0;
+  vtkNew<vtkNPRLineSettings> LineSettings;
   bool MergeCoincidentPoints = true;
   bool SmoothContours = false;
   vtkIdType NumberOfAdjacencyBuilds = 0;

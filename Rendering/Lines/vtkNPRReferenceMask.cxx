@@ -170,19 +170,15 @@ private:
 
 struct vtkNPRReferenceMask::Internals
 {
-  vtkNPRSceneLines Scene;
   vtkNew<vtkImageData> Mask;
   vtkNew<vtkPolyData> VisibleLines;
 
-  vtkIdType FeatureEdges = 0, Samples = 0, RayCasts = 0, VisibleSamples = 0, LinePixels = 0;
-  double LinesTime = 0.0, LocatorTime = 0.0, VisibilityTime = 0.0;
+  vtkIdType Samples = 0, VisibleSamples = 0, LinePixels = 0;
 
   // Zeroes what the last update counted and empties its lines.
   void Clear()
   {
-    this->FeatureEdges = this->Samples = this->RayCasts = this->VisibleSamples = this->LinePixels =
-      0;
-    this->LinesTime = this->LocatorTime = this->VisibilityTime = 0.0;
+    this->Samples = this->VisibleSamples = this->LinePixels = 0;
     this->VisibleLines->Initialize();
   }
 
@@ -196,21 +192,10 @@ struct vtkNPRReferenceMask::Internals
     return pixels;
   }
 
-  // The scene's feature lines and occluders for this camera.
-  void UpdateScene(
-    vtkRenderer* renderer, const vtkNPRSceneLines::Settings& settings, int trianglesPerLocator)
-  {
-    this->Scene.Update(renderer, settings, trianglesPerLocator);
-    this->FeatureEdges = static_cast<vtkIdType>(this->Scene.GetSegments().size());
-    this->LinesTime = this->Scene.GetLinesTime();
-    this->LocatorTime = this->Scene.GetLocatorTime();
-  }
-
   // The sampler's counts and lines, and the marked pixels counted.
   void Collect(Sampler& sampler, bool keepLines)
   {
     this->Samples = sampler.Samples;
-    this->RayCasts = sampler.RayCasts;
     this->VisibleSamples = sampler.VisibleSamples;
     const unsigned char* pixels = static_cast<unsigned char*>(this->Mask->GetScalarPointer());
     const int* size = this->Mask->GetDimensions();
@@ -227,17 +212,13 @@ struct vtkNPRReferenceMask::Internals
 };
 
 vtkStandardNewMacro(vtkNPRReferenceMask);
-vtkCxxSetObjectMacro(vtkNPRReferenceMask, Renderer, vtkRenderer);
 
 vtkNPRReferenceMask::vtkNPRReferenceMask()
   : Internal(new Internals)
 {
 }
 
-vtkNPRReferenceMask::~vtkNPRReferenceMask()
-{
-  this->SetRenderer(nullptr);
-}
+vtkNPRReferenceMask::~vtkNPRReferenceMask() = default;
 
 vtkImageData* vtkNPRReferenceMask::GetMask()
 {
@@ -249,19 +230,9 @@ vtkPolyData* vtkNPRReferenceMask::GetVisibleLines()
   return this->Internal->VisibleLines;
 }
 
-vtkIdType vtkNPRReferenceMask::GetNumberOfFeatureEdges() const
-{
-  return this->Internal->FeatureEdges;
-}
-
 vtkIdType vtkNPRReferenceMask::GetNumberOfSamples() const
 {
   return this->Internal->Samples;
-}
-
-vtkIdType vtkNPRReferenceMask::GetNumberOfRayCasts() const
-{
-  return this->Internal->RayCasts;
 }
 
 vtkIdType vtkNPRReferenceMask::GetNumberOfVisibleSamples() const
@@ -274,88 +245,46 @@ vtkIdType vtkNPRReferenceMask::GetNumberOfLinePixels() const
   return this->Internal->LinePixels;
 }
 
-double vtkNPRReferenceMask::GetLinesTime() const
-{
-  return this->Internal->LinesTime;
-}
-
-double vtkNPRReferenceMask::GetLocatorTime() const
-{
-  return this->Internal->LocatorTime;
-}
-
-double vtkNPRReferenceMask::GetVisibilityTime() const
-{
-  return this->Internal->VisibilityTime;
-}
-
-vtkIdType vtkNPRReferenceMask::GetNumberOfLocatorBuilds() const
-{
-  return this->Internal->Scene.GetNumberOfLocatorBuilds();
-}
-
 vtkIdType vtkNPRReferenceMask::GetNumberOfAdjacencyBuilds() const
 {
-  return this->Internal->Scene.GetNumberOfAdjacencyBuilds();
+  return this->GetScene().GetNumberOfAdjacencyBuilds();
 }
 
 bool vtkNPRReferenceMask::Update()
 {
   Internals& internal = *this->Internal;
   internal.Clear();
-  if (!this->Renderer)
-  {
-    vtkErrorMacro("no renderer");
-    return false;
-  }
   int width, height;
-  if (!vtkNPRImageSize(this->Renderer, this->Size, width, height))
+  if (!this->StartUpdate(width, height))
   {
-    vtkErrorMacro("no size: set Size or put the renderer in a window with a size");
     return false;
   }
   unsigned char* pixels = internal.ClearMask(width, height);
-
-  vtkNPRSceneLines::Settings settings;
-  settings.Silhouettes = this->Silhouettes;
-  settings.Creases = this->Creases;
-  settings.Boundaries = this->Boundaries;
-  settings.NonManifoldEdges = this->NonManifoldEdges;
-  settings.CreaseAngle = this->CreaseAngle;
-  settings.SmoothContours = this->SmoothContours;
-  settings.Intersections = this->Creases && this->IntersectionCurves;
-  internal.UpdateScene(this->Renderer, settings, this->TrianglesPerLocator);
+  this->UpdateScene(this->SmoothContours, this->IntersectionCurves, this->TrianglesPerLocator);
+  const vtkNPRSceneLines& scene = this->GetScene();
 
   // Visibility: samples along each segment's image, a ray for each.
   Clock::time_point start = Clock::now();
   vtkNPRSceneView view;
   view.Set(this->Renderer->GetActiveCamera(), width, height);
-  Sampler sampler(view, internal.Scene.GetOccluders(), pixels, this->SampleSpacing,
-    this->OcclusionEpsilon, this->GenerateVisibleLines);
-  for (const vtkNPRSceneLines::Segment& segment : internal.Scene.GetSegments())
+  Sampler sampler(view, scene.GetOccluders(), pixels, this->SampleSpacing, this->OcclusionEpsilon,
+    this->GenerateVisibleLines);
+  for (const vtkNPRSceneLines::Segment& segment : scene.GetSegments())
   {
     sampler.Sample(segment);
   }
   internal.Collect(sampler, this->GenerateVisibleLines);
-  internal.VisibilityTime = Seconds(start);
+  this->RayCasts = sampler.RayCasts;
+  this->VisibilityTime = Seconds(start);
   return true;
 }
 
 void vtkNPRReferenceMask::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Renderer: " << this->Renderer << "\n";
-  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
-  os << indent << "Silhouettes: " << this->Silhouettes << "\n";
-  os << indent << "Creases: " << this->Creases << "\n";
   os << indent << "IntersectionCurves: " << this->IntersectionCurves << "\n";
-  os << indent << "Boundaries: " << this->Boundaries << "\n";
-  os << indent << "NonManifoldEdges: " << this->NonManifoldEdges << "\n";
-  os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";
   os << indent << "SmoothContours: " << this->SmoothContours << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
-  os << indent << "OcclusionEpsilon: " << this->OcclusionEpsilon << "\n";
   os << indent << "GenerateVisibleLines: " << this->GenerateVisibleLines << "\n";
   os << indent << "TrianglesPerLocator: " << this->TrianglesPerLocator << "\n";
-  os << indent << "NumberOfLocatorBuilds: " << this->GetNumberOfLocatorBuilds() << "\n";
 }

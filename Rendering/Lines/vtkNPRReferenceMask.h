@@ -73,54 +73,19 @@
 #define vtkNPRReferenceMask_h
 
 #include "vtkFiltersNPRModule.h" // for export macro
-#include "vtkObject.h"
+#include "vtkNPRRendererLines.h"
 
 #include <memory> // for std::unique_ptr
 
 class vtkImageData;
 class vtkPolyData;
-class vtkRenderer;
 
-class VTKFILTERSNPR_EXPORT vtkNPRReferenceMask : public vtkObject
+class VTKFILTERSNPR_EXPORT vtkNPRReferenceMask : public vtkNPRRendererLines
 {
 public:
   static vtkNPRReferenceMask* New();
-  vtkTypeMacro(vtkNPRReferenceMask, vtkObject);
+  vtkTypeMacro(vtkNPRReferenceMask, vtkNPRRendererLines);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * The renderer whose camera and actors are used.
-   */
-  virtual void SetRenderer(vtkRenderer* renderer);
-  vtkGetObjectMacro(Renderer, vtkRenderer);
-  ///@}
-
-  ///@{
-  /**
-   * The mask's size in pixels; 0, 0 (the default): the renderer's size in its window.
-   */
-  vtkSetVector2Macro(Size, int);
-  vtkGetVector2Macro(Size, int);
-  ///@}
-
-  ///@{
-  /**
-   * The line types (all on by default), as in vtkNPRFeatureLines.
-   */
-  vtkSetMacro(Silhouettes, bool);
-  vtkGetMacro(Silhouettes, bool);
-  vtkBooleanMacro(Silhouettes, bool);
-  vtkSetMacro(Creases, bool);
-  vtkGetMacro(Creases, bool);
-  vtkBooleanMacro(Creases, bool);
-  vtkSetMacro(Boundaries, bool);
-  vtkGetMacro(Boundaries, bool);
-  vtkBooleanMacro(Boundaries, bool);
-  vtkSetMacro(NonManifoldEdges, bool);
-  vtkGetMacro(NonManifoldEdges, bool);
-  vtkBooleanMacro(NonManifoldEdges, bool);
-  ///@}
 
   ///@{
   /**
@@ -134,15 +99,6 @@ public:
   vtkSetMacro(IntersectionCurves, bool);
   vtkGetMacro(IntersectionCurves, bool);
   vtkBooleanMacro(IntersectionCurves, bool);
-  ///@}
-
-  ///@{
-  /**
-   * The angle between face normals, in degrees, above which an edge is a crease (default 30,
-   * vtkNPREdgePass's default; clamped to [0, 180]).
-   */
-  vtkSetClampMacro(CreaseAngle, double, 0.0, 180.0);
-  vtkGetMacro(CreaseAngle, double);
   ///@}
 
   ///@{
@@ -164,15 +120,6 @@ public:
    */
   vtkSetClampMacro(SampleSpacing, double, 0.01, 0.25);
   vtkGetMacro(SampleSpacing, double);
-  ///@}
-
-  ///@{
-  /**
-   * How much of the segment from the near plane to a sample is left untested at the sample's
-   * end, relative to its length (default 1e-6, clamped to [0, 0.01]).
-   */
-  vtkSetClampMacro(OcclusionEpsilon, double, 0.0, 0.01);
-  vtkGetMacro(OcclusionEpsilon, double);
   ///@}
 
   ///@{
@@ -200,7 +147,7 @@ public:
    * Computes the mask (and the visible lines). False, with an error, when there is no renderer
    * or no size.
    */
-  bool Update();
+  bool Update() override;
 
   /**
    * The mask of the last Update(): Size, unsigned char, 255 on lines, row 0 at the bottom.
@@ -215,23 +162,13 @@ public:
 
   ///@{
   /**
-   * What the last Update() did.
+   * What the last Update() did besides vtkNPRRendererLines's counts (whose rays are the
+   * samples tested by a ray).
    */
-  vtkIdType GetNumberOfFeatureEdges() const;   // line segments of all actors
   vtkIdType GetNumberOfSamples() const;        // samples inside the view
-  vtkIdType GetNumberOfRayCasts() const;       // samples tested by a ray
   vtkIdType GetNumberOfVisibleSamples() const; // tested samples that nothing hides
   vtkIdType GetNumberOfLinePixels() const;     // pixels set in the mask
-  double GetLinesTime() const;                 // seconds finding the feature lines
-  double GetLocatorTime() const;               // seconds building the occlusion structure
-  double GetVisibilityTime() const;            // seconds sampling and casting rays
   ///@}
-
-  /**
-   * How many times the occlusion structure (all actors' triangles, located) has been built:
-   * again only when an actor's mesh or matrix, the set of actors or TrianglesPerLocator changed.
-   */
-  vtkIdType GetNumberOfLocatorBuilds() const;
 
   /**
    * The sum of the adjacency builds of the actors' vtkNPRFeatureLines (each mesh once while it
@@ -243,17 +180,9 @@ protected:
   vtkNPRReferenceMask();
   ~vtkNPRReferenceMask() override;
 
-  vtkRenderer* Renderer = nullptr;
-  int Size[2] = { 0, 0 };
-  bool Silhouettes = true;
-  bool Creases = true;
-  bool Boundaries = true;
-  bool NonManifoldEdges = true;
-  double CreaseAngle = 30.0;
   bool IntersectionCurves = true;
   bool SmoothContours = false;
   double SampleSpacing = 0.25;
-  double OcclusionEpsilon = 1e-6;
   bool GenerateVisibleLines = false;
   int TrianglesPerLocator = 16384;
 

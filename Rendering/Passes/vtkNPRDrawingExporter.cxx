@@ -445,15 +445,7 @@ bool vtkNPRDrawingExporter::ComputeStrokes(const Target& target)
   vtkNPRDrawingLines* lines = this->Internal->Lines = target.Lines;
   lines->SetRenderer(target.Renderer);
   lines->SetSize(target.Width, target.Height);
-  lines->SetSilhouettes(style.Silhouettes);
-  lines->SetBoundaries(style.Silhouettes);
-  lines->SetCreases(style.Creases);
-  lines->SetNonManifoldEdges(style.Creases);
-  if (target.Edges)
-  {
-    lines->SetCreaseAngle(target.Edges->GetCreaseAngle());
-  }
-  lines->SetHiddenLines(style.HiddenLines);
+  vtkNPRSelectStrokeLines(lines, style, target.Edges);
   const bool updated = lines->Update();
   if (lines != this->Internal->OwnLines.Get())
   {

@@ -123,12 +123,8 @@ bool vtkNPRDrawingPass::UpdateStrokes(vtkRenderer* renderer, int width, int heig
   vtkNPRDrawingLines* lines = internal.Lines;
   lines->SetRenderer(renderer);
   lines->SetSize(width, height);
-  lines->SetSilhouettes(this->EdgePass->GetSilhouettes());
-  lines->SetBoundaries(this->EdgePass->GetSilhouettes());
-  lines->SetCreases(this->EdgePass->GetCreases());
-  lines->SetNonManifoldEdges(this->EdgePass->GetCreases());
-  lines->SetCreaseAngle(this->EdgePass->GetCreaseAngle());
-  lines->SetHiddenLines(this->HiddenLines);
+  const vtkNPRStrokeStyle style = vtkNPRMakeStrokeStyle(this, this->EdgePass, renderer);
+  vtkNPRSelectStrokeLines(lines, style, this->EdgePass);
   const bool updated = lines->Update();
   // Not kept: the renderer holds this pass, so a reference back would be a cycle (a leak).
   lines->SetRenderer(nullptr);
@@ -136,7 +132,6 @@ bool vtkNPRDrawingPass::UpdateStrokes(vtkRenderer* renderer, int width, int heig
   {
     return false;
   }
-  const vtkNPRStrokeStyle style = vtkNPRMakeStrokeStyle(this, this->EdgePass, renderer);
   std::string error;
   if (!vtkNPRRasterizeStrokes(lines->GetStrokes(), style, width, height, internal.Pixels, error))
   {

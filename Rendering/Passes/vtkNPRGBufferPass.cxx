@@ -51,7 +51,6 @@ struct vtkNPRGBufferPass::Internals
 };
 
 vtkStandardNewMacro(vtkNPRGBufferPass);
-vtkCxxSetObjectMacro(vtkNPRGBufferPass, DelegatePass, vtkRenderPass);
 
 vtkNPRGBufferPass::vtkNPRGBufferPass()
   : Internal(new Internals)
@@ -62,7 +61,6 @@ vtkNPRGBufferPass::vtkNPRGBufferPass()
 
 vtkNPRGBufferPass::~vtkNPRGBufferPass()
 {
-  this->SetDelegatePass(nullptr);
   this->InverseProjection->Delete();
   // Texture and framebuffer objects free their OpenGL names through the window's resource
   // callbacks when their context is still alive.
@@ -201,17 +199,9 @@ int vtkNPRGBufferPass::GetEncodingFromName(const char* name)
 
 void vtkNPRGBufferPass::Render(const vtkRenderState* state)
 {
-  vtkOpenGLClearErrorMacro();
-  this->NumberOfRenderedProps = 0;
-  if (!this->DelegatePass)
+  if (!this->StartRender(state))
   {
-    vtkWarningMacro("no delegate pass: nothing drawn");
-    return;
-  }
-  this->LastRenderWasSelection = vtkNPRRenderSelection(state, this->NumberOfRenderedProps);
-  if (this->LastRenderWasSelection)
-  {
-    return; // a picking render: no G-buffer
+    return; // no delegate, or a picking render: no G-buffer
   }
   int width = 0, height = 0;
   GetTargetSize(state, width, height);
@@ -515,17 +505,9 @@ bool vtkNPRGBufferPass::SetShaderParameters(
   return true;
 }
 
-vtkMTimeType vtkNPRGBufferPass::GetShaderStageMTime()
-{
-  return this->ShaderStageTime.GetMTime();
-}
-
 void vtkNPRGBufferPass::ReleaseGraphicsResources(vtkWindow* window)
 {
-  if (this->DelegatePass)
-  {
-    this->DelegatePass->ReleaseGraphicsResources(window);
-  }
+  this->Superclass::ReleaseGraphicsResources(window);
   for (vtkTextureObject** texture :
     { &this->ColorTexture, &this->GeometryTexture, &this->DepthTexture })
   {
@@ -586,7 +568,6 @@ void vtkNPRGBufferPass::GetViewRay(float origin[3], float perPixelX[3], float pe
 void vtkNPRGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "DelegatePass: " << this->DelegatePass << "\n";
   os << indent << "NormalsRequested: " << this->NormalsRequested << "\n";
   os << indent << "ObjectIdsRequested: " << this->ObjectIdsRequested << "\n";
   os << indent << "FaceNormalsRequested: " << this->FaceNormalsRequested << "\n";

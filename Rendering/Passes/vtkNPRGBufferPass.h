@@ -65,9 +65,8 @@
 #ifndef vtkNPRGBufferPass_h
 #define vtkNPRGBufferPass_h
 
-#include "vtkOpenGLRenderPass.h"
+#include "vtkNPRGeometryPass.h"
 #include "vtkRenderingNPRModule.h" // for export macro
-#include "vtkTimeStamp.h"          // for vtkTimeStamp
 
 #include <memory> // for std::unique_ptr
 
@@ -77,23 +76,15 @@ class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkTextureObject;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRGBufferPass : public vtkOpenGLRenderPass
+class VTKRENDERINGNPR_EXPORT vtkNPRGBufferPass : public vtkNPRGeometryPass
 {
 public:
   static vtkNPRGBufferPass* New();
-  vtkTypeMacro(vtkNPRGBufferPass, vtkOpenGLRenderPass);
+  vtkTypeMacro(vtkNPRGBufferPass, vtkNPRGeometryPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   void Render(const vtkRenderState* state) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
-
-  ///@{
-  /**
-   * The pass that draws the geometry (normally a vtkOpaquePass).
-   */
-  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
-  virtual void SetDelegatePass(vtkRenderPass* pass);
-  ///@}
 
   ///@{
   /**
@@ -248,7 +239,6 @@ public:
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* vao = nullptr) override;
-  vtkMTimeType GetShaderStageMTime() override;
 
 protected:
   vtkNPRGBufferPass();
@@ -272,7 +262,6 @@ protected:
   void DeriveGeometryFromDepth(vtkOpenGLRenderWindow* window, int width, int height);
   void CopyBack(const vtkRenderState* state, int width, int height);
 
-  vtkRenderPass* DelegatePass = nullptr;
   bool NormalsRequested = false;
   bool ObjectIdsRequested = false;
   bool FaceNormalsRequested = false;
@@ -294,11 +283,9 @@ protected:
   bool DepthRemapped = false;
   float DepthRemap[2] = { 0, 1 };
   bool Perspective = true;
-  bool LastRenderWasSelection = false;
   int NumberOfGeometryDraws = 0;
   bool HasLinePrimitives = false;
   unsigned long ContentVersion = 0;
-  vtkTimeStamp ShaderStageTime; // the injected shader code changed
   float Viewport[4] = { 0, 0, 1, 1 };
   int ContentRectangle[4] = { 0, 0, 0, 0 };
 

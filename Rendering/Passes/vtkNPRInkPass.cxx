@@ -28,7 +28,6 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkNPRInkPass);
-vtkCxxSetObjectMacro(vtkNPRInkPass, DelegatePass, vtkRenderPass);
 
 namespace
 {
@@ -58,10 +57,7 @@ vtkNPRInkPass::vtkNPRInkPass()
 {
 }
 
-vtkNPRInkPass::~vtkNPRInkPass()
-{
-  this->SetDelegatePass(nullptr);
-}
+vtkNPRInkPass::~vtkNPRInkPass() {}
 
 double vtkNPRInkPass::GetEffectiveLineWidth(vtkRenderer* renderer) const
 {
@@ -70,16 +66,9 @@ double vtkNPRInkPass::GetEffectiveLineWidth(vtkRenderer* renderer) const
 
 void vtkNPRInkPass::Render(const vtkRenderState* state)
 {
-  vtkOpenGLClearErrorMacro();
-  this->NumberOfRenderedProps = 0;
-  if (!this->DelegatePass)
+  if (!this->StartRender(state))
   {
-    vtkWarningMacro("no delegate pass: nothing drawn");
-    return;
-  }
-  if (vtkNPRRenderSelection(state, this->NumberOfRenderedProps))
-  {
-    return; // a picking render
+    return; // no delegate, or a picking render
   }
   vtkRenderer* renderer = state->GetRenderer();
   // Half of the wireframe lies under the front faces: draw it twice the visible width.
@@ -231,16 +220,12 @@ bool vtkNPRInkPass::SetShaderParameters(
 void vtkNPRInkPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->WidestLine = 0.0; // the next context is asked again
-  if (this->DelegatePass)
-  {
-    this->DelegatePass->ReleaseGraphicsResources(window);
-  }
+  this->Superclass::ReleaseGraphicsResources(window);
 }
 
 void vtkNPRInkPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "DelegatePass: " << this->DelegatePass << "\n";
   os << indent << "LineWidth: " << this->LineWidth << "\n";
   os << indent << "InkColor: " << this->InkColor[0] << " " << this->InkColor[1] << " "
      << this->InkColor[2] << "\n";

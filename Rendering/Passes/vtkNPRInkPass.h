@@ -41,7 +41,7 @@
 #ifndef vtkNPRInkPass_h
 #define vtkNPRInkPass_h
 
-#include "vtkOpenGLRenderPass.h"
+#include "vtkNPRGeometryPass.h"
 #include "vtkRenderingNPRModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
@@ -51,23 +51,15 @@ class vtkRenderer;
 class vtkOpenGLState;
 class vtkNPRShaderHook;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRInkPass : public vtkOpenGLRenderPass
+class VTKRENDERINGNPR_EXPORT vtkNPRInkPass : public vtkNPRGeometryPass
 {
 public:
   static vtkNPRInkPass* New();
-  vtkTypeMacro(vtkNPRInkPass, vtkOpenGLRenderPass);
+  vtkTypeMacro(vtkNPRInkPass, vtkNPRGeometryPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   void Render(const vtkRenderState* state) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
-
-  ///@{
-  /**
-   * The pass that draws the geometry (normally a vtkOpaquePass).
-   */
-  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
-  virtual void SetDelegatePass(vtkRenderPass* pass);
-  ///@}
 
   ///@{
   /**
@@ -126,7 +118,6 @@ protected:
     DrawMaskFill = 2 // CoverageOnly: faces black
   };
 
-  vtkRenderPass* DelegatePass = nullptr;
   double LineWidth = 1.5;
   double InkColor[3] = { 0.0, 0.0, 0.0 };
   bool CoverageOnly = false;

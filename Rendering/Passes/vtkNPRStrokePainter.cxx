@@ -6,6 +6,7 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkNPRDrawingLines.h"
 #include "vtkNPRDrawingPass.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRPassUtilities.h"
@@ -111,6 +112,21 @@ vtkNPRStrokeStyle vtkNPRMakeStrokeStyle(
   style.DashLength = dash * scale;
   style.GapLength = gap * scale;
   return style;
+}
+
+void vtkNPRSelectStrokeLines(
+  vtkNPRDrawingLines* lines, const vtkNPRStrokeStyle& style, vtkNPREdgePass* edges)
+{
+  vtkNPRLineSettings* settings = lines->GetLineSettings();
+  settings->SetSilhouettes(style.Silhouettes);
+  settings->SetBoundaries(style.Silhouettes);
+  settings->SetCreases(style.Creases);
+  settings->SetNonManifoldEdges(style.Creases);
+  if (edges)
+  {
+    settings->SetCreaseAngle(edges->GetCreaseAngle());
+  }
+  lines->SetHiddenLines(style.HiddenLines);
 }
 
 namespace

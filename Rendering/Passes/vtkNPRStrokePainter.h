@@ -13,6 +13,7 @@
 #include <vector> // for the image
 
 typedef struct _cairo cairo_t;
+class vtkNPRDrawingLines;
 class vtkNPRDrawingPass;
 class vtkNPREdgePass;
 class vtkPolyData;
@@ -37,6 +38,11 @@ struct vtkNPRStrokeStyle
 // renderer's DPI / 72 and tile scale). Either pass may be null: defaults for its part.
 vtkNPRStrokeStyle vtkNPRMakeStrokeStyle(
   vtkNPRDrawingPass* drawing, vtkNPREdgePass* edges, vtkRenderer* renderer);
+
+// Asks `lines` for the strokes `style` draws: its Silhouettes as silhouettes and boundaries, its
+// Creases as creases and non-manifold edges, its HiddenLines; with an edge pass, its crease angle.
+void vtkNPRSelectStrokeLines(
+  vtkNPRDrawingLines* lines, const vtkNPRStrokeStyle& style, vtkNPREdgePass* edges);
 
 // Rasterises the strokes (ImageCoordinates, FeatureType, Hidden) over a transparent image of
 // width x height: premultiplied RGBA, 8 bits each, row 0 at the bottom (OpenGL's order).

@@ -58,7 +58,6 @@ struct vtkNPRToonPass::Internals
 };
 
 vtkStandardNewMacro(vtkNPRToonPass);
-vtkCxxSetObjectMacro(vtkNPRToonPass, DelegatePass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkNPRToonPass, Table, vtkScalarsToColors);
 
 vtkNPRToonPass::vtkNPRToonPass()
@@ -69,7 +68,6 @@ vtkNPRToonPass::vtkNPRToonPass()
 
 vtkNPRToonPass::~vtkNPRToonPass()
 {
-  this->SetDelegatePass(nullptr);
   this->SetTable(nullptr);
   if (this->Internal->TableTexture)
   {
@@ -217,16 +215,9 @@ void vtkNPRToonPass::UpdateLights(const vtkRenderState* state)
 
 void vtkNPRToonPass::Render(const vtkRenderState* state)
 {
-  vtkOpenGLClearErrorMacro();
-  this->NumberOfRenderedProps = 0;
-  if (!this->DelegatePass)
+  if (!this->StartRender(state))
   {
-    vtkWarningMacro("no delegate pass: nothing drawn");
-    return;
-  }
-  if (vtkNPRRenderSelection(state, this->NumberOfRenderedProps))
-  {
-    return; // a picking render
+    return; // no delegate, or a picking render
   }
   vtkRenderer* renderer = state->GetRenderer();
 
@@ -369,17 +360,9 @@ bool vtkNPRToonPass::SetShaderParameters(
   return true;
 }
 
-vtkMTimeType vtkNPRToonPass::GetShaderStageMTime()
-{
-  return this->ShaderStageTime.GetMTime();
-}
-
 void vtkNPRToonPass::ReleaseGraphicsResources(vtkWindow* window)
 {
-  if (this->DelegatePass)
-  {
-    this->DelegatePass->ReleaseGraphicsResources(window);
-  }
+  this->Superclass::ReleaseGraphicsResources(window);
   if (this->Internal->TableTexture)
   {
     this->Internal->TableTexture->ReleaseGraphicsResources(window);
@@ -391,7 +374,6 @@ void vtkNPRToonPass::ReleaseGraphicsResources(vtkWindow* window)
 void vtkNPRToonPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "DelegatePass: " << this->DelegatePass << "\n";
   os << indent << "NumberOfBands: " << this->NumberOfBands << "\n";
   os << indent << "Table: " << this->Table << "\n";
   os << indent << "PerVertex: " << this->PerVertex << "\n";

@@ -40,31 +40,22 @@
 #ifndef vtkNPRToonPass_h
 #define vtkNPRToonPass_h
 
-#include "vtkOpenGLRenderPass.h"
+#include "vtkNPRGeometryPass.h"
 #include "vtkRenderingNPRModule.h" // for export macro
-#include "vtkTimeStamp.h"          // for vtkTimeStamp
 
 #include <memory> // for std::unique_ptr
 
 class vtkScalarsToColors;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRToonPass : public vtkOpenGLRenderPass
+class VTKRENDERINGNPR_EXPORT vtkNPRToonPass : public vtkNPRGeometryPass
 {
 public:
   static vtkNPRToonPass* New();
-  vtkTypeMacro(vtkNPRToonPass, vtkOpenGLRenderPass);
+  vtkTypeMacro(vtkNPRToonPass, vtkNPRGeometryPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   void Render(const vtkRenderState* state) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
-
-  ///@{
-  /**
-   * The pass that draws the geometry (normally a vtkOpaquePass).
-   */
-  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
-  virtual void SetDelegatePass(vtkRenderPass* pass);
-  ///@}
 
   ///@{
   /**
@@ -125,7 +116,6 @@ public:
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* vao = nullptr) override;
-  vtkMTimeType GetShaderStageMTime() override;
 
 protected:
   vtkNPRToonPass();
@@ -134,12 +124,10 @@ protected:
   void UpdateTable(vtkWindow* window);
   void UpdateLights(const vtkRenderState* state);
 
-  vtkRenderPass* DelegatePass = nullptr;
   vtkScalarsToColors* Table = nullptr;
   int NumberOfBands = 3;
   bool PerVertex = false;
   bool Specular = true;
-  vtkTimeStamp ShaderStageTime;
 
 private:
   vtkNPRToonPass(const vtkNPRToonPass&) = delete;

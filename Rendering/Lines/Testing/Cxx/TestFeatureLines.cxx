@@ -4,7 +4,8 @@
 // analytically: a box's creases; its silhouettes from chosen viewpoints, also through an actor
 // matrix; the boundaries of an open box and a non-manifold fin. The program's other cases:
 // TestFeatureLinesSides.cxx (adjacency reuse, exact sides), TestFeatureLinesSmooth.cxx and
-// TestFeatureLinesSmoothMeshes.cxx (smooth contours).
+// TestFeatureLinesSmoothMeshes.cxx (smooth contours), TestFeatureLinesSettings.cxx (the line
+// settings the filter, the reference mask and the drawing lines share).
 //
 // usage: TestFeatureLines CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprFeatureLineTesting.h"
