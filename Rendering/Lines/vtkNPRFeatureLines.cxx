@@ -173,10 +173,7 @@ void vtkNPRFeatureLines::SetCamera(vtkCamera* camera, vtkMatrix4x4* modelMatrix)
     vtkMatrix4x4::Invert(modelMatrix, inverse);
     inverse->MultiplyPoint(eye, eye);
     inverse->MultiplyPoint(direction, direction); // w = 0: a direction, no translation
-    for (int i = 0; i < 3; ++i)
-    {
-      eye[i] /= eye[3];
-    }
+    vtkNPRStore(vtkNPRVector(eye) / eye[3], eye);
   }
   this->SetEyePosition(eye);
   this->SetDirectionOfProjection(direction);

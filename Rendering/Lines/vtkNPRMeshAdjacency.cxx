@@ -8,6 +8,7 @@
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkNPRMeshAdjacencyInternals.h"
+#include "vtkNPRVectors.h"
 #include "vtkNPRSpatialOrder.h"
 #include "vtkObject.h"
 #include "vtkPoints.h"
@@ -258,7 +259,7 @@ void vtkNPRMeshAdjacency::MergePoints(const std::vector<unsigned char>& finite)
         [&](std::uint32_t other)
         {
           this->Mesh.GetPoint(other, y);
-          return x[0] == y[0] && x[1] == y[1] && x[2] == y[2];
+          return vtkNPRSamePoint(x, y);
         });
       if (same == distinct.end())
       {

@@ -30,13 +30,6 @@ glm::dvec3 ToFrame(const double x[3], const double center[3], double scale)
   return (vtkNPRVector(x) - vtkNPRVector(center)) * scale;
 }
 
-// Whether two corners are the same point: the same doubles (not glm's ==, which is not
-// exactly that for infinities).
-bool SamePoint(const double* a, const double* b)
-{
-  return std::equal(a, a + 3, b);
-}
-
 // How many of `count` triangles (ranges start at a group's start) go to a node's first child:
 // whole groups while there are several, so that a group is a subtree; within one, half.
 std::uint32_t FirstPart(std::uint32_t count, std::uint32_t group)
@@ -496,7 +489,7 @@ bool vtkNPROccluders::Hidden(const double fromWorld[3], const double toWorld[3],
   {
     for (int i = 0; i < ignoring; ++i)
     {
-      if (SamePoint(corner, ignoredPoints[i]))
+      if (vtkNPRSamePoint(corner, ignoredPoints[i]))
       {
         return true;
       }
@@ -586,7 +579,7 @@ void vtkNPROccluders::CrossingsOf(std::uint32_t position, std::vector<Crossing>&
       {
         for (int v = 0; v < 3 && !neighbours; ++v)
         {
-          neighbours = SamePoint(a[u], b[v]);
+          neighbours = vtkNPRSamePoint(a[u], b[v]);
         }
       }
       Crossing crossing;

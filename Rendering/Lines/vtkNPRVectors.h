@@ -8,6 +8,8 @@
 #ifndef vtkNPRVectors_h
 #define vtkNPRVectors_h
 
+#include <algorithm> // for std::equal
+
 #include <glm/geometric.hpp>    // for glm::cross, glm::dot, glm::length
 #include <glm/gtc/type_ptr.hpp> // for glm::value_ptr
 #include <glm/vec3.hpp>         // for glm::dvec3, glm::vec3
@@ -24,6 +26,13 @@ inline void vtkNPRStore(const glm::dvec3& v, double* out)
   out[0] = v.x;
   out[1] = v.y;
   out[2] = v.z;
+}
+
+// Whether a and b are the same point: the same doubles, -0 and +0 alike (not glm's ==, which
+// takes two equal infinities for different).
+inline bool vtkNPRSamePoint(const double* a, const double* b)
+{
+  return std::equal(a, a + 3, b);
 }
 
 // a + t (b - a): exactly a at t = 0 (glm::mix's a (1 - t) + b t rounds otherwise).
