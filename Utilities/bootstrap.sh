@@ -53,10 +53,10 @@ fi
 source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${NPR_BUILD_DIR:-$source_dir/build}
 
-# VTK 9.1 with its Python bindings, EGL with Mesa's software renderer, OSMesa, the toolchain, and
-# Xvfb for the tests of VTK's own X window.
+# VTK 9.1 with its Python bindings, EGL with Mesa's software renderer, OSMesa, Cairo, GLM (the
+# lines' vector algebra, header only), the toolchain, and Xvfb for the tests of VTK's own X window.
 packages=(libvtk9-dev python3-vtk9 libegl-dev libegl-mesa0 libgl1-mesa-dri libopengl-dev
-  libosmesa6-dev libcairo2-dev cmake ninja-build g++ xvfb xauth)
+  libosmesa6-dev libcairo2-dev libglm-dev cmake ninja-build g++ xvfb xauth)
 # debootstrap for the chroots of the other releases (installed here, before their set-ups start
 # side by side).
 # dpkg-dev and file for CPack's Debian packages (dpkg-shlibdeps); xdotool to drive npr-view;

@@ -57,10 +57,11 @@ source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 base=${NPR_CHROOT_BASE:-/var/cache/vtknpr}
 
 # What every chroot needs to build and test: the toolchain, Mesa's EGL (software), Xvfb, Cairo
-# (the passes paint the drawing style's strokes with it); and to make Debian packages with CPack
+# (the passes paint the drawing style's strokes with it), GLM (the lines' vector algebra, header
+# only; the ParaView plugin compiles the lines too); and to make Debian packages with CPack
 # (dpkg-shlibdeps, file).
 common=(cmake ninja-build g++ ccache xvfb xauth libegl-mesa0 libgl1-mesa-dri libopengl-dev
-  libcairo2-dev dpkg-dev file)
+  libcairo2-dev libglm-dev dpkg-dev file)
 # VTK and its Python bindings; EGL's development files for the module's own EGL window (VTK < 9.4);
 # xdotool to drive npr-view in its test; rsvg-convert and pdftoppm to rasterise the exported SVG and
 # PDF drawings in theirs. The ParaView plugin compiles the passes and lines only and needs none of

@@ -9,6 +9,7 @@
 #include "vtkIntArray.h"
 #include "vtkNPRFeatureLines.h"
 #include "vtkNPRSceneLines.h"
+#include "vtkNPRVectors.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -89,10 +90,7 @@ void PointAt(const vtkNPRSceneView& view, const vtkNPRSceneLines::Segment& segme
   const ClippedEdge& clipped, double s, double p[3])
 {
   const double t = view.ParameterAt(segment.A, segment.B, clipped.T0, clipped.T1, s);
-  for (int i = 0; i < 3; ++i)
-  {
-    p[i] = segment.A[i] + t * (segment.B[i] - segment.A[i]);
-  }
+  vtkNPRPointAt(segment.A, segment.B, t, p);
 }
 
 // A span too short to see goes to its neighbours (an edge ending on a silhouette is visible only

@@ -13,6 +13,7 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNPRMeshAdjacency.h"
+#include "vtkNPRVectors.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -82,11 +83,10 @@ void AddContours(const vtkNPRMeshAdjacency& adjacency, vtkPoints* points, vtkCel
     }
     const double ga = contours.GetFacing(a), gb = contours.GetFacing(b);
     const double t = ga / (ga - gb); // the signs differ: in [0, 1]
-    double pa[3], pb[3];
+    double pa[3], pb[3], x[3];
     adjacency.GetMesh().GetPoint(a, pa);
     adjacency.GetMesh().GetPoint(b, pb);
-    const double x[3] = { pa[0] + t * (pb[0] - pa[0]), pa[1] + t * (pb[1] - pa[1]),
-      pa[2] + t * (pb[2] - pa[2]) };
+    vtkNPRPointAt(pa, pb, t, x);
     const vtkIdType id = points->InsertNextPoint(x);
     edgePoints.emplace(key, id);
     return id;
@@ -173,10 +173,7 @@ void vtkNPRFeatureLines::SetCamera(vtkCamera* camera, vtkMatrix4x4* modelMatrix)
     vtkMatrix4x4::Invert(modelMatrix, inverse);
     inverse->MultiplyPoint(eye, eye);
     inverse->MultiplyPoint(direction, direction); // w = 0: a direction, no translation
-    for (int i = 0; i < 3; ++i)
-    {
-      eye[i] /= eye[3];
-    }
+    vtkNPRStore(vtkNPRVector(eye) / eye[3], eye);
   }
   this->SetEyePosition(eye);
   this->SetDirectionOfProjection(direction);

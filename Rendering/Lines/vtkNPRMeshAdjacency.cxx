@@ -7,9 +7,9 @@
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
-#include "vtkMath.h"
 #include "vtkNPRMeshAdjacencyInternals.h"
 #include "vtkNPRSpatialOrder.h"
+#include "vtkNPRVectors.h"
 #include "vtkObject.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -259,7 +259,7 @@ void vtkNPRMeshAdjacency::MergePoints(const std::vector<unsigned char>& finite)
         [&](std::uint32_t other)
         {
           this->Mesh.GetPoint(other, y);
-          return x[0] == y[0] && x[1] == y[1] && x[2] == y[2];
+          return vtkNPRSamePoint(x, y);
         });
       if (same == distinct.end())
       {
@@ -391,31 +391,31 @@ void vtkNPRMeshAdjacency::MakeFaceView(
   vtkIdType n, vtkIdType size, const vtkIdType* ids, const double unit[3])
 {
   // The single-precision copy of the face's plane, and the bound of the test's error.
-  double single[3], q[3];
+  glm::dvec3 single;
   for (int k = 0; k < 3; ++k)
   {
     this->FaceNormals[k][n] = static_cast<float>(unit[k]);
     single[k] = this->FaceNormals[k][n];
   }
-  this->Mesh.GetPoint(ids[0], q);
-  const double fromCentre[3] = { q[0] - this->Centre[0], q[1] - this->Centre[1],
-    q[2] - this->Centre[2] };
-  const double offset = vtkMath::Dot(single, fromCentre);
+  double x[3];
+  this->Mesh.GetPoint(ids[0], x);
+  const glm::dvec3 q = vtkNPRVector(x);
+  const glm::dvec3 fromCentre = q - vtkNPRVector(this->Centre);
+  const double offset = glm::dot(single, fromCentre);
   this->FaceOffsets[n] = static_cast<float>(offset);
   // Its size, and how far its other points lie from the plane through q (rounding,
   // non-planarity).
   double extent = 0.0, offPlane = 0.0;
   for (vtkIdType i = 1; i < size; ++i)
   {
-    double p[3];
-    this->Mesh.GetPoint(ids[i], p);
-    const double d[3] = { p[0] - q[0], p[1] - q[1], p[2] - q[2] };
-    const double distance = std::sqrt(vtkMath::Dot(d, d));
+    this->Mesh.GetPoint(ids[i], x);
+    const glm::dvec3 d = vtkNPRVector(x) - q;
+    const double distance = glm::length(d);
     extent = std::max(extent, distance);
-    offPlane = std::max(offPlane, std::abs(vtkMath::Dot(unit, d)) + 1e-15 * distance);
+    offPlane = std::max(offPlane, std::abs(glm::dot(vtkNPRVector(unit), d)) + 1e-15 * distance);
   }
-  const double bound = std::abs(offset) + std::sqrt(vtkMath::Dot(fromCentre, fromCentre)) + extent +
-    offPlane / FaceSideTolerance;
+  const double bound =
+    std::abs(offset) + glm::length(fromCentre) + extent + offPlane / FaceSideTolerance;
   // As the float 2^(b - 127) at or above it, b its exponent byte (255: infinite).
   int exponent = 0;
   std::frexp(bound, &exponent);

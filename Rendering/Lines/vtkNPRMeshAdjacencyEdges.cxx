@@ -5,6 +5,7 @@
 #include "vtkNPRMeshAdjacency.h"
 
 #include "vtkNPRMeshAdjacencyInternals.h"
+#include "vtkNPRVectors.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
@@ -170,7 +171,7 @@ bool vtkNPRMeshAdjacency::SameCoordinates(std::uint32_t a, std::uint32_t b) cons
   double pa[3], pb[3];
   this->Mesh.GetPoint(a, pa);
   this->Mesh.GetPoint(b, pb);
-  return pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2];
+  return vtkNPRSamePoint(pa, pb);
 }
 
 void vtkNPRMeshAdjacency::MakeEdges(const std::vector<std::uint64_t>& uses,

@@ -6,8 +6,8 @@
 #ifndef vtkNPRMeshAdjacencyInternals_h
 #define vtkNPRMeshAdjacencyInternals_h
 
-#include "vtkMath.h"         // for vtkMath::Dot
 #include "vtkNPRMeshFaces.h" // for vtkNPRMeshFaces
+#include "vtkNPRVectors.h"   // for glm::dvec3
 #include "vtkType.h"         // for vtkIdType
 
 #include <algorithm> // for std::max
@@ -42,29 +42,26 @@ constexpr vtkIdType BlockSize = 16384;
 inline bool UnitNormal(
   const vtkNPRMeshFaces& mesh, vtkIdType size, const vtkIdType* ids, double unit[3])
 {
-  double normal[3] = { 0.0, 0.0, 0.0 }, size2 = 0.0, origin[3], p[3], q[3];
-  mesh.GetPoint(ids[0], origin);
-  mesh.GetPoint(ids[1], q);
+  glm::dvec3 normal(0.0);
+  double size2 = 0.0, x[3];
+  mesh.GetPoint(ids[0], x);
+  const glm::dvec3 origin = vtkNPRVector(x);
+  mesh.GetPoint(ids[1], x);
+  glm::dvec3 b = vtkNPRVector(x) - origin;
   for (vtkIdType i = 1; i + 1 < size; ++i)
   {
-    std::copy_n(q, 3, p);
-    mesh.GetPoint(ids[i + 1], q);
-    const double a[3] = { p[0] - origin[0], p[1] - origin[1], p[2] - origin[2] };
-    const double b[3] = { q[0] - origin[0], q[1] - origin[1], q[2] - origin[2] };
-    normal[0] += a[1] * b[2] - a[2] * b[1];
-    normal[1] += a[2] * b[0] - a[0] * b[2];
-    normal[2] += a[0] * b[1] - a[1] * b[0];
-    size2 = std::max(size2, std::max(vtkMath::Dot(a, a), vtkMath::Dot(b, b)));
+    const glm::dvec3 a = b;
+    mesh.GetPoint(ids[i + 1], x);
+    b = vtkNPRVector(x) - origin;
+    normal += glm::cross(a, b);
+    size2 = std::max(size2, std::max(glm::dot(a, a), glm::dot(b, b)));
   }
-  const double length = std::sqrt(vtkMath::Dot(normal, normal));
+  const double length = glm::length(normal);
   if (!(length > DegenerateNormal * size2) || !std::isfinite(length))
   {
     return false;
   }
-  for (int k = 0; k < 3; ++k)
-  {
-    unit[k] = normal[k] / length;
-  }
+  vtkNPRStore(normal / length, unit);
   return true;
 }
 }

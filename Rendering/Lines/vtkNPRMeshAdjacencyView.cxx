@@ -29,15 +29,10 @@ constexpr double AngleMargin = 1e-4;
 
 // The angle between two unit normals in degrees, the second flipped where the faces' windings
 // disagree; atan2 keeps small angles exact where acos of the dot product would lose them.
-double DihedralAngle(const double n0[3], const double normal1[3], bool flip)
+double DihedralAngle(const glm::dvec3& n0, const glm::dvec3& normal1, bool flip)
 {
-  double n1[3], cross[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    n1[k] = flip ? -normal1[k] : normal1[k];
-  }
-  vtkMath::Cross(n0, n1, cross);
-  return vtkMath::DegreesFromRadians(std::atan2(vtkMath::Norm(cross), vtkMath::Dot(n0, n1)));
+  const glm::dvec3 n1 = flip ? -normal1 : normal1;
+  return vtkMath::DegreesFromRadians(std::atan2(glm::length(glm::cross(n0, n1)), glm::dot(n0, n1)));
 }
 }
 
@@ -55,7 +50,8 @@ double vtkNPRMeshAdjacency::Angle(vtkIdType edge) const
   double n0[3], n1[3];
   this->FaceNormal(this->EdgeFaces[2 * edge], n0);
   this->FaceNormal(this->EdgeFaces[2 * edge + 1], n1);
-  return DihedralAngle(n0, n1, (this->EdgeKinds[edge] & SameDirection) != 0);
+  return DihedralAngle(
+    vtkNPRVector(n0), vtkNPRVector(n1), (this->EdgeKinds[edge] & SameDirection) != 0);
 }
 
 void vtkNPRMeshAdjacency::EdgePoints(vtkIdType edge, std::uint32_t& a, std::uint32_t& b) const
@@ -85,6 +81,11 @@ void vtkNPRMeshAdjacency::UpdateCreases(double angle)
   const double radians = vtkMath::RadiansFromDegrees(angle);
   const double cosAngle = std::cos(radians), sinAngle = std::sin(radians);
   const double margin = std::sin(vtkMath::RadiansFromDegrees(AngleMargin));
+  auto single = [this](std::uint32_t face) // the face's single-precision normal
+  {
+    return glm::dvec3(
+      this->FaceNormals[0][face], this->FaceNormals[1][face], this->FaceNormals[2][face]);
+  };
   vtkSMPTools::For(0, this->GetNumberOfEdges(),
     [&](vtkIdType first, vtkIdType last)
     {
@@ -95,15 +96,11 @@ void vtkNPRMeshAdjacency::UpdateCreases(double angle)
         if (kind & TwoFaces)
         {
           const double flip = (kind & SameDirection) ? -1.0 : 1.0;
-          double n0[3], n1[3], cross[3];
-          for (int k = 0; k < 3; ++k)
-          {
-            n0[k] = this->FaceNormals[k][this->EdgeFaces[2 * e]];
-            n1[k] = flip * this->FaceNormals[k][this->EdgeFaces[2 * e + 1]];
-          }
-          vtkMath::Cross(n0, n1, cross);
-          const double side = vtkMath::Norm(cross) * cosAngle - vtkMath::Dot(n0, n1) * sinAngle;
-          const double bound = margin * std::sqrt(vtkMath::Dot(n0, n0) * vtkMath::Dot(n1, n1));
+          const glm::dvec3 n0 = single(this->EdgeFaces[2 * e]);
+          const glm::dvec3 n1 = flip * single(this->EdgeFaces[2 * e + 1]);
+          const double side =
+            glm::length(glm::cross(n0, n1)) * cosAngle - glm::dot(n0, n1) * sinAngle;
+          const double bound = margin * std::sqrt(glm::dot(n0, n0) * glm::dot(n1, n1));
           crease = side > bound || (side >= -bound && this->Angle(e) > angle);
         }
         this->EdgeKinds[e] = static_cast<unsigned char>(kind | (crease ? Crease : 0));
@@ -122,15 +119,10 @@ void vtkNPRMeshAdjacency::ComputeFaceSides(bool parallel, const double view[3])
   const float* offsets = this->FaceOffsets.data();
   const std::uint8_t* bounds = this->FaceBounds.data();
   unsigned char* sides = this->FaceSides.data();
-  double toEye[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    toEye[k] = parallel ? view[k] : view[k] - this->Centre[k];
-  }
-  const float ex = static_cast<float>(toEye[0]), ey = static_cast<float>(toEye[1]),
-              ez = static_cast<float>(toEye[2]);
-  const float toEyeLength =
-    static_cast<float>(std::sqrt(vtkMath::Dot(toEye, toEye)) * (1.0 + 1e-6));
+  const glm::dvec3 toEye =
+    parallel ? vtkNPRVector(view) : vtkNPRVector(view) - vtkNPRVector(this->Centre);
+  const glm::vec3 eye(toEye);
+  const float toEyeLength = static_cast<float>(glm::length(toEye) * (1.0 + 1e-6));
   const float tolerance = static_cast<float>(FaceSideTolerance);
   vtkSMPThreadLocal<vtkIdType> unsure(0);
   // In float, in a loop the compiler vectorises: FaceSideTolerance covers float arithmetic.
@@ -140,7 +132,7 @@ void vtkNPRMeshAdjacency::ComputeFaceSides(bool parallel, const double view[3])
       int unsureHere = 0;
       for (vtkIdType f = first; f < last; ++f)
       {
-        const float projected = nx[f] * ex + ny[f] * ey + nz[f] * ez;
+        const float projected = glm::dot(glm::vec3(nx[f], ny[f], nz[f]), eye);
         // Perspective: n.(q - eye) = offset - n.(eye - c); parallel: n.direction.
         const float value = parallel ? projected : offsets[f] - projected;
         // The bound 2^(b - 127): the float whose exponent bits are b.
@@ -180,22 +172,17 @@ bool vtkNPRMeshAdjacency::IsSilhouette(vtkIdType edge, const View& view) const
   double n0[3], n1[3];
   this->FaceNormal(face0, n0);
   this->FaceNormal(face1, n1);
-  double f0, f1;
-  if (view.Parallel)
-  {
-    f0 = vtkMath::Dot(n0, view.Direction);
-    f1 = vtkMath::Dot(n1, view.Direction);
-  }
-  else
+  // The line of sight: parallel, the direction of projection; else from the eye to the point.
+  glm::dvec3 sight = vtkNPRVector(view.Direction);
+  if (!view.Parallel)
   {
     std::uint32_t a, b;
     this->EdgePoints(edge, a, b);
     double p[3];
     this->Mesh.GetPoint(a, p);
-    const double toPoint[3] = { p[0] - view.Eye[0], p[1] - view.Eye[1], p[2] - view.Eye[2] };
-    f0 = vtkMath::Dot(n0, toPoint);
-    f1 = vtkMath::Dot(n1, toPoint);
+    sight = vtkNPRVector(p) - vtkNPRVector(view.Eye);
   }
+  double f0 = glm::dot(vtkNPRVector(n0), sight), f1 = glm::dot(vtkNPRVector(n1), sight);
   if (same)
   {
     f1 = -f1;

@@ -5,6 +5,7 @@
 #include "vtkMath.h"
 #include "vtkNPRSpatialOrder.h"
 #include "vtkNPRTriangleTests.h"
+#include "vtkNPRVectors.h"
 #include "vtkPolyData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -22,6 +23,12 @@ constexpr std::uint32_t LeafSize = 8;
 // The nodes' boxes are widened by this much of the scene's size (1 in the frame): the box test
 // can only let through more segments than touch the triangles, never fewer.
 constexpr double BoxMargin = 1e-6;
+
+// World point x in the frame centred at `center` and scaled by `scale` (the scene's extent 1).
+glm::dvec3 ToFrame(const double x[3], const double center[3], double scale)
+{
+  return (vtkNPRVector(x) - vtkNPRVector(center)) * scale;
+}
 
 // How many of `count` triangles (ranges start at a group's start) go to a node's first child:
 // whole groups while there are several, so that a group is a subtree; within one, half.
@@ -142,10 +149,7 @@ void vtkNPROccluders::FramePoint(const Mesh& mesh, vtkIdType id, double x[3]) co
   double local[3];
   mesh.Faces.GetPoint(id, local);
   vtkNPRTransformPoint(mesh.Matrix.data(), local, x);
-  for (int k = 0; k < 3; ++k)
-  {
-    x[k] = (x[k] - this->FrameCenter[k]) * this->FrameScale;
-  }
+  vtkNPRStore(ToFrame(x, this->FrameCenter, this->FrameScale), x);
 }
 
 bool vtkNPROccluders::SceneTriangle(vtkIdType triangle, vtkIdType ids[3]) const
@@ -208,11 +212,9 @@ size_t vtkNPROccluders::SortTriangles(std::vector<double>& points)
           continue;
         }
         double centroid[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          centroid[k] =
-            (points[3 * ids[0] + k] + points[3 * ids[1] + k] + points[3 * ids[2] + k]) / 3.0;
-        }
+        const glm::dvec3 sum = vtkNPRVector(&points[3 * ids[0]]) +
+          vtkNPRVector(&points[3 * ids[1]]) + vtkNPRVector(&points[3 * ids[2]]);
+        vtkNPRStore(sum / 3.0, centroid);
         keys[t] = (this->MortonCode(centroid) << 32) | static_cast<std::uint64_t>(t);
       }
     });
@@ -487,23 +489,20 @@ bool vtkNPROccluders::Hidden(const double fromWorld[3], const double toWorld[3],
   {
     for (int i = 0; i < ignoring; ++i)
     {
-      const double* q = ignoredPoints[i];
-      if (corner[0] == q[0] && corner[1] == q[1] && corner[2] == q[2])
+      if (vtkNPRSamePoint(corner, ignoredPoints[i]))
       {
         return true;
       }
     }
     return false;
   };
-  double from[3], to[3], direction[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    from[k] = (fromWorld[k] - this->FrameCenter[k]) * this->FrameScale;
-    to[k] = (toWorld[k] - this->FrameCenter[k]) * this->FrameScale;
-    direction[k] = to[k] - from[k];
-  }
+  const glm::dvec3 from = ToFrame(fromWorld, this->FrameCenter, this->FrameScale);
+  const glm::dvec3 to = ToFrame(toWorld, this->FrameCenter, this->FrameScale);
+  const glm::dvec3 direction = to - from;
   return Traverse(
-    this->Nodes, [&](const Node& node) { return this->SegmentHitsNode(node, from, to); },
+    this->Nodes,
+    [&](const Node& node)
+    { return this->SegmentHitsNode(node, glm::value_ptr(from), glm::value_ptr(to)); },
     [&](std::uint32_t position)
     {
       const double* c[3];
@@ -580,18 +579,16 @@ void vtkNPROccluders::CrossingsOf(std::uint32_t position, std::vector<Crossing>&
       {
         for (int v = 0; v < 3 && !neighbours; ++v)
         {
-          neighbours = a[u][0] == b[v][0] && a[u][1] == b[v][1] && a[u][2] == b[v][2];
+          neighbours = vtkNPRSamePoint(a[u], b[v]);
         }
       }
       Crossing crossing;
       double p[3], q[3];
       if (!neighbours && vtkNPRCrossTriangles(a, b, p, q, crossing.Angle))
       {
-        for (int k = 0; k < 3; ++k)
-        {
-          crossing.A[k] = p[k] / this->FrameScale + this->FrameCenter[k];
-          crossing.B[k] = q[k] / this->FrameScale + this->FrameCenter[k];
-        }
+        const glm::dvec3 center = vtkNPRVector(this->FrameCenter);
+        vtkNPRStore(vtkNPRVector(p) / this->FrameScale + center, crossing.A);
+        vtkNPRStore(vtkNPRVector(q) / this->FrameScale + center, crossing.B);
         found.push_back(crossing);
       }
       return false; // on through every overlapping leaf

@@ -7,6 +7,7 @@
 #include "vtkImageData.h"
 #include "vtkNPRFeatureLines.h"
 #include "vtkNPRSceneLines.h"
+#include "vtkNPRVectors.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
@@ -95,10 +96,7 @@ public:
       const double t =
         this->View.ParameterAt(segment.A, segment.B, t0, t1, static_cast<double>(k) / steps);
       double p[3];
-      for (int i = 0; i < 3; ++i)
-      {
-        p[i] = segment.A[i] + t * (segment.B[i] - segment.A[i]);
-      }
+      vtkNPRPointAt(segment.A, segment.B, t, p);
       if (!this->SampleAt(p, segment))
       {
         this->Runs.End(segment.Type);

@@ -15,6 +15,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNPRFeatureLines.h"
+#include "vtkNPRVectors.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderer.h"
@@ -185,11 +186,8 @@ double vtkNPRSceneView::ImageLength(
   const double a[3], const double b[3], double t0, double t1) const
 {
   double p0[3], p1[3], i0[3], i1[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    p0[k] = a[k] + t0 * (b[k] - a[k]);
-    p1[k] = a[k] + t1 * (b[k] - a[k]);
-  }
+  vtkNPRPointAt(a, b, t0, p0);
+  vtkNPRPointAt(a, b, t1, p1);
   this->ToImage(p0, i0);
   this->ToImage(p1, i1);
   return std::hypot(i1[0] - i0[0], i1[1] - i0[1]);
@@ -197,15 +195,13 @@ double vtkNPRSceneView::ImageLength(
 
 void vtkNPRSceneView::Ray(const double p[3], double epsilon, double from[3], double to[3]) const
 {
-  const double toPoint[3] = { p[0] - this->Eye[0], p[1] - this->Eye[1], p[2] - this->Eye[2] };
-  const double depth = toPoint[0] * this->Direction[0] + toPoint[1] * this->Direction[1] +
-    toPoint[2] * this->Direction[2];
-  for (int i = 0; i < 3; ++i)
-  {
-    from[i] = this->Parallel ? p[i] - (depth - this->Range[0]) * this->Direction[i]
-                             : this->Eye[i] + toPoint[i] * (this->Range[0] / depth);
-    to[i] = from[i] + (1.0 - epsilon) * (p[i] - from[i]);
-  }
+  const glm::dvec3 point = vtkNPRVector(p), eye = vtkNPRVector(this->Eye);
+  const glm::dvec3 direction = vtkNPRVector(this->Direction), toPoint = point - eye;
+  const double depth = glm::dot(toPoint, direction);
+  const glm::dvec3 start = this->Parallel ? point - (depth - this->Range[0]) * direction
+                                          : eye + toPoint * (this->Range[0] / depth);
+  vtkNPRStore(start, from);
+  vtkNPRStore(vtkNPRPointAlong(start, point, 1.0 - epsilon), to);
 }
 
 vtkNPRSceneLines::vtkNPRSceneLines() = default;

@@ -3,9 +3,9 @@
 #include "vtkNPRSmoothContours.h"
 
 #include "vtkDataArray.h"
-#include "vtkMath.h"
 #include "vtkNPRMeshAdjacencyInternals.h"
 #include "vtkNPRMeshFaces.h"
+#include "vtkNPRVectors.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -79,12 +79,11 @@ void vtkNPRSmoothContours::MakeTables(const vtkNPRMeshFaces& mesh, vtkDataArray*
         {
           double n[3];
           normals->GetTuple(i, n);
-          const double length = std::sqrt(vtkMath::Dot(n, n));
+          const double length = glm::length(vtkNPRVector(n));
           const bool usable = length > 0.0 && std::isfinite(length);
-          for (int k = 0; k < 3; ++k)
-          {
-            unit[3 * i + k] = usable ? n[k] / length : std::numeric_limits<double>::quiet_NaN();
-          }
+          vtkNPRStore(usable ? vtkNPRVector(n) / length
+                             : glm::dvec3(std::numeric_limits<double>::quiet_NaN()),
+            unit + 3 * i);
         }
       });
     this->NormalsArray = normals;
@@ -126,11 +125,11 @@ void vtkNPRSmoothContours::ComputeFacing(
     {
       for (vtkIdType i = first; i < last; ++i)
       {
-        const double* n = unit + 3 * i;
         double p[3];
         mesh.GetPoint(i, p);
-        const double toPoint[3] = { p[0] - view[0], p[1] - view[1], p[2] - view[2] };
-        facing[i] = parallel ? vtkMath::Dot(n, view) : vtkMath::Dot(n, toPoint);
+        const glm::dvec3 sight =
+          parallel ? vtkNPRVector(view) : vtkNPRVector(p) - vtkNPRVector(view);
+        facing[i] = glm::dot(vtkNPRVector(unit + 3 * i), sight);
       }
     });
 }
