@@ -3,31 +3,15 @@
 """npr-render -o with vector drawings: .svg, .pdf, .ps and .eps write the lines (over the image,
 in the edges style), .png stays an image, and an unknown extension, a missing folder or a folder
 as the file each exit non-zero with one line `npr-render: error: ...` and leave no file."""
-import argparse
 import os
 import shutil
 import subprocess
-import sys
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--npr-render", required=True)
-parser.add_argument("--data", required=True)
-parser.add_argument("--out", required=True)
-args = parser.parse_args()
-os.makedirs(args.out, exist_ok=True)
-part = os.path.join(args.data, "cad_part.vtp")
-failures = []
-passes = []
+from npr_cli_checks import CLI
 
-
-def run(*argv):
-    result = subprocess.run([args.npr_render, *argv], capture_output=True, text=True, timeout=300)
-    return result.returncode, result.stdout, result.stderr
-
-
-def check(condition, message):
-    print(("ok: " if condition else "FAILED: ") + message)
-    (passes if condition else failures).append(message)
+cli = CLI(timeout=300)
+part = cli.model("cad_part.vtp")
+run, check, out = cli.run, cli.check, cli.out
 
 
 def pdf_page_size(path, data):
@@ -44,10 +28,6 @@ def pdf_page_size(path, data):
             parts = line.split()
             return (round(float(parts[2])), round(float(parts[4])))
     return None
-
-
-def out(name):
-    return os.path.join(args.out, name)
 
 
 common = ["--size", "320x240", "--azimuth", "30", "--elevation", "30"]
@@ -103,5 +83,4 @@ for target, expected in ((out("drawing.jpg"), "unknown extension (supported: .pn
 rc, _, err = run(part, "--orbit", "3", "-o", out("orbit.svg"))
 check(rc != 0 and "--orbit needs" in err, "--orbit with .svg is refused (%s)" % err.strip())
 
-print("%d passed, %d failed" % (len(passes), len(failures)))
-sys.exit(1 if failures else 0)
+cli.exit()

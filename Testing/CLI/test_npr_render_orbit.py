@@ -4,39 +4,18 @@
 differ), an Ogg Theora video read back (its frame size, rate and number of frames), an MP4 where
 the ffmpeg program is installed (read back with ffprobe) and an AVI where VTK has its FFMPEG
 writer, or their clear errors, and the usage errors."""
-import argparse
 import json
 import os
 import shutil
 import struct
 import subprocess
-import sys
 
+from npr_cli_checks import CLI
 from vtkmodules.vtkIOImage import vtkPNGReader
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--npr-render", required=True)
-parser.add_argument("--data", required=True)
-parser.add_argument("--out", required=True)
-args = parser.parse_args()
-os.makedirs(args.out, exist_ok=True)
-cad = os.path.join(args.data, "cad_part.vtp")
-failures = []
-
-
-def run(*argv):
-    result = subprocess.run([args.npr_render, *argv], capture_output=True, text=True, timeout=600)
-    return result.returncode, result.stdout, result.stderr
-
-
-def check(condition, message):
-    print(("ok: " if condition else "FAILED: ") + message)
-    if not condition:
-        failures.append(message)
-
-
-def out(name):
-    return os.path.join(args.out, name)
+cli = CLI(timeout=600)
+cad = cli.model("cad_part.vtp")
+run, check, out = cli.run, cli.check, cli.out
 
 
 def png_size(path):
@@ -91,7 +70,7 @@ rc, _, err = run(cad, "--style", "sketch", "--orbit", str(frames), "--size", "%d
 check(rc == 0, "--orbit %d -o orbit.png (%s)" % (frames, err.strip()))
 names = ["orbit_%04d.png" % i for i in range(1, frames + 1)]
 check(all(os.path.exists(out(n)) for n in names) and not os.path.exists(out("orbit_%04d.png" % (frames + 1))),
-      "exactly %d numbered frames: %s" % (frames, sorted(n for n in os.listdir(args.out) if n.startswith("orbit_"))))
+      "exactly %d numbered frames: %s" % (frames, sorted(n for n in os.listdir(cli.args.out) if n.startswith("orbit_"))))
 check(all(png_size(out(n)) == size for n in names if os.path.exists(out(n))), "every frame is %dx%d" % size)
 contents = [open(out(n), "rb").read() for n in names if os.path.exists(out(n))]
 check(len(set(contents)) == len(contents), "every frame differs from the others")
@@ -171,5 +150,4 @@ for argv, expected in [
     check(rc in (1, 2) and len(lines) == 1 and lines[0].startswith("npr-render: error: ") and expected in lines[0],
           "%s -> rc %d, %r" % (" ".join(os.path.basename(a) for a in argv), rc, err.strip()))
 
-print("%d failed" % len(failures))
-sys.exit(1 if failures else 0)
+cli.exit()
