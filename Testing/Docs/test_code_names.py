@@ -32,8 +32,6 @@ REPOSITORY = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__fil
 CODE_SUFFIXES = (".h", ".cxx", ".glsl", ".cmake", ".txt", ".py", ".xml", ".in", ".module", ".sh",
                  ".plugin")
 BACKTICKED = re.compile(r"`([^`\s]+)`")
-PATH_SUFFIXES = (".h", ".cxx", ".glsl", ".txt", ".py", ".xml", ".md", ".cmake", ".sh", ".json",
-                 ".ply", ".vtp", ".stl", ".obj", ".png", ".module", ".plugin")
 
 
 def tracked_files():

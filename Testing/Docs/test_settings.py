@@ -45,12 +45,8 @@ STATED_DEFAULT = re.compile(r"\(default\s+`?([^`\s);]+)")
 # "`inside` (on the nearer object, default)", "float (default)", "`surface` (default: ...)"
 NAMED_DEFAULT = re.compile(r"`?([\w+]+)`? \((?:[^()]*?,\s*)?default\b")
 
-failures = []
-
-
-def fail(where, message):
-    failures.append("%s: %s" % (where, message))
-    print("FAIL %s: %s" % (where, message))
+failures = reference.failures
+fail = reference.fail
 
 
 def name_of(row):
@@ -437,7 +433,7 @@ def main():
     check_viewer(rows)
     check_paraview(rows, table)
     check_pyvista(rows)
-    problems = failures + reference.failures
+    problems = failures
     if problems:
         print("%d disagreement(s) with %s" % (len(problems), os.path.relpath(TABLE, REPOSITORY)))
         return 1
