@@ -303,3 +303,8 @@ bool nprCompareWithBaselineFile(vtkImageData* image, const std::string& baseline
   }
   return passed;
 }
+
+std::string nprTestOutputPath(const std::string& name)
+{
+  return OutputDirectory() + "/" + name;
+}

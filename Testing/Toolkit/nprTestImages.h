@@ -85,4 +85,8 @@ vtkSmartPointer<vtkImageData> nprReadPNG(const std::string& path);
 // failure reported on stderr instead of thrown: whether the file was written.
 bool nprSavePNG(vtkImageData* image, const std::string& path);
 
+// The path of a file named name in $NPR_TEST_OUTPUT_DIR (default: the current directory), where
+// a test leaves the files it writes.
+std::string nprTestOutputPath(const std::string& name);
+
 #endif

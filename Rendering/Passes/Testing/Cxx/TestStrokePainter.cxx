@@ -5,41 +5,27 @@
 //   raster  coverage where the strokes are and nowhere else, rows bottom-up, premultiplied
 //           colours, the dash period and gaps, hidden lines left out when the style says so
 //   style   vtkNPRMakeStrokeStyle from an edge pass and a drawing pass, scaled by DPI / 72
+//           (TestStrokePainterStyle.cxx)
 //   svg     the same painting into Cairo's SVG: one <path> a stroke, the loop closed (Z)
-#include "nprTesting.h"
+//           (TestStrokePainterSvg.cxx)
+#include "TestStrokePainter.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIntArray.h"
-#include "vtkNPRDrawingPass.h"
-#include "vtkNPREdgePass.h"
-#include "vtkNPRStrokePainter.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
-#include <cairo-svg.h>
-#include <cairo.h>
-
-#include <cmath>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
-namespace
-{
-constexpr int Width = 200, Height = 100;
-
-// The strokes in image coordinates (row 0 at the bottom): a silhouette along y = 20 from x = 20
-// to 180; a hidden silhouette along y = 60 from x = 10 to 190; a square crease loop with corners
-// (130, 30) and (170, 50) whose last point id is its first.
-vtkSmartPointer<vtkPolyData> MakeStrokes()
+vtkSmartPointer<vtkPolyData> nprStrokePainter::MakeStrokes()
 {
   auto strokes = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
@@ -83,7 +69,7 @@ vtkSmartPointer<vtkPolyData> MakeStrokes()
   return strokes;
 }
 
-vtkNPRStrokeStyle TestStyle()
+vtkNPRStrokeStyle nprStrokePainter::TestStyle()
 {
   vtkNPRStrokeStyle style;
   style.LineWidth = 2.0;
@@ -99,25 +85,20 @@ vtkNPRStrokeStyle TestStyle()
   return style;
 }
 
+namespace
+{
+using namespace nprStrokePainter;
+
 // RGBA of pixel (x, y), row 0 at the bottom.
 const unsigned char* At(const std::vector<unsigned char>& rgba, int x, int y)
 {
   return rgba.data() + (static_cast<size_t>(y) * Width + x) * 4;
 }
 
-int Raster()
+// The visible line, 2 px wide about y = 20: rows 19 and 20 opaque black, rows 17 and 22 empty;
+// rows 79 and 80 (where it would be if the rows were top-down) empty; round caps.
+void CheckVisibleLine(const std::vector<unsigned char>& rgba)
 {
-  std::vector<unsigned char> rgba;
-  std::string error;
-  NPR_CHECK(vtkNPRRasterizeStrokes(MakeStrokes(), TestStyle(), Width, Height, rgba, error),
-    "rasterise: " << error);
-  NPR_CHECK(rgba.size() == static_cast<size_t>(Width) * Height * 4, "size " << rgba.size());
-  if (rgba.size() != static_cast<size_t>(Width) * Height * 4)
-  {
-    return nprTestResult();
-  }
-  // The visible line, 2 px wide about y = 20: rows 19 and 20 opaque black, rows 17 and 22 empty;
-  // rows 79 and 80 (where it would be if the rows were top-down) empty.
   for (int x : { 25, 100, 175 })
   {
     for (int y : { 19, 20 })
@@ -135,9 +116,12 @@ int Raster()
   // Round caps: the line reaches 1 px (half its width) past its ends, no further.
   NPR_CHECK(At(rgba, 180, 19)[3] > 100 && At(rgba, 19, 20)[3] > 100, "round caps");
   NPR_CHECK(At(rgba, 182, 19)[3] == 0 && At(rgba, 17, 20)[3] == 0, "caps too long");
+}
 
-  // The hidden line, 1 px wide on the border of rows 59 and 60: half covered, premultiplied
-  // orange (r = a, g = a / 2, b = 0). Its dashes: 6 on, 4 off, round caps of 0.5 px.
+// The hidden line, 1 px wide on the border of rows 59 and 60: half covered, premultiplied
+// orange (r = a, g = a / 2, b = 0). Returns its columns over the threshold.
+std::vector<int> HiddenLineColumns(const std::vector<unsigned char>& rgba)
+{
   std::vector<int> on(Width, 0);
   for (int x = 0; x < Width; ++x)
   {
@@ -152,6 +136,12 @@ int Raster()
     }
     NPR_CHECK(At(rgba, x, 62)[3] == 0 && At(rgba, x, 57)[3] == 0, "hidden line too wide at " << x);
   }
+  return on;
+}
+
+// The hidden line's dashes: 6 on, 4 off, round caps of 0.5 px.
+void CheckDashes(const std::vector<int>& on)
+{
   std::vector<int> starts, gaps, dashes;
   for (int x = 1; x < Width; ++x)
   {
@@ -205,9 +195,12 @@ int Raster()
   std::cout << "hidden line: " << starts.size() << " dashes, period 10 px, dashes "
             << (dashes.empty() ? 0 : dashes.front()) << " px, gaps "
             << (gaps.empty() ? 0 : gaps.front()) << " px\n";
+}
 
-  // The square: its sides blue and opaque, its inside and outside empty (a closed path, not
-  // filled).
+// The square: its sides blue and opaque, its inside and outside empty (a closed path, not
+// filled).
+void CheckSquare(const std::vector<unsigned char>& rgba)
+{
   const int sides[4][2] = { { 150, 30 }, { 170, 40 }, { 150, 50 }, { 130, 40 } };
   for (const int* p : sides)
   {
@@ -217,8 +210,13 @@ int Raster()
     NPR_CHECK(q[3] == 255 && q[2] == 255 && q[0] == 0, "square side at " << p[0] << "," << p[1]);
   }
   NPR_CHECK(At(rgba, 150, 40)[3] == 0 && At(rgba, 125, 40)[3] == 0, "square filled");
+}
 
-  // Without hidden lines the dashed line is not painted.
+// Without hidden lines the dashed line is not painted; without creases the square is not.
+// Returns the style with both off.
+vtkNPRStrokeStyle CheckSwitches(std::vector<unsigned char>& rgba)
+{
+  std::string error;
   vtkNPRStrokeStyle style = TestStyle();
   style.HiddenLines = false;
   NPR_CHECK(vtkNPRRasterizeStrokes(MakeStrokes(), style, Width, Height, rgba, error), error);
@@ -232,8 +230,13 @@ int Raster()
   style.Creases = false;
   NPR_CHECK(vtkNPRRasterizeStrokes(MakeStrokes(), style, Width, Height, rgba, error), error);
   NPR_CHECK(At(rgba, 150, 29)[3] == 0 && At(rgba, 100, 20)[3] == 255, "creases off");
+  return style;
+}
 
-  // An empty stroke set gives a transparent image; arrays missing give an error.
+// An empty stroke set gives a transparent image; arrays missing give an error.
+void CheckEmptyAndBare(const vtkNPRStrokeStyle& style, std::vector<unsigned char>& rgba)
+{
+  std::string error;
   vtkNew<vtkPolyData> empty;
   NPR_CHECK(vtkNPRRasterizeStrokes(empty, style, Width, Height, rgba, error), error);
   bool transparent = true;
@@ -248,97 +251,24 @@ int Raster()
   NPR_CHECK(!vtkNPRRasterizeStrokes(bare, style, Width, Height, rgba, error) &&
       error.find("Hidden") != std::string::npos,
     "strokes without Hidden: " << error);
-  return nprTestResult();
 }
-NPR_TEST_CASE("raster", Raster);
 
-int Style()
+int Raster()
 {
-  vtkNew<vtkNPREdgePass> edges;
-  edges->SetLineWidth(2.0);
-  edges->SetSilhouetteColor(0.1, 0.2, 0.3);
-  edges->SetCreaseColor(0.4, 0.5, 0.6);
-  edges->CreasesOff();
-  vtkNew<vtkNPRDrawingPass> drawing;
-  drawing->HiddenLinesOn();
-  drawing->SetHiddenLineWidth(0.5);
-  drawing->SetDashLength(3.0);
-  drawing->SetGapLength(2.0);
-  drawing->SetHiddenLineColor(0.7, 0.7, 0.7);
-  vtkNPRStrokeStyle style = vtkNPRMakeStrokeStyle(drawing, edges, nullptr);
-  NPR_CHECK(style.LineWidth == 2.0 && style.HiddenLineWidth == 1.0, "widths");
-  NPR_CHECK(style.DashLength == 3.0 && style.GapLength == 2.0, "dashes");
-  NPR_CHECK(style.HiddenLines && style.Silhouettes && !style.Creases, "flags");
-  NPR_CHECK(style.SilhouetteColor[2] == 0.3 && style.CreaseColor[0] == 0.4 &&
-      style.HiddenLineColor[1] == 0.7,
-    "colours");
-  // At 144 DPI every length doubles.
-  vtkSmartPointer<vtkRenderWindow> window = nprCreateTestWindow(64, 64, nullptr);
-  NPR_CHECK(window, "no window");
-  if (!window)
+  std::vector<unsigned char> rgba;
+  std::string error;
+  NPR_CHECK(vtkNPRRasterizeStrokes(MakeStrokes(), TestStyle(), Width, Height, rgba, error),
+    "rasterise: " << error);
+  NPR_CHECK(rgba.size() == static_cast<size_t>(Width) * Height * 4, "size " << rgba.size());
+  if (rgba.size() != static_cast<size_t>(Width) * Height * 4)
   {
     return nprTestResult();
   }
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-  window->SetDPI(144);
-  style = vtkNPRMakeStrokeStyle(drawing, edges, renderer);
-  NPR_CHECK(style.LineWidth == 4.0 && style.HiddenLineWidth == 2.0 && style.DashLength == 6.0 &&
-      style.GapLength == 4.0,
-    "at 144 DPI: " << style.LineWidth << " " << style.HiddenLineWidth << " " << style.DashLength
-                   << " " << style.GapLength);
-  // Without passes: the defaults (1.5 px lines, hidden lines off, 0.6 of the width, 6/4 dashes).
-  style = vtkNPRMakeStrokeStyle(nullptr, nullptr, nullptr);
-  NPR_CHECK(style.LineWidth == 1.5 && !style.HiddenLines &&
-      std::abs(style.HiddenLineWidth - 0.9) < 1e-12 && style.DashLength == 6.0,
-    "defaults");
+  CheckVisibleLine(rgba);
+  CheckDashes(HiddenLineColumns(rgba));
+  CheckSquare(rgba);
+  CheckEmptyAndBare(CheckSwitches(rgba), rgba);
   return nprTestResult();
 }
-NPR_TEST_CASE("style", Style);
-
-cairo_status_t Append(void* closure, const unsigned char* data, unsigned int length)
-{
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
-
-int Svg()
-{
-  std::string svg;
-  cairo_surface_t* surface = cairo_svg_surface_create_for_stream(Append, &svg, Width, Height);
-  cairo_t* cr = cairo_create(surface);
-  vtkNPRStrokeCounts counts;
-  std::string error;
-  NPR_CHECK(vtkNPRPaintStrokes(cr, MakeStrokes(), TestStyle(), Height, counts, error), error);
-  cairo_destroy(cr);
-  cairo_surface_finish(surface);
-  cairo_surface_destroy(surface);
-  NPR_CHECK(counts[NPR_STROKES_HIDDEN] == 1 && counts[NPR_STROKES_SILHOUETTE] == 1 &&
-      counts[NPR_STROKES_CREASE] == 1 && counts[NPR_STROKES_BOUNDARY] == 0,
-    "counts");
-  std::vector<std::string> paths;
-  for (size_t at = svg.find("<path"); at != std::string::npos; at = svg.find("<path", at + 1))
-  {
-    paths.push_back(svg.substr(at, svg.find("/>", at) - at));
-  }
-  NPR_CHECK(paths.size() == 3, paths.size() << " paths, expected 3:\n" << svg);
-  if (paths.size() == 3)
-  {
-    // Painted hidden first; y flipped (image y 60 is 40 from the top; Cairo merges the collinear
-    // middle point); the loop closed.
-    NPR_CHECK(paths[0].find("dasharray") != std::string::npos &&
-        paths[0].find("M 10 40 L") != std::string::npos &&
-        paths[0].find("190 40") != std::string::npos,
-      "hidden path: " << paths[0]);
-    NPR_CHECK(paths[1].find("dasharray") == std::string::npos &&
-        paths[1].find("M 20 80 L 180 80") != std::string::npos,
-      "visible path: " << paths[1]);
-    NPR_CHECK(paths[2].find("M 130 70 L 170 70 L 170 50 L 130 50 Z") != std::string::npos,
-      "closed loop: " << paths[2]);
-    NPR_CHECK(paths[1].find("round") != std::string::npos, "round caps: " << paths[1]);
-  }
-  std::cout << "Cairo " << cairo_version_string() << "\n";
-  return nprTestResult();
-}
-NPR_TEST_CASE("svg", Svg);
+NPR_TEST_CASE("raster", Raster);
 }
