@@ -18,10 +18,9 @@ import sys
 import vtknpr  # noqa: F401  (first: it imports the VTK modules it needs by itself)
 from vtknpr import vtkNPRPass, vtkNPRRenderWindowFactory
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL object factory overrides)
 
-from npr_example_common import grab, read_model, rgb, size, view_from
+from npr_example_common import grab, model_renderer, read_model, rgb, size, view_from
 
 DARK = 60  # a pixel is dark when its brightest channel is below this (0..255)
 
@@ -82,15 +81,7 @@ def main():
     args = parse_arguments()
     model = read_model(args.model, "npr_edges")
 
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputData(model)
-    mapper.ScalarVisibilityOff()
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.GetProperty().SetColor(0.85, 0.82, 0.75)
-    renderer = vtkRenderer()
-    renderer.SetBackground(1.0, 1.0, 1.0)
-    renderer.AddActor(actor)
+    renderer = model_renderer(model, (0.85, 0.82, 0.75))
 
     # The whole line-drawing chain in one pass; its edge pass takes the tuning.
     npr = vtkNPRPass()

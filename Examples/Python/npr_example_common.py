@@ -1,14 +1,15 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 # SPDX-License-Identifier: BSD-3-Clause
 """What the single-model Python examples (npr_edges.py, npr_toon_sketch.py) share: their argument
-types, the model with npr-render's normals, and the rendered frame read back."""
+types, the model with npr-render's normals and its renderer, and the rendered frame read back."""
 import sys
 
 import vtknpr  # noqa: F401  (first: it imports the VTK modules it needs by itself)
 from vtknpr import vtkNPRModelReader
 from vtkmodules.vtkCommonCore import vtkObject
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
+                                         vtkWindowToImageFilter)
 
 
 def size(text):
@@ -47,6 +48,21 @@ def read_model(file_name, program):
     normals.ConsistencyOff()
     normals.Update()
     return normals.GetOutput()
+
+
+def model_renderer(model, color):
+    """A renderer on white with one actor: the model in one colour (its scalars ignored) and no
+    specular, so that the shades come from the diffuse light alone."""
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputData(model)
+    mapper.ScalarVisibilityOff()
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(*color)
+    renderer = vtkRenderer()
+    renderer.SetBackground(1.0, 1.0, 1.0)
+    renderer.AddActor(actor)
+    return renderer
 
 
 def grab(window):

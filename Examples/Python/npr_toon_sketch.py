@@ -20,10 +20,9 @@ import sys
 import vtknpr  # noqa: F401  (first: it imports the VTK modules it needs by itself)
 from vtknpr import vtkNPRPass, vtkNPRRenderWindowFactory
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL object factory overrides)
 
-from npr_example_common import grab, read_model, rgb, size, view_from
+from npr_example_common import grab, model_renderer, read_model, rgb, size, view_from
 
 COLOR = (0.85, 0.55, 0.35)  # no shade of it is the white background, so the object stands out
 
@@ -55,15 +54,7 @@ class Scene:
     """The model in a headless window of its own, drawn by a vtkNPRPass of the given style."""
 
     def __init__(self, model, image_size, style):
-        mapper = vtkPolyDataMapper()
-        mapper.SetInputData(model)
-        mapper.ScalarVisibilityOff()
-        actor = vtkActor()  # no specular by default: the bands come from the diffuse light alone
-        actor.SetMapper(mapper)
-        actor.GetProperty().SetColor(*COLOR)
-        self.renderer = vtkRenderer()
-        self.renderer.SetBackground(1.0, 1.0, 1.0)
-        self.renderer.AddActor(actor)
+        self.renderer = model_renderer(model, COLOR)  # no specular: bands of diffuse light only
         self.npr = vtkNPRPass()
         self.npr.SetStyle(vtkNPRPass.GetStyleFromName(style))
         self.renderer.SetPass(self.npr)

@@ -2,35 +2,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The drawing style with hidden lines, rendered headless into drawing.png and written as a vector
 // drawing, part.svg (Documentation/drawing.md shows its parts; run it from the repository root).
-#include "vtkActor.h"
-#include "vtkCamera.h"
+#include "nprSnippet.h" // the model's renderer, the headless window, the PNG
+
 #include "vtkNPRDrawingExporter.h"
 #include "vtkNPRDrawingPass.h"
 #include "vtkNPREdgePass.h"
-#include "vtkNPRModelReader.h"
 #include "vtkNPRPass.h"
-#include "vtkNPRRenderWindowFactory.h"
-#include "vtkNew.h"
-#include "vtkPNGWriter.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkSmartPointer.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <iostream>
 
 int main()
 {
-  vtkNew<vtkNPRModelReader> reader;
-  reader->SetFileName("Testing/Data/cad_part.vtp");
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(reader->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  renderer->SetBackground(1.0, 1.0, 1.0);
+  vtkSmartPointer<vtkRenderer> renderer = nprSnippetModel("Testing/Data/cad_part.vtp");
 
   vtkNew<vtkNPRPass> pass;
   pass->SetStyleToDrawing();
@@ -41,25 +24,17 @@ int main()
   pass->GetDrawingPass()->SetDashLength(4.0);
   renderer->SetPass(pass);
 
-  auto window =
-    vtkSmartPointer<vtkRenderWindow>::Take(vtkNPRRenderWindowFactory::CreateRenderWindow());
+  vtkSmartPointer<vtkRenderWindow> window = nprSnippetWindow(renderer, 800, 600);
   if (!window)
   {
     return 1;
   }
-  window->SetSize(800, 600);
-  window->AddRenderer(renderer);
-  renderer->GetActiveCamera()->Azimuth(35.0);
-  renderer->GetActiveCamera()->Elevation(25.0);
-  renderer->ResetCamera();
+  nprSnippetTurn(renderer, 35.0, 25.0);
   window->Render(); // before the export: the first Render() sets the camera and sizes the window
-
-  vtkNew<vtkWindowToImageFilter> grabber;
-  grabber->SetInput(window);
-  vtkNew<vtkPNGWriter> png;
-  png->SetInputConnection(grabber->GetOutputPort());
-  png->SetFileName("drawing.png");
-  png->Write();
+  if (!nprSnippetWritePNG(window, "drawing.png"))
+  {
+    return 1;
+  }
 
   vtkNew<vtkNPRDrawingExporter> exporter;
   exporter->SetRenderer(renderer);   // or SetRenderWindow(window): its first renderer

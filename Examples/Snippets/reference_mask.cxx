@@ -3,40 +3,20 @@
 // The object-space ground truth of a view: vtkNPRReferenceMask's line mask of the CAD part,
 // written as mask.png (Documentation/feature-lines.md shows its middle; run it from the
 // repository root).
-#include "vtkActor.h"
-#include "vtkCamera.h"
+#include "nprSnippet.h" // the model's renderer, the headless window
+
 #include "vtkImageData.h"
-#include "vtkNPRModelReader.h"
 #include "vtkNPRReferenceMask.h"
-#include "vtkNPRRenderWindowFactory.h"
-#include "vtkNew.h"
-#include "vtkPNGWriter.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkSmartPointer.h"
 
 int main()
 {
-  vtkNew<vtkNPRModelReader> reader;
-  reader->SetFileName("Testing/Data/cad_part.vtp");
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(reader->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  auto window =
-    vtkSmartPointer<vtkRenderWindow>::Take(vtkNPRRenderWindowFactory::CreateRenderWindow());
+  vtkSmartPointer<vtkRenderer> renderer = nprSnippetModel("Testing/Data/cad_part.vtp");
+  vtkSmartPointer<vtkRenderWindow> window = nprSnippetWindow(renderer, 960, 540);
   if (!window)
   {
     return 1;
   }
-  window->SetSize(960, 540);
-  window->AddRenderer(renderer);
-  renderer->GetActiveCamera()->Azimuth(30.0);
-  renderer->GetActiveCamera()->Elevation(30.0);
-  renderer->ResetCamera();
+  nprSnippetTurn(renderer, 30.0, 30.0);
   window->Render(); // sets the clipping range the mask is computed with
 
   vtkNew<vtkNPRReferenceMask> reference;
@@ -49,5 +29,5 @@ int main()
   writer->SetInputData(mask);
   writer->SetFileName("mask.png");
   writer->Write();
-  return 0;
+  return writer->GetErrorCode() == 0 ? 0 : 1;
 }

@@ -199,17 +199,16 @@ int nprRunBenchmarkCoherence(const nprBenchmarkOptions& options)
       }
     }
   }
-  md << "\n| scene | size | sketch, screen noise (ms) | sketch, surface noise (ms) | surface / "
-        "screen |\n|---|---|---|---|---|\n";
+  md << "\n"
+     << nprMarkdownHead({ "scene", "size", "sketch, screen noise (ms)",
+          "sketch, surface noise (ms)", "surface / screen" });
   std::ofstream costCsv(options.Out + "/coherence_cost.csv");
   costCsv << "scene,size,sketch_screen_ms,sketch_surface_ms\n";
   for (const CostRow& cost : costs)
   {
-    md << "| " << cost.Scene << " | " << cost.Size << " | " << nprFixed(cost.ScreenMs, 1) << " | "
-       << nprFixed(cost.SurfaceMs, 1) << " | " << nprFixed(cost.SurfaceMs / cost.ScreenMs, 3)
-       << " |\n";
-    costCsv << cost.Scene << "," << cost.Size << "," << cost.ScreenMs << "," << cost.SurfaceMs
-            << "\n";
+    md << nprMarkdownRow({ cost.Scene, cost.Size, nprFixed(cost.ScreenMs, 1),
+      nprFixed(cost.SurfaceMs, 1), nprFixed(cost.SurfaceMs / cost.ScreenMs, 3) });
+    costCsv << nprCsvRow({ cost.Scene, cost.Size }, { cost.ScreenMs, cost.SurfaceMs });
     if (!(cost.ScreenMs > 0.0 && cost.SurfaceMs > 0.0))
     {
       problems += cost.Scene + " " + cost.Size + ": a frame time is not positive\n";

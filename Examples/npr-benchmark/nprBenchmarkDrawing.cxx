@@ -251,17 +251,17 @@ int nprRunBenchmarkDrawing(const nprBenchmarkOptions& options)
        << nprFixed(row.Bytes / 1024.0, 0) << " | " << row.Strokes << " | " << row.FeatureEdges
        << " | " << (row.F1 >= 0 ? nprFixed(row.F1, 4) : std::string("")) << " |\n";
   }
-  md << "\n| scene | size | shaded frame (ms) | drawing, first frame (ms) | drawing, camera turned "
-        "1 degree (ms) | drawing, unchanged (ms) |\n|---|---|---|---|---|---|\n";
+  md << "\n"
+     << nprMarkdownHead({ "scene", "size", "shaded frame (ms)", "drawing, first frame (ms)",
+          "drawing, camera turned 1 degree (ms)", "drawing, unchanged (ms)" });
   std::ofstream styleCsv(options.Out + "/drawing_style.csv");
   styleCsv << "scene,size,shaded_ms,first_ms,moved_ms,unchanged_ms\n";
   for (const StyleRow& row : styleRows)
   {
-    md << "| " << row.Scene << " | " << row.Size << " | " << nprFixed(row.ShadedMs, 1) << " | "
-       << nprFixed(row.FirstMs, 1) << " | " << nprFixed(row.MovedMs, 1) << " | "
-       << nprFixed(row.StillMs, 1) << " |\n";
-    styleCsv << row.Scene << "," << row.Size << "," << row.ShadedMs << "," << row.FirstMs << ","
-             << row.MovedMs << "," << row.StillMs << "\n";
+    md << nprMarkdownRow({ row.Scene, row.Size, nprFixed(row.ShadedMs, 1), nprFixed(row.FirstMs, 1),
+      nprFixed(row.MovedMs, 1), nprFixed(row.StillMs, 1) });
+    styleCsv << nprCsvRow(
+      { row.Scene, row.Size }, { row.ShadedMs, row.FirstMs, row.MovedMs, row.StillMs });
   }
   std::ofstream markdown(options.Out + "/drawing.md");
   markdown << "Technical drawings (npr-benchmark --drawing) on "

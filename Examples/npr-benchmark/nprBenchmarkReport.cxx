@@ -489,3 +489,41 @@ std::string nprFixed(double value, int decimals)
   text << value;
   return text.str();
 }
+
+std::string nprMarkdownHead(const std::vector<std::string>& columns)
+{
+  std::string rule = "|";
+  for (size_t i = 0; i < columns.size(); ++i)
+  {
+    rule += "---|";
+  }
+  return nprMarkdownRow(columns) + rule + "\n";
+}
+
+std::string nprMarkdownRow(const std::vector<std::string>& cells)
+{
+  std::string row = "|";
+  for (const std::string& cell : cells)
+  {
+    row += " " + cell + " |";
+  }
+  return row + "\n";
+}
+
+std::string nprCsvRow(const std::vector<std::string>& cells, const std::vector<double>& numbers)
+{
+  std::ostringstream row;
+  const char* separator = "";
+  for (const std::string& cell : cells)
+  {
+    row << separator << cell;
+    separator = ",";
+  }
+  for (double number : numbers)
+  {
+    row << separator << number;
+    separator = ",";
+  }
+  row << "\n";
+  return row.str();
+}

@@ -115,4 +115,11 @@ std::string nprFormat(double value, int digits = 4);
 // A number with a fixed count of decimals (the tables' milliseconds and ratios).
 std::string nprFixed(double value, int decimals);
 
+// A Markdown table's head: "| a | b |\n|---|---|\n".
+std::string nprMarkdownHead(const std::vector<std::string>& columns);
+// A Markdown table's row: "| a | b |\n".
+std::string nprMarkdownRow(const std::vector<std::string>& cells);
+// A CSV row: the text cells, then the numbers as a stream writes them (6 significant digits).
+std::string nprCsvRow(const std::vector<std::string>& cells, const std::vector<double>& numbers);
+
 #endif

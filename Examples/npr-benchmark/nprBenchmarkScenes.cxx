@@ -4,12 +4,12 @@
 
 #include "nprBenchmarkOptions.h"
 #include "nprBenchmarkReport.h"
+#include "nprMeshes.h"
 #include "nprModel.h"
 #include "nprTiming.h"
 
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkFlyingEdges3D.h"
@@ -34,15 +34,6 @@
 
 namespace
 {
-// A mesh of these points and triangles.
-vtkSmartPointer<vtkPolyData> MakeMesh(vtkPoints* points, vtkCellArray* polys)
-{
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(polys);
-  return mesh;
-}
-
 // Only the geometry and the triangles: colours and other arrays play no part in the benchmark,
 // and double-precision points keep the stress variants' transforms exact in memory.
 vtkSmartPointer<vtkPolyData> Geometry(vtkPolyData* input)
@@ -56,7 +47,7 @@ vtkSmartPointer<vtkPolyData> Geometry(vtkPolyData* input)
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->DeepCopy(output->GetPoints());
-  return MakeMesh(points, output->GetPolys());
+  return nprMesh(points, output->GetPolys());
 }
 
 vtkSmartPointer<vtkPolyData> ReadModel(const std::string& path)
@@ -173,20 +164,7 @@ vtkSmartPointer<vtkPolyData> Knot()
       points->InsertNextPoint(p);
     }
   }
-  vtkNew<vtkCellArray> polys;
-  for (int i = 0; i < along; ++i)
-  {
-    for (int j = 0; j < around; ++j)
-    {
-      const vtkIdType a = i * around + j, b = i * around + (j + 1) % around,
-                      c = ((i + 1) % along) * around + j,
-                      d = ((i + 1) % along) * around + (j + 1) % around;
-      const vtkIdType first[3] = { a, c, d }, second[3] = { a, d, b };
-      polys->InsertNextCell(3, first);
-      polys->InsertNextCell(3, second);
-    }
-  }
-  return MakeMesh(points, polys);
+  return nprMesh(points, nprTubeTriangles(along, around));
 }
 
 // Copies a mesh with each point moved by move(double p[3]) (same cells, double precision).
@@ -203,7 +181,7 @@ vtkSmartPointer<vtkPolyData> WithMovedPoints(vtkPolyData* raw, Move move)
     move(p);
     points->SetPoint(i, p);
   }
-  return MakeMesh(points, raw->GetPolys());
+  return nprMesh(points, raw->GetPolys());
 }
 }
 
@@ -412,66 +390,42 @@ vtkSmartPointer<vtkPolyData> nprSliverMesh(vtkPolyData* raw)
   points->SetDataTypeToDouble();
   points->DeepCopy(raw->GetPoints());
   vtkNew<vtkCellArray> polys;
-  auto cells = vtk::TakeSmartPointer(raw->GetPolys()->NewIterator());
-  vtkIdType index = 0;
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++index)
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    cells->GetCurrentCell(size, ids);
-    if (index % 5 != 0 || size != 3)
+  nprForEachCell(raw->GetPolys(),
+    [&](vtkIdType index, vtkIdType size, const vtkIdType* ids)
     {
-      polys->InsertNextCell(size, ids);
-      continue;
-    }
-    // Split (a, b, c) at a point p inside it, 1e-6 of the edge's length from the middle of
-    // a-b: (a, b, p) is a needle, (b, c, p) and (c, a, p) are ordinary. The mesh stays
-    // manifold (no T-junction) and covers the same surface.
-    double a[3], b[3], c[3], p[3];
-    points->GetPoint(ids[0], a);
-    points->GetPoint(ids[1], b);
-    points->GetPoint(ids[2], c);
-    const double length = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
-    double towards[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      p[k] = 0.5 * (a[k] + b[k]);
-      towards[k] = c[k] - p[k];
-    }
-    vtkMath::Normalize(towards);
-    for (int k = 0; k < 3; ++k)
-    {
-      p[k] += 1e-6 * length * towards[k];
-    }
-    const vtkIdType apex = points->InsertNextPoint(p);
-    const vtkIdType needle[3] = { ids[0], ids[1], apex };
-    const vtkIdType second[3] = { ids[1], ids[2], apex };
-    const vtkIdType third[3] = { ids[2], ids[0], apex };
-    polys->InsertNextCell(3, needle);
-    polys->InsertNextCell(3, second);
-    polys->InsertNextCell(3, third);
-  }
-  return MakeMesh(points, polys);
-}
-
-vtkSmartPointer<vtkPolyData> nprSoupMesh(vtkPolyData* raw)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> polys;
-  auto cells = vtk::TakeSmartPointer(raw->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    cells->GetCurrentCell(size, ids);
-    polys->InsertNextCell(size);
-    for (vtkIdType k = 0; k < size; ++k)
-    {
-      polys->InsertCellPoint(points->InsertNextPoint(raw->GetPoint(ids[k])));
-    }
-  }
-  return MakeMesh(points, polys);
+      if (index % 5 != 0 || size != 3)
+      {
+        polys->InsertNextCell(size, ids);
+        return;
+      }
+      // Split (a, b, c) at a point p inside it, 1e-6 of the edge's length from the middle of
+      // a-b: (a, b, p) is a needle, (b, c, p) and (c, a, p) are ordinary. The mesh stays
+      // manifold (no T-junction) and covers the same surface.
+      double a[3], b[3], c[3], p[3];
+      points->GetPoint(ids[0], a);
+      points->GetPoint(ids[1], b);
+      points->GetPoint(ids[2], c);
+      const double length = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+      double towards[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = 0.5 * (a[k] + b[k]);
+        towards[k] = c[k] - p[k];
+      }
+      vtkMath::Normalize(towards);
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] += 1e-6 * length * towards[k];
+      }
+      const vtkIdType apex = points->InsertNextPoint(p);
+      const vtkIdType needle[3] = { ids[0], ids[1], apex };
+      const vtkIdType second[3] = { ids[1], ids[2], apex };
+      const vtkIdType third[3] = { ids[2], ids[0], apex };
+      polys->InsertNextCell(3, needle);
+      polys->InsertNextCell(3, second);
+      polys->InsertNextCell(3, third);
+    });
+  return nprMesh(points, polys);
 }
 
 vtkSmartPointer<vtkPolyData> nprNaNPointsMesh(vtkPolyData* raw)
@@ -483,31 +437,27 @@ vtkSmartPointer<vtkPolyData> nprNaNPointsMesh(vtkPolyData* raw)
   polys->DeepCopy(raw->GetPolys());
   const double nan = std::numeric_limits<double>::quiet_NaN();
   // One NaN point (all coordinates, or one) per 50 triangles, joined to a real edge.
-  auto cells = vtk::TakeSmartPointer(raw->GetPolys()->NewIterator());
-  vtkIdType index = 0;
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++index)
-  {
-    if (index % 50 != 0)
+  nprForEachCell(raw->GetPolys(),
+    [&](vtkIdType index, vtkIdType, const vtkIdType* ids)
     {
-      continue;
-    }
-    vtkIdType size;
-    const vtkIdType* ids;
-    cells->GetCurrentCell(size, ids);
-    double p[3];
-    points->GetPoint(ids[0], p);
-    if (index % 100 == 0)
-    {
-      p[0] = p[1] = p[2] = nan;
-    }
-    else
-    {
-      p[1] = nan;
-    }
-    const vtkIdType triangle[3] = { ids[1], ids[0], points->InsertNextPoint(p) };
-    polys->InsertNextCell(3, triangle);
-  }
-  return MakeMesh(points, polys);
+      if (index % 50 != 0)
+      {
+        return;
+      }
+      double p[3];
+      points->GetPoint(ids[0], p);
+      if (index % 100 == 0)
+      {
+        p[0] = p[1] = p[2] = nan;
+      }
+      else
+      {
+        p[1] = nan;
+      }
+      const vtkIdType triangle[3] = { ids[1], ids[0], points->InsertNextPoint(p) };
+      polys->InsertNextCell(3, triangle);
+    });
+  return nprMesh(points, polys);
 }
 
 vtkSmartPointer<vtkPolyData> nprZeroNormalsMesh(vtkPolyData* prepared)

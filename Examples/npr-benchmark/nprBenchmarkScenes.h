@@ -67,8 +67,6 @@ vtkSmartPointer<vtkPolyData> nprTranslatedMesh(vtkPolyData* raw, double distance
 // Near-degenerate needle triangles in a manifold mesh: every fifth triangle is split in three at
 // a point 1e-6 of its first edge's length off that edge's midpoint (one needle, two ordinary).
 vtkSmartPointer<vtkPolyData> nprSliverMesh(vtkPolyData* raw);
-// A triangle soup: every triangle has its own three points (duplicate vertices, as in STL).
-vtkSmartPointer<vtkPolyData> nprSoupMesh(vtkPolyData* raw);
 // NaN points added to the mesh, each used by a triangle with two real points.
 vtkSmartPointer<vtkPolyData> nprNaNPointsMesh(vtkPolyData* raw);
 // A prepared mesh with every seventh point normal set to (0, 0, 0).

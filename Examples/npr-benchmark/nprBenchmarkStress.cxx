@@ -7,6 +7,7 @@
 #include "nprBenchmarkScenes.h"
 #include "nprBenchmarkStage.h"
 #include "nprEdgeMetrics.h"
+#include "nprMeshes.h"
 #include "nprModel.h"
 #include "nprTiming.h"
 
@@ -147,7 +148,7 @@ void StressMeshes(const nprBenchmarkScene& scene, const StressCase& stress, doub
              << " triangles split in a needle and two (apex 1e-6 edge length off the edge)";
       break;
     case StressCase::Soup:
-      raw = nprSoupMesh(scene.Raw);
+      raw = nprPolygonSoup(scene.Raw);
       detail << "every triangle its own 3 points (" << raw->GetNumberOfPoints() << " points)";
       break;
     case StressCase::NaNPoints:

@@ -39,6 +39,22 @@ struct Mask
   const unsigned char* Data() const { return this->Pixels.data(); }
 };
 
+// A width x height mask of one vertical line, at x from y0 to y1.
+Mask LineMask(int width, int height, int x, int y0, int y1)
+{
+  Mask mask(width, height);
+  mask.VerticalLine(x, y0, y1);
+  return mask;
+}
+
+// The figures of the method's mask against the reference's (of the same size).
+nprEdgeMetrics Compare(const Mask& method, const Mask& reference)
+{
+  nprEdgeMetrics m;
+  m.Compute(method.Data(), reference.Data(), reference.Width, reference.Height);
+  return m;
+}
+
 bool Near(double a, double b, double tolerance = 1e-9)
 {
   return std::abs(a - b) <= tolerance;
@@ -130,20 +146,15 @@ void TestIdentical()
 
 void TestShifted()
 {
-  Mask reference(64, 48), method(64, 48);
-  reference.VerticalLine(20, 5, 40);
-  method.VerticalLine(21, 5, 40);
-  nprEdgeMetrics m;
-  m.Compute(method.Data(), reference.Data(), 64, 48);
+  const Mask reference = LineMask(64, 48, 20, 5, 40);
+  nprEdgeMetrics m = Compare(LineMask(64, 48, 21, 5, 40), reference);
   NPR_CHECK(m.F1(0.0) == 0.0, "shifted by 1: F1@0 " << m.F1(0.0));
   NPR_CHECK(m.F1(1.0) == 1.0 && m.F1(2.0) == 1.0, "shifted by 1: F1@1 " << m.F1(1.0));
   NPR_CHECK(
     Near(m.MeanSymmetricDistance(), 1.0), "shifted by 1: distance " << m.MeanSymmetricDistance());
 
   // Diagonally by one pixel: sqrt(2) away, within 2 but not within 1.
-  Mask diagonal(64, 48);
-  diagonal.VerticalLine(21, 6, 41);
-  m.Compute(diagonal.Data(), reference.Data(), 64, 48);
+  m = Compare(LineMask(64, 48, 21, 6, 41), reference);
   NPR_CHECK(m.Precision(1.0) < 1.0 && m.Precision(2.0) == 1.0 && m.Recall(2.0) == 1.0,
     "diagonal shift: precision@1 " << m.Precision(1.0) << ", @2 " << m.Precision(2.0));
   // The shared rows are at distance 1 (one pixel across), the end rows at sqrt(2).
@@ -152,11 +163,8 @@ void TestShifted()
 
 void TestDisjoint()
 {
-  Mask reference(128, 64), method(128, 64);
-  reference.VerticalLine(10, 10, 50);
-  method.VerticalLine(60, 10, 50);
-  nprEdgeMetrics m;
-  m.Compute(method.Data(), reference.Data(), 128, 64);
+  const Mask reference = LineMask(128, 64, 10, 10, 50);
+  nprEdgeMetrics m = Compare(LineMask(128, 64, 60, 10, 50), reference);
   NPR_CHECK(m.F1(1.0) == 0.0 && m.F1(2.0) == 0.0, "far apart: F1@2 " << m.F1(2.0));
   NPR_CHECK(
     Near(m.MeanSymmetricDistance(), 50.0), "far apart: distance " << m.MeanSymmetricDistance());
@@ -168,7 +176,7 @@ void TestDisjoint()
   {
     stray.VerticalLine(100 + y, 20, 29); // 100 pixels
   }
-  m.Compute(stray.Data(), reference.Data(), 128, 64);
+  m = Compare(stray, reference);
   NPR_CHECK(Near(m.Precision(2.0), 41.0 / 141.0) && m.Recall(0.0) == 1.0,
     "stray blob: precision " << m.Precision(2.0) << ", recall " << m.Recall(0.0));
   NPR_CHECK(m.CountFarMethodPixels(3.0) == 100, "stray pixels " << m.CountFarMethodPixels(3.0));

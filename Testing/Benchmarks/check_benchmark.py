@@ -340,33 +340,22 @@ def check_scale_options(args):
               "%s accepted or unclear: %d %s" % (bad, result.returncode, result.stderr))
 
 
+# npr-benchmark's modes, each an option of its own passed on as it is (none: the default run).
+MODES = ("stress", "coherence", "drawing", "speed", "contours", "scale")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--npr-benchmark", required=True)
     parser.add_argument("--data", required=True)
     parser.add_argument("--out", required=True)
     mode = parser.add_mutually_exclusive_group()
-    mode.add_argument("--stress", action="store_true")
-    mode.add_argument("--coherence", action="store_true")
-    mode.add_argument("--drawing", action="store_true")
-    mode.add_argument("--speed", action="store_true")
-    mode.add_argument("--contours", action="store_true")
-    mode.add_argument("--scale", action="store_true")
+    for name in MODES:
+        mode.add_argument("--" + name, action="store_true")
     args = parser.parse_args()
     shutil.rmtree(args.out, ignore_errors=True)
     command = [args.npr_benchmark, "--quick", "--data", args.data, "--out", args.out]
-    if args.stress:
-        command.append("--stress")
-    if args.coherence:
-        command.append("--coherence")
-    if args.drawing:
-        command.append("--drawing")
-    if args.speed:
-        command.append("--speed")
-    if args.contours:
-        command.append("--contours")
-    if args.scale:
-        command.append("--scale")
+    command += ["--" + name for name in MODES if getattr(args, name)]
     print(" ".join(command))
     result = subprocess.run(command)
     check(result.returncode == 0, "npr-benchmark exited with %d" % result.returncode)

@@ -25,6 +25,12 @@ def client(name, source):
     return register
 
 
+def show_outlined(plotter, data):
+    """Shows the plotter with the data set's outline in black, as the gallery frames its data."""
+    plotter.add_mesh(data.outline(), color="black")
+    plotter.show()
+
+
 # ---- PyVista's own demos, unchanged ------------------------------------------------------------
 CORPUS["demo_glyphs"] = ("pyvista.demos.plot_glyphs (supertoroid glyphs, scalars)",
                          lambda: demos.plot_glyphs(2))
@@ -81,8 +87,7 @@ def clipping():
     plotter = pv.Plotter()
     plotter.add_mesh(beam.clip(normal="x", origin=beam.center), show_edges=True,
                      scalars="sample_cell_scalars")
-    plotter.add_mesh(beam.outline(), color="black")
-    plotter.show()
+    show_outlined(plotter, beam)
 
 
 @client("volume", "gallery topic: volume rendering (examples.load_channels, bundled)")
@@ -90,10 +95,9 @@ def volume():
     channels = examples.load_channels()
     plotter = pv.Plotter()
     plotter.add_volume(channels, cmap="viridis", opacity="linear")
-    plotter.add_mesh(channels.outline(), color="black")
     above = np.array(channels.center) + (0.0, 0.0, 60.0)  # a surface clear of the volume
     plotter.add_mesh(pv.Sphere(radius=40, center=above), color="white")
-    plotter.show()
+    show_outlined(plotter, channels)
 
 
 @client("point_cloud", "gallery topic: point clouds (the ant's vertices, bundled)")

@@ -117,53 +117,9 @@ vtkSmartPointer<vtkPolyData> nprMakeTorus(double R, double r, int along, int aro
       normals->InsertNextTuple3(std::cos(u) * std::cos(v), std::sin(u) * std::cos(v), std::sin(v));
     }
   }
-  vtkNew<vtkCellArray> triangles;
-  auto id = [&](int i, int j) { return static_cast<vtkIdType>((i % along) * around + j % around); };
-  for (int i = 0; i < along; ++i)
-  {
-    for (int j = 0; j < around; ++j)
-    {
-      const vtkIdType first[3] = { id(i, j), id(i + 1, j), id(i + 1, j + 1) };
-      const vtkIdType second[3] = { id(i, j), id(i + 1, j + 1), id(i, j + 1) };
-      triangles->InsertNextCell(3, first);
-      triangles->InsertNextCell(3, second);
-    }
-  }
-  auto torus = vtkSmartPointer<vtkPolyData>::New();
-  torus->SetPoints(points);
-  torus->SetPolys(triangles);
+  vtkSmartPointer<vtkPolyData> torus = nprMesh(points, nprTubeTriangles(along, around));
   torus->GetPointData()->SetNormals(normals);
   return torus;
-}
-
-vtkSmartPointer<vtkPolyData> nprPolygonSoup(vtkPolyData* mesh)
-{
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> polygons;
-  nprForEachCell(mesh->GetPolys(),
-    [&](vtkIdType, vtkIdType size, const vtkIdType* ids)
-    {
-      polygons->InsertNextCell(size);
-      for (vtkIdType k = 0; k < size; ++k)
-      {
-        polygons->InsertCellPoint(points->InsertNextPoint(mesh->GetPoint(ids[k])));
-      }
-    });
-  auto soup = vtkSmartPointer<vtkPolyData>::New();
-  soup->SetPoints(points);
-  soup->SetPolys(polygons);
-  return soup;
-}
-
-void nprForEachCell(vtkCellArray* cells,
-  const std::function<void(vtkIdType cell, vtkIdType size, const vtkIdType* ids)>& visit)
-{
-  vtkNew<vtkIdList> ids; // a copy of each cell's ids, whatever the array's storage
-  for (vtkIdType cell = 0; cell < cells->GetNumberOfCells(); ++cell)
-  {
-    cells->GetCellAtId(cell, ids);
-    visit(cell, ids->GetNumberOfIds(), ids->begin());
-  }
 }
 
 void nprLookAtOrigin(vtkCamera* camera, const double eye[3], double far)

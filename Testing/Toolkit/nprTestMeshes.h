@@ -1,14 +1,16 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 // SPDX-License-Identifier: BSD-3-Clause
-// The test toolkit's meshes and scenes: actors of sources, spheres, a torus with exact normals, a
-// walk over cells, the test models and the cameras the tests share.
+// The test toolkit's meshes and scenes: actors of sources, spheres, a torus with exact normals,
+// the test models and the cameras the tests share. The meshes the tests share with npr-benchmark
+// (a polygon soup, a walk over cells, a tube's triangles) are nprMeshes' (Examples/Common).
 #ifndef nprTestMeshes_h
 #define nprTestMeshes_h
+
+#include "nprMeshes.h"
 
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
-#include <functional>
 #include <string>
 
 class vtkActor;
@@ -73,15 +75,9 @@ vtkSmartPointer<vtkNPRModelReader> nprReadTestModel(const std::string& model);
 bool nprSameCells(vtkCellArray* a, vtkCellArray* b);
 
 // A torus about z (ring radius R, tube radius r) of along x around quads, each split into two
-// triangles, with its exact unit normals (point data "Normals"); point (i, j) is i * around + j.
+// triangles (nprTubeTriangles), with its exact unit normals (point data "Normals"); point (i, j)
+// is i * around + j.
 vtkSmartPointer<vtkPolyData> nprMakeTorus(double R, double r, int along, int around);
-
-// The mesh's polygons, each with its own points (a soup: no point shared).
-vtkSmartPointer<vtkPolyData> nprPolygonSoup(vtkPolyData* mesh);
-
-// Calls visit for each cell of cells in order, with its index and point ids.
-void nprForEachCell(vtkCellArray* cells,
-  const std::function<void(vtkIdType cell, vtkIdType size, const vtkIdType* ids)>& visit);
 
 // The baseline scenes' view: the camera reset, then turned 30 degrees in azimuth and elevation.
 void nprTurnBaselineCamera(vtkRenderer* renderer);
