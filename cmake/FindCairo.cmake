@@ -1,7 +1,7 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 # SPDX-License-Identifier: BSD-3-Clause
 # find_package(Cairo): Cairo through pkg-config (Debian's libcairo2-dev), as the imported target
-# Cairo::Cairo. NPR::RenderingNPR links it privately (the stroke painter of the drawing style and
+# Cairo::Cairo. NPR::Passes links it privately (the stroke painter of the drawing style and
 # vtkNPRDrawingExporter's SVG, PDF and PostScript files), through vtk_module_find_package(PRIVATE):
 # the installed vtkNPR package does not look for it, so consumers need no libcairo2-dev. Only API of Cairo 1.16 (Debian 12) is used.
 # Sets Cairo_FOUND, Cairo_VERSION.

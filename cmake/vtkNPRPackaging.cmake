@@ -9,8 +9,8 @@
 # on that release's VTK and ParaView libraries, as debhelper would.
 #
 # The module build gives four packages, one per install component:
-#   libvtknpr0.1    runtime      the shared libraries (NPR::RenderingNPR, FiltersNPR, IONPR,
-#                                RenderingHeadlessNPR), soname libvtk*NPR.so.0.1 (a 0.x ABI
+#   libvtknpr0.1    runtime      the shared libraries (NPR::Passes, Lines, IO,
+#                                Headless), soname libvtkNPR*.so.0.1 (a 0.x ABI
 #                                changes with the minor version), and the licence
 #   libvtknpr-dev   development  headers, the CMake package (find_package(vtkNPR)), wrapping
 #                                hierarchy files
@@ -117,7 +117,7 @@ else ()
   set(CPACK_DEBIAN_RUNTIME_DESCRIPTION
     "Non-photorealistic rendering for VTK: libraries\n vtkNPR's render passes (G-buffer, edges, toon, sketch, ink and the vtkNPRPass facade),\n object-space feature lines, strict model readers and headless render windows, as VTK\n modules for the release's VTK.")
   set(CPACK_DEBIAN_DEVELOPMENT_DESCRIPTION
-    "Non-photorealistic rendering for VTK: development files\n Headers and the CMake package of vtkNPR: find_package(vtkNPR) gives the targets\n NPR::RenderingNPR, NPR::FiltersNPR, NPR::IONPR and NPR::RenderingHeadlessNPR.")
+    "Non-photorealistic rendering for VTK: development files\n Headers and the CMake package of vtkNPR: find_package(vtkNPR) gives the targets\n NPR::Passes, NPR::Lines, NPR::IO and NPR::Headless.")
   set(CPACK_DEBIAN_PYTHON_DESCRIPTION
     "Non-photorealistic rendering for VTK: Python module\n The vtknpr package: every vtkNPR class for VTK's Python (vtkmodules), and\n vtknpr.pyvista.enable_npr for PyVista plotters.")
   set(CPACK_DEBIAN_PROGRAMS_DESCRIPTION

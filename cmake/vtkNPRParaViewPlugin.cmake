@@ -1,8 +1,8 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 # SPDX-License-Identifier: BSD-3-Clause
 # The ParaView plugin "Render View (NPR)" (Plugin/), built against ParaView's own VTK; the passes
-# module (NPR::RenderingNPR) is compiled into it from Rendering/Passes, with the object-space lines
-# it depends on (NPR::FiltersNPR, Rendering/Lines) and Cairo (found by cmake/FindCairo.cmake).
+# module (NPR::Passes) is compiled into it from Rendering/Passes, with the object-space lines
+# it depends on (NPR::Lines, Rendering/Lines) and Cairo (found by cmake/FindCairo.cmake).
 set(CMAKE_LIBRARY_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
 set(CMAKE_ARCHIVE_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
 set(CMAKE_RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_BINDIR}")

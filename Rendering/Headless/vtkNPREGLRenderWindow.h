@@ -23,12 +23,12 @@
 #ifndef vtkNPREGLRenderWindow_h
 #define vtkNPREGLRenderWindow_h
 
+#include "vtkNPRHeadlessModule.h" // for export macro
 #include "vtkNPRHeadlessRenderWindow.h"
-#include "vtkRenderingHeadlessNPRModule.h" // for export macro
 
 #include <string> // for std::string
 
-class VTKRENDERINGHEADLESSNPR_EXPORT vtkNPREGLRenderWindow : public vtkNPRHeadlessRenderWindow
+class VTKNPRHEADLESS_EXPORT vtkNPREGLRenderWindow : public vtkNPRHeadlessRenderWindow
 {
 public:
   static vtkNPREGLRenderWindow* New();

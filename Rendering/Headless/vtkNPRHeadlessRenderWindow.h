@@ -25,12 +25,11 @@
 #define vtkNPRHeadlessRenderWindow_h
 
 #include "vtkGenericOpenGLRenderWindow.h"
-#include "vtkRenderingHeadlessNPRModule.h" // for export macro
+#include "vtkNPRHeadlessModule.h" // for export macro
 
 #include <string> // for std::string
 
-class VTKRENDERINGHEADLESSNPR_EXPORT vtkNPRHeadlessRenderWindow
-  : public vtkGenericOpenGLRenderWindow
+class VTKNPRHEADLESS_EXPORT vtkNPRHeadlessRenderWindow : public vtkGenericOpenGLRenderWindow
 {
 public:
   vtkTypeMacro(vtkNPRHeadlessRenderWindow, vtkGenericOpenGLRenderWindow);

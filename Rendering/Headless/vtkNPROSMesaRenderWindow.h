@@ -21,12 +21,12 @@
 #ifndef vtkNPROSMesaRenderWindow_h
 #define vtkNPROSMesaRenderWindow_h
 
+#include "vtkNPRHeadlessModule.h" // for export macro
 #include "vtkNPRHeadlessRenderWindow.h"
-#include "vtkRenderingHeadlessNPRModule.h" // for export macro
 
 #include <vector> // for std::vector
 
-class VTKRENDERINGHEADLESSNPR_EXPORT vtkNPROSMesaRenderWindow : public vtkNPRHeadlessRenderWindow
+class VTKNPRHEADLESS_EXPORT vtkNPROSMesaRenderWindow : public vtkNPRHeadlessRenderWindow
 {
 public:
   static vtkNPROSMesaRenderWindow* New();

@@ -30,13 +30,13 @@
 #ifndef vtkNPRRenderWindowFactory_h
 #define vtkNPRRenderWindowFactory_h
 
+#include "vtkNPRHeadlessModule.h" // for export macro
 #include "vtkObject.h"
-#include "vtkRenderingHeadlessNPRModule.h" // for export macro
-#include "vtkWrappingHints.h"              // for VTK_NEWINSTANCE
+#include "vtkWrappingHints.h" // for VTK_NEWINSTANCE
 
 class vtkRenderWindow;
 
-class VTKRENDERINGHEADLESSNPR_EXPORT vtkNPRRenderWindowFactory : public vtkObject
+class VTKNPRHEADLESS_EXPORT vtkNPRRenderWindowFactory : public vtkObject
 {
 public:
   static vtkNPRRenderWindowFactory* New();

@@ -23,12 +23,12 @@
 #ifndef vtkNPRModelReader_h
 #define vtkNPRModelReader_h
 
-#include "vtkIONPRModule.h" // for export macro
+#include "vtkNPRIOModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <string> // for std::string
 
-class VTKIONPR_EXPORT vtkNPRModelReader : public vtkPolyDataAlgorithm
+class VTKNPRIO_EXPORT vtkNPRModelReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkNPRModelReader* New();

@@ -20,12 +20,12 @@
 #ifndef vtkNPROFFReader_h
 #define vtkNPROFFReader_h
 
-#include "vtkIONPRModule.h" // for export macro
+#include "vtkNPRIOModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <string> // for std::string
 
-class VTKIONPR_EXPORT vtkNPROFFReader : public vtkPolyDataAlgorithm
+class VTKNPRIO_EXPORT vtkNPROFFReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkNPROFFReader* New();

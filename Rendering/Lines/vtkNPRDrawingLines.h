@@ -53,7 +53,7 @@
 #ifndef vtkNPRDrawingLines_h
 #define vtkNPRDrawingLines_h
 
-#include "vtkFiltersNPRModule.h" // for export macro
+#include "vtkNPRLinesModule.h" // for export macro
 #include "vtkNPRRendererLines.h"
 
 #include <cstddef> // for size_t
@@ -61,7 +61,7 @@
 
 class vtkPolyData;
 
-class VTKFILTERSNPR_EXPORT vtkNPRDrawingLines : public vtkNPRRendererLines
+class VTKNPRLINES_EXPORT vtkNPRDrawingLines : public vtkNPRRendererLines
 {
 public:
   static vtkNPRDrawingLines* New();

@@ -115,9 +115,9 @@
 #ifndef vtkNPRFeatureLines_h
 #define vtkNPRFeatureLines_h
 
-#include "vtkFiltersNPRModule.h" // for export macro
-#include "vtkNPRLineSettings.h"  // for vtkNPRLineSettingsMacro
-#include "vtkNew.h"              // for LineSettings
+#include "vtkNPRLineSettings.h" // for vtkNPRLineSettingsMacro
+#include "vtkNPRLinesModule.h"  // for export macro
+#include "vtkNew.h"             // for LineSettings
 #include "vtkPolyDataAlgorithm.h"
 
 #include <cstddef> // for size_t
@@ -127,7 +127,7 @@ class vtkCamera;
 class vtkMatrix4x4;
 class vtkNPRMeshAdjacency;
 
-class VTKFILTERSNPR_EXPORT vtkNPRFeatureLines : public vtkPolyDataAlgorithm
+class VTKNPRLINES_EXPORT vtkNPRFeatureLines : public vtkPolyDataAlgorithm
 {
 public:
   static vtkNPRFeatureLines* New();

@@ -16,10 +16,10 @@
 #ifndef vtkNPRLineSettings_h
 #define vtkNPRLineSettings_h
 
-#include "vtkFiltersNPRModule.h" // for export macro
+#include "vtkNPRLinesModule.h" // for export macro
 #include "vtkObject.h"
 
-class VTKFILTERSNPR_EXPORT vtkNPRLineSettings : public vtkObject
+class VTKNPRLINES_EXPORT vtkNPRLineSettings : public vtkObject
 {
 public:
   static vtkNPRLineSettings* New();

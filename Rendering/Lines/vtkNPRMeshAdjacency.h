@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 // SPDX-License-Identifier: BSD-3-Clause
 // What vtkNPRFeatureLines keeps per mesh: the mesh's edges with their faces, built once, and the
-// passes each viewpoint makes over them. Private to NPR::FiltersNPR.
+// passes each viewpoint makes over them. Private to NPR::Lines.
 //
 // Memory (the mesh's own points and cells are read where they are, vtkNPRMeshFaces): per face
 // kept, a single-precision copy of its plane for the side-of-plane test (17 bytes) and its side

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // What the files of vtkNPRMeshAdjacency (the face build, the edge table, the viewpoint passes)
 // and vtkNPRSmoothContours share: the constants of the packed tables and the faces' normal.
-// Private to NPR::FiltersNPR.
+// Private to NPR::Lines.
 #ifndef vtkNPRMeshAdjacencyInternals_h
 #define vtkNPRMeshAdjacencyInternals_h
 

@@ -3,7 +3,7 @@
 // A mesh's points and faces read where the vtkPolyData stores them, without copying them: the
 // numbering of faces, edge uses and triangles that vtkNPRMeshAdjacency and vtkNPROccluders index
 // by, so that a 20M-triangle mesh costs them no second copy of its points or cells. Valid while
-// the mesh's points and cells are unchanged. Private to NPR::FiltersNPR.
+// the mesh's points and cells are unchanged. Private to NPR::Lines.
 #ifndef vtkNPRMeshFaces_h
 #define vtkNPRMeshFaces_h
 

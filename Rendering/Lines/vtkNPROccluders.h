@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 // SPDX-License-Identifier: BSD-3-Clause
 // The triangles of a scene in double precision, and whether a segment passes through one of them:
-// the visibility test of vtkNPRReferenceMask. Private to NPR::FiltersNPR.
+// the visibility test of vtkNPRReferenceMask. Private to NPR::Lines.
 #ifndef vtkNPROccluders_h
 #define vtkNPROccluders_h
 

@@ -72,7 +72,7 @@
 #ifndef vtkNPRReferenceMask_h
 #define vtkNPRReferenceMask_h
 
-#include "vtkFiltersNPRModule.h" // for export macro
+#include "vtkNPRLinesModule.h" // for export macro
 #include "vtkNPRRendererLines.h"
 
 #include <memory> // for std::unique_ptr
@@ -80,7 +80,7 @@
 class vtkImageData;
 class vtkPolyData;
 
-class VTKFILTERSNPR_EXPORT vtkNPRReferenceMask : public vtkNPRRendererLines
+class VTKNPRLINES_EXPORT vtkNPRReferenceMask : public vtkNPRRendererLines
 {
 public:
   static vtkNPRReferenceMask* New();

@@ -17,9 +17,9 @@
 #ifndef vtkNPRRendererLines_h
 #define vtkNPRRendererLines_h
 
-#include "vtkFiltersNPRModule.h" // for export macro
-#include "vtkNPRLineSettings.h"  // for vtkNPRLineSettingsMacro
-#include "vtkNew.h"              // for LineSettings
+#include "vtkNPRLineSettings.h" // for vtkNPRLineSettingsMacro
+#include "vtkNPRLinesModule.h"  // for export macro
+#include "vtkNew.h"             // for LineSettings
 #include "vtkObject.h"
 
 #include <memory> // for std::unique_ptr
@@ -27,7 +27,7 @@
 class vtkNPRSceneLines;
 class vtkRenderer;
 
-class VTKFILTERSNPR_EXPORT vtkNPRRendererLines : public vtkObject
+class VTKNPRLINES_EXPORT vtkNPRRendererLines : public vtkObject
 {
 public:
   vtkTypeMacro(vtkNPRRendererLines, vtkObject);

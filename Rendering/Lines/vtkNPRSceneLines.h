@@ -4,7 +4,7 @@
 // feature lines of each (one vtkNPRFeatureLines per actor, kept), those lines in world
 // coordinates, the occlusion structure of all their triangles (rebuilt only when the scene
 // changed), and the camera's view: projection into the image, clipping, the ray of a point.
-// Private to NPR::FiltersNPR.
+// Private to NPR::Lines.
 #ifndef vtkNPRSceneLines_h
 #define vtkNPRSceneLines_h
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The smooth contours of a mesh with point normals, which vtkNPRMeshAdjacency keeps per mesh:
 // where the facing term g = n . (p - eye) (n . direction in parallel projection), linear over
-// each triangle, changes sign. Made only when asked for. Private to NPR::FiltersNPR.
+// each triangle, changes sign. Made only when asked for. Private to NPR::Lines.
 //
 // Kept per mesh: the triangles (fans of the polygons, the strips' triangles in their winding,
 // none with a repeated or out-of-range point) and the unit point normals (NaN where zero or not

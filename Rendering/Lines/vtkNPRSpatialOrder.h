@@ -5,7 +5,7 @@
 // 32 bits are an index, written in index order. A stable least-significant-digit radix sort on
 // the code alone sorts them by the whole key in linear time (a pass of 16 bits for each 16 bits
 // of code, with a second buffer of the keys' size, counting and moving on all cores), where a
-// comparison sort took 22 passes at 5 million keys. Private to NPR::FiltersNPR.
+// comparison sort took 22 passes at 5 million keys. Private to NPR::Lines.
 #ifndef vtkNPRSpatialOrder_h
 #define vtkNPRSpatialOrder_h
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The geometric tests of vtkNPROccluders, in the frame where the scene's extent is 1: whether a
 // segment meets a triangle (the ray test), and where two triangles cross (the intersection
-// curves). Private to NPR::FiltersNPR.
+// curves). Private to NPR::Lines.
 #ifndef vtkNPRTriangleTests_h
 #define vtkNPRTriangleTests_h
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The module's geometry in GLM's vectors (glm::dvec3 in double, glm::vec3 in float): VTK's
 // double[3] in and out, the exact comparison of points, and the point along a segment. GLM is
-// private to NPR::FiltersNPR: no installed header includes this one. Only GLM's functions that
+// private to NPR::Lines: no installed header includes this one. Only GLM's functions that
 // round as the component-wise expressions they replace are used (cross, dot, length; not
 // normalize or mix, whose other formulas would change the output's bits).
 #ifndef vtkNPRVectors_h

@@ -41,8 +41,8 @@
 #ifndef vtkNPRDrawingExporter_h
 #define vtkNPRDrawingExporter_h
 
+#include "vtkNPRPassesModule.h" // for export macro
 #include "vtkObject.h"
-#include "vtkRenderingNPRModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 #include <string> // for the error message
@@ -54,7 +54,7 @@ class vtkNPREdgePass;
 class vtkRenderWindow;
 class vtkRenderer;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRDrawingExporter : public vtkObject
+class VTKNPRPASSES_EXPORT vtkNPRDrawingExporter : public vtkObject
 {
 public:
   static vtkNPRDrawingExporter* New();

@@ -34,7 +34,7 @@
 #define vtkNPRDrawingPass_h
 
 #include "vtkNPRImageEffectPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkNPRPassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -45,7 +45,7 @@ class vtkNPRGBufferPass;
 class vtkRenderer;
 class vtkPolyData;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRDrawingPass : public vtkNPRImageEffectPass
+class VTKNPRPASSES_EXPORT vtkNPRDrawingPass : public vtkNPRImageEffectPass
 {
 public:
   static vtkNPRDrawingPass* New();

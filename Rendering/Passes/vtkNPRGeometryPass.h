@@ -16,11 +16,11 @@
 #ifndef vtkNPRGeometryPass_h
 #define vtkNPRGeometryPass_h
 
+#include "vtkNPRPassesModule.h" // for export macro
 #include "vtkOpenGLRenderPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
-#include "vtkTimeStamp.h"          // for vtkTimeStamp
+#include "vtkTimeStamp.h" // for vtkTimeStamp
 
-class VTKRENDERINGNPR_EXPORT vtkNPRGeometryPass : public vtkOpenGLRenderPass
+class VTKNPRPASSES_EXPORT vtkNPRGeometryPass : public vtkOpenGLRenderPass
 {
 public:
   vtkTypeMacro(vtkNPRGeometryPass, vtkOpenGLRenderPass);

@@ -20,8 +20,8 @@
 #ifndef vtkNPRImageEffectPass_h
 #define vtkNPRImageEffectPass_h
 
+#include "vtkNPRPassesModule.h" // for export macro
 #include "vtkRenderPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -29,7 +29,7 @@
 class vtkNPRGBufferPass;
 class vtkRenderer;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRImageEffectPass : public vtkRenderPass
+class VTKNPRPASSES_EXPORT vtkNPRImageEffectPass : public vtkRenderPass
 {
 public:
   vtkTypeMacro(vtkNPRImageEffectPass, vtkRenderPass);

@@ -42,7 +42,7 @@
 #define vtkNPRInkPass_h
 
 #include "vtkNPRGeometryPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkNPRPassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
@@ -51,7 +51,7 @@ class vtkRenderer;
 class vtkOpenGLState;
 class vtkNPRShaderHook;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRInkPass : public vtkNPRGeometryPass
+class VTKNPRPASSES_EXPORT vtkNPRInkPass : public vtkNPRGeometryPass
 {
 public:
   static vtkNPRInkPass* New();

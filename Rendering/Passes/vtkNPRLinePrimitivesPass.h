@@ -8,14 +8,14 @@
 #ifndef vtkNPRLinePrimitivesPass_h
 #define vtkNPRLinePrimitivesPass_h
 
+#include "vtkNPRPassesModule.h" // for export macro
 #include "vtkOpenGLRenderPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
 
 class vtkNPREdgePass;
 class vtkNPRGBufferPass;
 class vtkNPROpaquePass;
 
-class VTKRENDERINGNPR_NO_EXPORT vtkNPRLinePrimitivesPass : public vtkOpenGLRenderPass
+class VTKNPRPASSES_NO_EXPORT vtkNPRLinePrimitivesPass : public vtkOpenGLRenderPass
 {
 public:
   static vtkNPRLinePrimitivesPass* New();

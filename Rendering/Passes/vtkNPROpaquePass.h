@@ -11,12 +11,12 @@
 #ifndef vtkNPROpaquePass_h
 #define vtkNPROpaquePass_h
 
+#include "vtkNPRPassesModule.h" // for export macro
 #include "vtkOpaquePass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
 
 class vtkProp;
 
-class VTKRENDERINGNPR_NO_EXPORT vtkNPROpaquePass : public vtkOpaquePass
+class VTKNPRPASSES_NO_EXPORT vtkNPROpaquePass : public vtkOpaquePass
 {
 public:
   static vtkNPROpaquePass* New();

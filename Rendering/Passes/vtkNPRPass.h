@@ -40,8 +40,8 @@
 #ifndef vtkNPRPass_h
 #define vtkNPRPass_h
 
+#include "vtkNPRPassesModule.h" // for export macro
 #include "vtkRenderPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
 
 class vtkDualDepthPeelingPass;
 class vtkNPRDrawingPass;
@@ -55,7 +55,7 @@ class vtkRenderStepsPass;
 class vtkSequencePass;
 class vtkTranslucentPass;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRPass : public vtkRenderPass
+class VTKNPRPASSES_EXPORT vtkNPRPass : public vtkRenderPass
 {
 public:
   static vtkNPRPass* New();

@@ -55,7 +55,7 @@
 #define vtkNPRSketchPass_h
 
 #include "vtkNPRImageEffectPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkNPRPassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -68,7 +68,7 @@ class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRSketchPass : public vtkNPRImageEffectPass
+class VTKNPRPASSES_EXPORT vtkNPRSketchPass : public vtkNPRImageEffectPass
 {
 public:
   static vtkNPRSketchPass* New();

@@ -24,7 +24,7 @@
 
 namespace
 {
-// The vtkNPRFeatureLines::FeatureTypes bits (FiltersNPR's header is not needed for four values).
+// The vtkNPRFeatureLines::FeatureTypes bits (Lines's header is not needed for four values).
 constexpr unsigned char SilhouetteBit = 1, CreaseBit = 2, BoundaryBit = 4, NonManifoldBit = 8;
 
 // The class of a visible stroke of this line type; -1 for an unknown type.

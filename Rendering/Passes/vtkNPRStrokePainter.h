@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Paints the strokes of vtkNPRDrawingLines with Cairo: onto an image for vtkNPRDrawingPass, into
 // SVG, PDF and PostScript files for vtkNPRDrawingExporter, the same paths for both. Private to
-// NPR::RenderingNPR.
+// NPR::Passes.
 #ifndef vtkNPRStrokePainter_h
 #define vtkNPRStrokePainter_h
 

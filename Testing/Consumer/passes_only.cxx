@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Uses only the render passes (NPR::RenderingNPR): builds the chain of every style, and checks
+// Uses only the render passes (NPR::Passes): builds the chain of every style, and checks
 // that the styles' names round-trip. Renders nothing: it brings no window of its own.
 #include "vtkNPRPass.h"
 #include "vtkNew.h"

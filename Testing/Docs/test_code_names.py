@@ -10,8 +10,8 @@ Every name a page writes in backticks, without spaces, is looked up in the repos
   `Rendering/Passes/Testing/Cxx/Test<Pass>.cxx`)
   must name a file or folder: from the top, or as the end of a tracked path; `<...>` and `*`
   match any part of one name;
-- a module or target (`NPR::FiltersNPR`) must be a module's NAME in a `vtk.module` or a target
-  the CMake files add; a library (`libvtkFiltersNPR`) or Python submodule (`vtknpr.vtkIONPR`) a
+- a module or target (`NPR::Lines`) must be a module's NAME in a `vtk.module` or a target
+  the CMake files add; a library (`libvtkNPRLines`) or Python submodule (`vtknpr.vtkNPRIO`) a
   module's LIBRARY_NAME;
 - a member (`vtkNPRRenderTarget::Scope`, `vtkNPRPass::Render`) must be named in the files of its
   class (those named after it, or declaring it);

@@ -67,7 +67,7 @@ check_vtk() {
   # The system's Python, no PYTHONPATH: import vtknpr and render through vtkNPRPass.
   check python-vtknpr env -u PYTHONPATH python3 /src/Testing/Packages/check_vtknpr.py python "$upstream"
   # A separate project: find_package(vtkNPR) from /usr, built and its tests run (EGL rendering,
-  # only NPR::RenderingNPR linked, OSMesa where the module has its own window).
+  # only NPR::Passes linked, OSMesa where the module has its own window).
   check find-package-consumer bash -c "cmake -S /src/Testing/Consumer -B $work/consumer -G Ninja \
     -DCMAKE_BUILD_TYPE=Release -DNPR_EXPECTED_DIR=/usr/lib/cmake/vtkNPR &&
     cmake --build $work/consumer && ctest --test-dir $work/consumer --output-on-failure"

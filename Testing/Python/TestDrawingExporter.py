@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""vtkNPRDrawingExporter from Python: reachable from vtknpr (and its vtkRenderingNPR submodule),
+"""vtkNPRDrawingExporter from Python: reachable from vtknpr (and its vtkNPRPasses submodule),
 writes an SVG of the CAD part with one <path> per stroke and the class groups, and reports an
 unknown extension as an error naming the supported ones."""
 import argparse
@@ -18,7 +18,7 @@ from vtkmodules.vtkCommonCore import vtkOutputWindow  # noqa: E402
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer  # noqa: E402
 import vtkmodules.vtkRenderingOpenGL2  # noqa: E402,F401
 
-assert vtknpr.vtkRenderingNPR.vtkNPRDrawingExporter is vtkNPRDrawingExporter
+assert vtknpr.vtkNPRPasses.vtkNPRDrawingExporter is vtkNPRDrawingExporter
 
 window = vtkNPRRenderWindowFactory.CreateRenderWindow(None)
 assert window is not None, "no headless window"

@@ -22,17 +22,17 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: E402,F401  (object factory overri
 # One submodule per VTK module; every class also at the top, as before the modules were split.
 import importlib  # noqa: E402
 expected = {
-    "vtkRenderingNPR": ["vtkNPRPass", "vtkNPRGBufferPass", "vtkNPREdgePass", "vtkNPRToonPass",
-                        "vtkNPRSketchPass", "vtkNPRInkPass"],
-    "vtkFiltersNPR": ["vtkNPRFeatureLines", "vtkNPRReferenceMask"],
-    "vtkIONPR": ["vtkNPRModelReader", "vtkNPROFFReader", "vtkNPRShadingNormals"],
-    "vtkRenderingHeadlessNPR": ["vtkNPRRenderWindowFactory"],
+    "vtkNPRPasses": ["vtkNPRPass", "vtkNPRGBufferPass", "vtkNPREdgePass", "vtkNPRToonPass",
+                     "vtkNPRSketchPass", "vtkNPRInkPass"],
+    "vtkNPRLines": ["vtkNPRFeatureLines", "vtkNPRReferenceMask", "vtkNPRShadingNormals"],
+    "vtkNPRIO": ["vtkNPRModelReader", "vtkNPROFFReader"],
+    "vtkNPRHeadless": ["vtkNPRRenderWindowFactory"],
 }
 for submodule, classes in expected.items():
     module = importlib.import_module("vtknpr." + submodule)
     for name in classes:
         assert getattr(module, name) is getattr(vtknpr, name), (submodule, name)
-headless = importlib.import_module("vtknpr.vtkRenderingHeadlessNPR")
+headless = importlib.import_module("vtknpr.vtkNPRHeadless")
 if hasattr(headless, "vtkNPREGLRenderWindow"):  # VTK 9.1-9.3: the module's own windows
     assert vtknpr.vtkNPROSMesaRenderWindow is headless.vtkNPROSMesaRenderWindow
 

@@ -23,7 +23,7 @@ import weakref
 import pyvista
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 
-from .vtkRenderingNPR import vtkNPRPass, vtkNPRSketchPass
+from .vtkNPRPasses import vtkNPRPass, vtkNPRSketchPass
 
 __all__ = ["enable_npr", "disable_npr", "npr_pass", "SETTINGS"]
 

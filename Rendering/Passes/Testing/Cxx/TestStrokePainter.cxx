@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 // SPDX-License-Identifier: BSD-3-Clause
-// The Cairo stroke painter (vtkNPRStrokePainter, private to NPR::RenderingNPR) on a hand-made
+// The Cairo stroke painter (vtkNPRStrokePainter, private to NPR::Passes) on a hand-made
 // stroke set: a visible horizontal silhouette, a dashed hidden line and a closed square (crease).
 //   raster  coverage where the strokes are and nowhere else, rows bottom-up, premultiplied
 //           colours, the dash period and gaps, hidden lines left out when the style says so

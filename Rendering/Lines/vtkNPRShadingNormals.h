@@ -27,10 +27,10 @@
 #ifndef vtkNPRShadingNormals_h
 #define vtkNPRShadingNormals_h
 
-#include "vtkIONPRModule.h" // for export macro
+#include "vtkNPRLinesModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class VTKIONPR_EXPORT vtkNPRShadingNormals : public vtkPolyDataAlgorithm
+class VTKNPRLINES_EXPORT vtkNPRShadingNormals : public vtkPolyDataAlgorithm
 {
 public:
   static vtkNPRShadingNormals* New();
