@@ -11,7 +11,6 @@ the paraview-5.11 test stage built the plugin:
        --plugin /build/lib/paraview-5.11/plugins/NPRView/NPRView.so \
        --output-dir Documentation/images/paraview'
 """
-import argparse
 import os
 import sys
 
@@ -19,13 +18,9 @@ from paraview.simple import LoadPlugin, Render, SaveScreenshot
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "..", "..", "Plugin", "Testing", "Python"))
-from nprviewscene import STYLES, create_scene  # noqa: E402
+from nprviewscene import STYLES, create_scene, plugin_arguments  # noqa: E402
 
-ap = argparse.ArgumentParser()
-ap.add_argument("--plugin", required=True)
-ap.add_argument("--output-dir", required=True)
-args = ap.parse_args()
-os.makedirs(args.output_dir, exist_ok=True)
+args = plugin_arguments()
 
 LoadPlugin(args.plugin, ns=globals())
 size = [480, 360]

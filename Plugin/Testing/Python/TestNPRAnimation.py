@@ -8,7 +8,6 @@ land on a line pixel (within 1 pixel) at least as often as in the Edges style le
 
   pvbatch TestNPRAnimation.py --plugin NPRView.so --output-dir DIR
 """
-import argparse
 import glob
 import math
 import os
@@ -17,13 +16,9 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from nprviewscene import SIZE, STYLES, create_scene, dark, read_png  # noqa: E402
+from nprviewscene import SIZE, STYLES, create_scene, dark, plugin_arguments, read_png  # noqa: E402
 
-ap = argparse.ArgumentParser()
-ap.add_argument("--plugin", required=True)
-ap.add_argument("--output-dir", required=True)
-args = ap.parse_args()
-os.makedirs(args.output_dir, exist_ok=True)
+args = plugin_arguments()
 LoadPlugin(args.plugin, ns=globals())
 
 FRAMES = 8

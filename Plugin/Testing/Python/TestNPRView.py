@@ -10,7 +10,6 @@ Serial: each style with the full G-buffer (baseline <style>.png), and the line s
 ForceDepthOnly (baseline <style>-depth.png). With --mpi (mpiexec -n 2): the images come from IceT's
 composited depth and must match the serial depth-only baselines within MPI_TOLERANCE.
 """
-import argparse
 import os
 import sys
 
@@ -18,16 +17,10 @@ from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from nprviewscene import SIZE, STYLES, create_scene, dark, read_png  # noqa: E402
+from nprviewscene import SIZE, STYLES, create_scene, dark, plugin_arguments, read_png  # noqa: E402
 
-ap = argparse.ArgumentParser()
-ap.add_argument("--plugin", required=True)
-ap.add_argument("--output-dir", required=True)
-ap.add_argument("--baseline-dir")
-ap.add_argument("--mpi", action="store_true")
-ap.add_argument("--make-baselines", action="store_true")
-args = ap.parse_args()
-os.makedirs(args.output_dir, exist_ok=True)
+args = plugin_arguments(("--baseline-dir", {}), ("--mpi", {"action": "store_true"}),
+                        ("--make-baselines", {"action": "store_true"}))
 
 # Regression threshold of vtkTesting (as VTK's image tests) for baselines made on Mesa llvmpipe.
 THRESHOLD = 10

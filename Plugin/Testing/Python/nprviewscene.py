@@ -2,12 +2,28 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The scene and image helpers shared by the plugin's tests (TestNPRView.py, TestNPRClientServer.py)
 and the documentation's screenshot script."""
+import argparse
+import os
+
 from paraview.simple import Box, ColorBy, Contour, CreateView, Cylinder, Show, Wavelet
 from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 SIZE = [400, 300]
 STYLES = ["Shaded", "Edges", "Toon", "Toon+Edges", "Sketch", "Inked", "Drawing"]
+
+
+def plugin_arguments(*extra):
+    """Parse --plugin and --output-dir, besides the flags named in extra (each a name and
+    add_argument's keywords), and make the output folder."""
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--plugin", required=True)
+    ap.add_argument("--output-dir", required=True)
+    for name, options in extra:
+        ap.add_argument(name, **options)
+    args = ap.parse_args()
+    os.makedirs(args.output_dir, exist_ok=True)
+    return args
 
 
 def create_scene(size=SIZE):
