@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 vtkSmartPointer<vtkActor> nprAddActor(
   vtkRenderer* renderer, vtkAlgorithmOutput* port, const double color[3])
@@ -153,6 +154,21 @@ vtkSmartPointer<vtkPolyData> nprPolygonSoup(vtkPolyData* mesh)
   soup->SetPoints(points);
   soup->SetPolys(polygons);
   return soup;
+}
+
+vtkSmartPointer<vtkPolyData> nprBreakNormals(vtkPolyData* mesh, const std::vector<vtkIdType>& ids)
+{
+  auto broken = vtkSmartPointer<vtkPolyData>::New();
+  broken->DeepCopy(mesh);
+  vtkDataArray* normals = broken->GetPointData()->GetNormals();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const double kinds[3][3] = { { 0.0, 0.0, 0.0 }, { nan, 0.0, 0.0 }, { nan, inf, 0.0 } };
+  for (size_t i = 0; i < ids.size(); ++i)
+  {
+    normals->SetTuple(ids[i], kinds[i % 3]);
+  }
+  return broken;
 }
 
 void nprForEachCell(vtkCellArray* cells,

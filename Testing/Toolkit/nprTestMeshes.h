@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 // SPDX-License-Identifier: BSD-3-Clause
-// The test toolkit's meshes and scenes: actors of sources, spheres, a torus with exact normals, a
-// walk over cells, the test models and the cameras the tests share.
+// The test toolkit's meshes and scenes: actors of sources, spheres, a torus with exact normals,
+// copies with broken normals, a walk over cells, the test models and the cameras the tests share.
 #ifndef nprTestMeshes_h
 #define nprTestMeshes_h
 
@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 class vtkActor;
 class vtkAlgorithmOutput;
@@ -78,6 +79,10 @@ vtkSmartPointer<vtkPolyData> nprMakeTorus(double R, double r, int along, int aro
 
 // The mesh's polygons, each with its own points (a soup: no point shared).
 vtkSmartPointer<vtkPolyData> nprPolygonSoup(vtkPolyData* mesh);
+
+// A deep copy of the mesh whose point normals at ids are broken, in turn a zero vector, a NaN and a
+// NaN with an infinity: the input of the checks that a filter survives invalid normals.
+vtkSmartPointer<vtkPolyData> nprBreakNormals(vtkPolyData* mesh, const std::vector<vtkIdType>& ids);
 
 // Calls visit for each cell of cells in order, with its index and point ids.
 void nprForEachCell(vtkCellArray* cells,
