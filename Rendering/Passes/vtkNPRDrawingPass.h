@@ -34,7 +34,7 @@
 #define vtkNPRDrawingPass_h
 
 #include "vtkNPREdgeEffectPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkNPRPassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -43,7 +43,7 @@ class vtkNPRDrawingLines;
 class vtkRenderer;
 class vtkPolyData;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRDrawingPass : public vtkNPREdgeEffectPass
+class VTKNPRPASSES_EXPORT vtkNPRDrawingPass : public vtkNPREdgeEffectPass
 {
 public:
   static vtkNPRDrawingPass* New();

@@ -16,11 +16,11 @@
 #define vtkNPREdgeEffectPass_h
 
 #include "vtkNPRImageEffectPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkNPRPassesModule.h" // for export macro
 
 class vtkNPREdgePass;
 
-class VTKRENDERINGNPR_EXPORT vtkNPREdgeEffectPass : public vtkNPRImageEffectPass
+class VTKNPRPASSES_EXPORT vtkNPREdgeEffectPass : public vtkNPRImageEffectPass
 {
 public:
   vtkTypeMacro(vtkNPREdgeEffectPass, vtkNPRImageEffectPass);

@@ -66,7 +66,7 @@
 
 #include "vtkNPRGBufferPass.h" // for the encodings
 #include "vtkNPRImageEffectPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkNPRPassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -74,7 +74,7 @@
 class vtkRenderer;
 class vtkShaderProgram;
 
-class VTKRENDERINGNPR_EXPORT vtkNPREdgePass : public vtkNPRImageEffectPass
+class VTKNPRPASSES_EXPORT vtkNPREdgePass : public vtkNPRImageEffectPass
 {
 public:
   static vtkNPREdgePass* New();

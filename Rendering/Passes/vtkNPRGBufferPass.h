@@ -66,7 +66,7 @@
 #define vtkNPRGBufferPass_h
 
 #include "vtkNPRGeometryPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkNPRPassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
@@ -76,7 +76,7 @@ class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkTextureObject;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRGBufferPass : public vtkNPRGeometryPass
+class VTKNPRPASSES_EXPORT vtkNPRGBufferPass : public vtkNPRGeometryPass
 {
 public:
   static vtkNPRGBufferPass* New();

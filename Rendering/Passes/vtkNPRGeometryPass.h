@@ -19,7 +19,7 @@
 #define vtkNPRGeometryPass_h
 
 #include "vtkOpenGLRenderPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkNPRPassesModule.h" // for export macro
 #include "vtkTimeStamp.h"          // for vtkTimeStamp
 
 #include <memory> // for std::unique_ptr
@@ -27,7 +27,7 @@
 
 class vtkNPRShaderHook;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRGeometryPass : public vtkOpenGLRenderPass
+class VTKNPRPASSES_EXPORT vtkNPRGeometryPass : public vtkOpenGLRenderPass
 {
 public:
   vtkTypeMacro(vtkNPRGeometryPass, vtkOpenGLRenderPass);

@@ -22,7 +22,7 @@
 #define vtkNPRImageEffectPass_h
 
 #include "vtkRenderPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkNPRPassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -30,7 +30,7 @@
 class vtkNPRGBufferPass;
 class vtkRenderer;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRImageEffectPass : public vtkRenderPass
+class VTKNPRPASSES_EXPORT vtkNPRImageEffectPass : public vtkRenderPass
 {
 public:
   vtkTypeMacro(vtkNPRImageEffectPass, vtkRenderPass);

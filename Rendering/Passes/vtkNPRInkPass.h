@@ -42,12 +42,12 @@
 #define vtkNPRInkPass_h
 
 #include "vtkNPRGeometryPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkNPRPassesModule.h" // for export macro
 
 class vtkOpenGLState;
 class vtkRenderer;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRInkPass : public vtkNPRGeometryPass
+class VTKNPRPASSES_EXPORT vtkNPRInkPass : public vtkNPRGeometryPass
 {
 public:
   static vtkNPRInkPass* New();

@@ -55,7 +55,7 @@
 #define vtkNPRSketchPass_h
 
 #include "vtkNPREdgeEffectPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkNPRPassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -66,7 +66,7 @@ class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRSketchPass : public vtkNPREdgeEffectPass
+class VTKNPRPASSES_EXPORT vtkNPRSketchPass : public vtkNPREdgeEffectPass
 {
 public:
   static vtkNPRSketchPass* New();

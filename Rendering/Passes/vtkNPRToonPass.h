@@ -41,13 +41,13 @@
 #define vtkNPRToonPass_h
 
 #include "vtkNPRGeometryPass.h"
-#include "vtkRenderingNPRModule.h" // for export macro
+#include "vtkNPRPassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
 class vtkScalarsToColors;
 
-class VTKRENDERINGNPR_EXPORT vtkNPRToonPass : public vtkNPRGeometryPass
+class VTKNPRPASSES_EXPORT vtkNPRToonPass : public vtkNPRGeometryPass
 {
 public:
   static vtkNPRToonPass* New();
