@@ -44,7 +44,6 @@ struct vtkNPRDrawingPass::Internals
 };
 
 vtkStandardNewMacro(vtkNPRDrawingPass);
-vtkCxxSetObjectMacro(vtkNPRDrawingPass, EdgePass, vtkNPREdgePass);
 
 vtkNPRDrawingPass::vtkNPRDrawingPass()
   : Internal(new Internals)
@@ -57,7 +56,6 @@ vtkNPRDrawingPass::~vtkNPRDrawingPass()
   {
     this->Internal->StrokeTexture->Delete();
   }
-  this->SetEdgePass(nullptr);
 }
 
 vtkNPRDrawingLines* vtkNPRDrawingPass::GetDrawingLines()
@@ -73,16 +71,6 @@ vtkPolyData* vtkNPRDrawingPass::GetStrokes()
 vtkIdType vtkNPRDrawingPass::GetNumberOfStrokeUpdates() const
 {
   return this->Internal->StrokeUpdates;
-}
-
-vtkNPRGBufferPass* vtkNPRDrawingPass::GetGBuffer()
-{
-  if (!this->EdgePass)
-  {
-    vtkErrorMacro("no edge pass: set one (its G-buffer and line settings are used)");
-    return nullptr;
-  }
-  return this->EdgePass->GetGBufferPass();
 }
 
 bool vtkNPRDrawingPass::UpdateImages(const vtkRenderState* state)
@@ -202,8 +190,9 @@ bool vtkNPRDrawingPass::DrawComposite(const vtkRenderState* state, const int ori
   return true;
 }
 
-void vtkNPRDrawingPass::ReleaseEffectResources(vtkWindow* window)
+void vtkNPRDrawingPass::ReleaseGraphicsResources(vtkWindow* window)
 {
+  this->Superclass::ReleaseGraphicsResources(window);
   Internals& internal = *this->Internal;
   internal.Composite.Release(window);
   if (internal.StrokeTexture)
@@ -218,7 +207,6 @@ void vtkNPRDrawingPass::ReleaseEffectResources(vtkWindow* window)
 void vtkNPRDrawingPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "EdgePass: " << this->EdgePass << "\n";
   os << indent << "HiddenLines: " << this->HiddenLines << "\n";
   os << indent << "FaceColor: " << this->FaceColor[0] << " " << this->FaceColor[1] << " "
      << this->FaceColor[2] << "\n";

@@ -33,32 +33,23 @@
 #ifndef vtkNPRDrawingPass_h
 #define vtkNPRDrawingPass_h
 
-#include "vtkNPRImageEffectPass.h"
+#include "vtkNPREdgeEffectPass.h"
 #include "vtkNPRPassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
 class vtkNPRDrawingLines;
-class vtkNPREdgePass;
-class vtkNPRGBufferPass;
 class vtkRenderer;
 class vtkPolyData;
 
-class VTKNPRPASSES_EXPORT vtkNPRDrawingPass : public vtkNPRImageEffectPass
+class VTKNPRPASSES_EXPORT vtkNPRDrawingPass : public vtkNPREdgeEffectPass
 {
 public:
   static vtkNPRDrawingPass* New();
-  vtkTypeMacro(vtkNPRDrawingPass, vtkNPRImageEffectPass);
+  vtkTypeMacro(vtkNPRDrawingPass, vtkNPREdgeEffectPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * The edge pass whose G-buffer is read and whose line settings are used (required).
-   */
-  virtual void SetEdgePass(vtkNPREdgePass* pass);
-  vtkGetObjectMacro(EdgePass, vtkNPREdgePass);
-  ///@}
+  void ReleaseGraphicsResources(vtkWindow* window) override;
 
   ///@{
   /**
@@ -126,15 +117,12 @@ protected:
   vtkNPRDrawingPass();
   ~vtkNPRDrawingPass() override;
 
-  // The steps of the frame (vtkNPRImageEffectPass).
-  vtkNPRGBufferPass* GetGBuffer() override;
+  // The steps of the frame (vtkNPRImageEffectPass) beside the G-buffer (vtkNPREdgeEffectPass).
   bool UpdateImages(const vtkRenderState* state) override;
   std::string GetCompositeKey(vtkRenderer* renderer) override;
   void GetCompositeRectangle(vtkRenderer* renderer, int rect[4]) override;
   bool DrawComposite(const vtkRenderState* state, const int origin[2]) override;
-  void ReleaseEffectResources(vtkWindow* window) override;
 
-  vtkNPREdgePass* EdgePass = nullptr;
   bool HiddenLines = false;
   double FaceColor[3] = { 1.0, 1.0, 1.0 };
   double HiddenLineColor[3] = { 0.45, 0.45, 0.45 };

@@ -412,8 +412,9 @@ void vtkNPREdgePass::SetCompositeUniforms(vtkShaderProgram* program, const int o
   program->SetUniform3f("suggestiveColor", this->SuggestiveContourColor);
 }
 
-void vtkNPREdgePass::ReleaseEffectResources(vtkWindow* window)
+void vtkNPREdgePass::ReleaseGraphicsResources(vtkWindow* window)
 {
+  this->Superclass::ReleaseGraphicsResources(window);
   Internals& internal = *this->Internal;
   internal.Detect.Release(window);
   internal.Composite.Release(window);

@@ -80,6 +80,7 @@ public:
   static vtkNPREdgePass* New();
   vtkTypeMacro(vtkNPREdgePass, vtkNPRImageEffectPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
 
   ///@{
   /**
@@ -304,7 +305,6 @@ protected:
   std::string GetCompositeKey(vtkRenderer* renderer) override;
   void GetCompositeRectangle(vtkRenderer* renderer, int rect[4]) override;
   bool DrawComposite(const vtkRenderState* state, const int origin[2]) override;
-  void ReleaseEffectResources(vtkWindow* window) override;
 
   vtkNPRGBufferPass* GBufferPass = nullptr;
   bool Silhouettes = true;

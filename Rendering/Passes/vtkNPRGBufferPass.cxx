@@ -26,6 +26,7 @@
 #include "vtkNPRDepthGeometryFS.h"
 #include "vtkNPRGBufferDecl.h"
 #include "vtkNPRGBufferImpl.h"
+#include "vtkNPRPackNormal.h"
 #include "vtkNPRQuadProgram.h"
 #include "vtkNPRRenderTarget.h"
 
@@ -33,6 +34,17 @@
 #include <cmath>
 #include <cstring>
 #include <vector>
+
+namespace
+{
+// `source` with the normal packing that the G-buffer output and the depth-only geometry share.
+std::string WithPackNormal(const char* source)
+{
+  std::string text = source;
+  vtkShaderProgram::Substitute(text, "//NPR::PackNormal", vtkNPRPackNormal);
+  return text;
+}
+}
 
 struct vtkNPRGBufferPass::Internals
 {
@@ -44,16 +56,18 @@ struct vtkNPRGBufferPass::Internals
   // Depth-only mode: geometry from depth, and the copy back into the caller's framebuffer.
   vtkNPRQuadProgram DepthGeometry;
   vtkNPRQuadProgram Copy;
-  // Our code after lighting, where the normal and position are in scope. (The draw sets its
-  // Window under the name it had as the shader check.)
-  vtkNPRShaderHook Hook{ "GBuffer", "//VTK::Light::Impl", "the G-buffer output" };
   vtkNPRRenderTarget Target;
+  // The shaders with the shared normal packing in place.
+  const std::string Decl = WithPackNormal(vtkNPRGBufferDecl);
+  const std::string DepthGeometrySource = WithPackNormal(vtkNPRDepthGeometryFS);
 };
 
 vtkStandardNewMacro(vtkNPRGBufferPass);
 
+// Our code after lighting, where the normal and position are in scope.
 vtkNPRGBufferPass::vtkNPRGBufferPass()
-  : Internal(new Internals)
+  : vtkNPRGeometryPass("GBuffer", "//VTK::Light::Impl", "the G-buffer output")
+  , Internal(new Internals)
 {
   this->InverseProjection = vtkMatrix4x4::New();
   this->ShaderStageTime.Modified();
@@ -323,7 +337,6 @@ void vtkNPRGBufferPass::UpdateProjection(
 void vtkNPRGBufferPass::DrawGeometry(const vtkRenderState* state, int width, int height)
 {
   auto* window = static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow());
-  this->Internal->Hook.Window = window;
   this->HasLinePrimitives = false; // SetShaderParameters() sees them
   this->PreRender(state);          // the mappers now call this pass's shader hooks
   {
@@ -379,7 +392,7 @@ void vtkNPRGBufferPass::DeriveGeometryFromDepth(
   vtkOpenGLRenderWindow* window, int width, int height)
 {
   vtkShaderProgram* program =
-    this->Internal->DepthGeometry.Ready(window, vtkNPRDepthGeometryFS, "");
+    this->Internal->DepthGeometry.Ready(window, this->Internal->DepthGeometrySource, "");
   if (!program)
   {
     vtkErrorMacro("the depth-only geometry shader did not compile");
@@ -421,28 +434,14 @@ void vtkNPRGBufferPass::CopyBack(const vtkRenderState* state, int width, int hei
   this->DepthTexture->Deactivate();
 }
 
-bool vtkNPRGBufferPass::PreReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+void vtkNPRGBufferPass::FillShaderCode(std::string& vertexShader, std::string& geometryShader,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  // Filled in after VTK's own replacements, when we know what the shader has.
-  this->Internal->Hook.InsertTags(this, fragmentShader, mapper);
-  return true;
-}
-
-bool vtkNPRGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
-  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper,
-  vtkProp* prop)
-{
-  vtkNPRShaderHook& hook = this->Internal->Hook;
-  if (!hook.IsTagged(fragmentShader, mapper))
-  {
-    return true;
-  }
   if (vtkNPRKeepsOwnLook(mapper, prop))
   {
     // Not geometry: drawn after the effect (vtkNPRPass), so left out here.
-    hook.Fill(fragmentShader, "", "  discard;\n");
-    return true;
+    this->Hook->Fill(fragmentShader, "", "  discard;\n");
+    return;
   }
   const std::string defines = vtkNPRShaderHook::Defines({
     { "NPR_WRITE_NORMALS", this->WritesNormals },
@@ -455,9 +454,8 @@ bool vtkNPRGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
     { "NPR_PERSPECTIVE", this->Perspective },
   });
   // If not: colour and depth as VTK draws them; the effects see what it covers as background.
-  hook.Apply(this, prop, { vertexShader, geometryShader, fragmentShader },
-    defines + vtkNPRGBufferDecl, vtkNPRGBufferImpl);
-  return true;
+  this->Hook->Apply(this, prop, { vertexShader, geometryShader, fragmentShader },
+    defines + this->Internal->Decl, vtkNPRGBufferImpl);
 }
 
 bool vtkNPRGBufferPass::SetShaderParameters(

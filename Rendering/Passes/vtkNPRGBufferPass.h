@@ -232,17 +232,17 @@ public:
    */
   unsigned long GetContentVersion() const { return this->ContentVersion; }
 
-  // vtkOpenGLRenderPass hooks: add the G-buffer outputs to the mappers' fragment shaders.
-  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
-  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  // vtkOpenGLRenderPass hook: the G-buffer outputs' uniforms.
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* vao = nullptr) override;
 
 protected:
   vtkNPRGBufferPass();
   ~vtkNPRGBufferPass() override;
+
+  // The G-buffer outputs in the mappers' fragment shaders (vtkNPRGeometryPass).
+  void FillShaderCode(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
 
   void AllocateBuffers(
     vtkOpenGLRenderWindow* window, int width, int height, int components, int encoding);

@@ -3,10 +3,20 @@
 #include "vtkNPRGeometryPass.h"
 
 #include "vtkNPRPassUtilities.h"
+#include "vtkNPRShaderHook.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
 
 vtkCxxSetObjectMacro(vtkNPRGeometryPass, DelegatePass, vtkRenderPass);
+
+vtkNPRGeometryPass::vtkNPRGeometryPass(
+  const char* hookName, const char* implAfter, const char* what)
+  : Hook(new vtkNPRShaderHook(hookName, implAfter, what))
+{
+}
 
 vtkNPRGeometryPass::~vtkNPRGeometryPass()
 {
@@ -23,7 +33,30 @@ bool vtkNPRGeometryPass::StartRender(const vtkRenderState* state)
     return false;
   }
   this->LastRenderWasSelection = vtkNPRRenderSelection(state, this->NumberOfRenderedProps);
-  return !this->LastRenderWasSelection;
+  if (this->LastRenderWasSelection)
+  {
+    return false;
+  }
+  this->Hook->Window = static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow());
+  return true;
+}
+
+bool vtkNPRGeometryPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  this->Hook->InsertTags(this, fragmentShader, mapper);
+  return true;
+}
+
+bool vtkNPRGeometryPass::PostReplaceShaderValues(std::string& vertexShader,
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper,
+  vtkProp* prop)
+{
+  if (this->Hook->IsTagged(fragmentShader, mapper))
+  {
+    this->FillShaderCode(vertexShader, geometryShader, fragmentShader, mapper, prop);
+  }
+  return true;
 }
 
 void vtkNPRGeometryPass::ReleaseGraphicsResources(vtkWindow* window)

@@ -157,7 +157,6 @@ std::string vtkNPRImageEffectPass::FrameKey(vtkRenderer* renderer, const int win
 
 void vtkNPRImageEffectPass::ReleaseGraphicsResources(vtkWindow* window)
 {
-  this->ReleaseEffectResources(window);
   this->Internal->Kept.ReleaseGraphicsResources(window);
   this->Internal->Key.clear();
 }

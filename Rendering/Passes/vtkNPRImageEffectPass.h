@@ -13,7 +13,8 @@
  * 4. otherwise the composite: the effect's full-screen program over the view, with the depth of
  *    every pixel it writes (a depth sprite, vtkNPRCompositeState), then kept for the next frame.
  * A subclass supplies the steps (GetGBuffer, UpdateImages, GetCompositeKey, GetCompositeRectangle,
- * DrawComposite) and nothing of the frame around them.
+ * DrawComposite) and nothing of the frame around them; it frees its own textures and programs in
+ * ReleaseGraphicsResources(), after this class's.
  *
  * @sa vtkNPREdgePass vtkNPRSketchPass vtkNPRDrawingPass vtkNPRGBufferPass
  */
@@ -39,6 +40,9 @@ public:
    * Runs the frame described above into the current framebuffer.
    */
   void Render(const vtkRenderState* state) override;
+  /**
+   * Releases the kept composite (a subclass adds its own resources).
+   */
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
   ///@{
@@ -80,8 +84,6 @@ protected:
   // Draws the composite into the current framebuffer, whose state vtkNPRCompositeState applied
   // (the viewport at `origin`, the scissor at the rectangle); false: the program did not compile.
   virtual bool DrawComposite(const vtkRenderState* state, const int origin[2]) = 0;
-  // Frees the subclass's own textures and programs.
-  virtual void ReleaseEffectResources(vtkWindow* window) = 0;
 
   // The frame's guard and first step, for Render() and a subclass's other outputs: the G-buffer,
   // with content and not from a picking render, once UpdateImages() succeeded; null otherwise.

@@ -53,7 +53,7 @@ bool vtkNPRCallsInkHooks(vtkMapper* mapper)
 
 // The ink's code after texturing: the colour is final there.
 vtkNPRInkPass::vtkNPRInkPass()
-  : Hook(new vtkNPRShaderHook("Ink", "//VTK::TCoord::Impl", "the ink"))
+  : vtkNPRGeometryPass("Ink", "//VTK::TCoord::Impl", "the ink")
 {
 }
 
@@ -78,7 +78,6 @@ void vtkNPRInkPass::Render(const vtkRenderState* state)
   {
     this->ClearMask(renderer);
   }
-  this->Hook->Window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   this->PreRender(state); // the mappers now call this pass's shader hooks
   this->DrawBackFaceInk(state, drawnWidth);
   this->DrawFilledFaces(state, visibleWidth);
@@ -175,23 +174,12 @@ void vtkNPRInkPass::DrawFilledFaces(const vtkRenderState* state, double visibleW
   this->DrawMode = DrawShaded;
 }
 
-bool vtkNPRInkPass::PreReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
-{
-  this->Hook->InsertTags(this, fragmentShader, mapper);
-  return true;
-}
-
-bool vtkNPRInkPass::PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+void vtkNPRInkPass::FillShaderCode(std::string& vertexShader, std::string& geometryShader,
   std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  if (this->Hook->IsTagged(fragmentShader, mapper))
-  {
-    // Lines and points are not inked: absent from the ink draw, as VTK draws them in the other.
-    this->Hook->Apply(this, prop, { vertexShader, geometryShader, fragmentShader }, vtkNPRInkDecl,
-      vtkNPRKeepsOwnLook(mapper, prop) ? "  if (nprInkMode == 1) { discard; }\n" : vtkNPRInkImpl);
-  }
-  return true;
+  // Lines and points are not inked: absent from the ink draw, as VTK draws them in the other.
+  this->Hook->Apply(this, prop, { vertexShader, geometryShader, fragmentShader }, vtkNPRInkDecl,
+    vtkNPRKeepsOwnLook(mapper, prop) ? "  if (nprInkMode == 1) { discard; }\n" : vtkNPRInkImpl);
 }
 
 bool vtkNPRInkPass::SetShaderParameters(

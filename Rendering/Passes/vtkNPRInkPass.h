@@ -44,12 +44,8 @@
 #include "vtkNPRGeometryPass.h"
 #include "vtkNPRPassesModule.h" // for export macro
 
-#include <memory> // for std::unique_ptr
-
-class vtkRenderer;
-
 class vtkOpenGLState;
-class vtkNPRShaderHook;
+class vtkRenderer;
 
 class VTKNPRPASSES_EXPORT vtkNPRInkPass : public vtkNPRGeometryPass
 {
@@ -93,17 +89,17 @@ public:
   vtkBooleanMacro(CoverageOnly, bool);
   ///@}
 
-  // vtkOpenGLRenderPass hooks: the ink switch in the mappers' fragment shaders.
-  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
-  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  // vtkOpenGLRenderPass hook: the ink switch's uniforms, and front faces culled for the ink.
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* vao = nullptr) override;
 
 protected:
   vtkNPRInkPass();
   ~vtkNPRInkPass() override;
+
+  // The ink switch in the mappers' fragment shaders (vtkNPRGeometryPass).
+  void FillShaderCode(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
 
   // The steps of Render().
   double DrawableLineWidth(double width); // at most what this OpenGL draws (warns once)
@@ -123,7 +119,6 @@ protected:
   bool CoverageOnly = false;
   int DrawMode = DrawShaded;
   bool WarnedAboutWidth = false;
-  std::unique_ptr<vtkNPRShaderHook> Hook; // the ink's code in the mappers' shaders
   // GL_ALIASED_LINE_WIDTH_RANGE's upper end, read once per context (0: not read yet). Not VTK's
   // cached GetMaximumHardwareLineWidth(): some windows (ParaView's X window on VTK 9.2) leave it 1.
   double WidestLine = 0.0;

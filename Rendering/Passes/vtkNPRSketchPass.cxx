@@ -72,7 +72,6 @@ struct vtkNPRSketchPass::Internals
 };
 
 vtkStandardNewMacro(vtkNPRSketchPass);
-vtkCxxSetObjectMacro(vtkNPRSketchPass, EdgePass, vtkNPREdgePass);
 
 vtkNPRSketchPass::vtkNPRSketchPass()
   : Internal(new Internals)
@@ -81,7 +80,6 @@ vtkNPRSketchPass::vtkNPRSketchPass()
 
 vtkNPRSketchPass::~vtkNPRSketchPass()
 {
-  this->SetEdgePass(nullptr);
   for (vtkObject* object : { static_cast<vtkObject*>(this->Internal->CoverageTexture),
          static_cast<vtkObject*>(this->Internal->NoiseTexture),
          static_cast<vtkObject*>(this->Internal->SurfaceNoiseTexture),
@@ -158,16 +156,6 @@ void vtkNPRSketchPass::GetDisplacement(
   const double amplitude = this->GetEffectiveUncertainty(renderer);
   displacement[0] = amplitude * (m[0] * n[0] + m[1] * n[1]);
   displacement[1] = amplitude * (m[2] * n[0] + m[3] * n[1]);
-}
-
-vtkNPRGBufferPass* vtkNPRSketchPass::GetGBuffer()
-{
-  vtkNPRGBufferPass* gbuffer = this->EdgePass ? this->EdgePass->GetGBufferPass() : nullptr;
-  if (!gbuffer)
-  {
-    vtkWarningMacro("no edge pass with a G-buffer: nothing drawn");
-  }
-  return gbuffer;
 }
 
 bool vtkNPRSketchPass::UpdateImages(const vtkRenderState* state)
@@ -544,8 +532,9 @@ void vtkNPRSketchPass::SetSurfaceNoiseUniforms(
   program->SetUniformf("noiseReach", static_cast<float>(reach));
 }
 
-void vtkNPRSketchPass::ReleaseEffectResources(vtkWindow* window)
+void vtkNPRSketchPass::ReleaseGraphicsResources(vtkWindow* window)
 {
+  this->Superclass::ReleaseGraphicsResources(window);
   Internals& internal = *this->Internal;
   internal.Noise = nullptr;
   internal.CoverageValid = false;
@@ -568,7 +557,6 @@ void vtkNPRSketchPass::ReleaseEffectResources(vtkWindow* window)
 void vtkNPRSketchPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "EdgePass: " << this->EdgePass << "\n";
   os << indent << "Uncertainty: " << this->Uncertainty << "\n";
   os << indent << "NoiseSeed: " << this->NoiseSeed << "\n";
   os << indent << "NoiseFrequency: " << this->NoiseFrequency << "\n";

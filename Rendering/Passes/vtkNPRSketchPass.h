@@ -54,35 +54,25 @@
 #ifndef vtkNPRSketchPass_h
 #define vtkNPRSketchPass_h
 
-#include "vtkNPRImageEffectPass.h"
+#include "vtkNPREdgeEffectPass.h"
 #include "vtkNPRPassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
 class vtkImageData;
-class vtkNPREdgePass;
-class vtkNPRGBufferPass;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
 
-class VTKNPRPASSES_EXPORT vtkNPRSketchPass : public vtkNPRImageEffectPass
+class VTKNPRPASSES_EXPORT vtkNPRSketchPass : public vtkNPREdgeEffectPass
 {
 public:
   static vtkNPRSketchPass* New();
-  vtkTypeMacro(vtkNPRSketchPass, vtkNPRImageEffectPass);
+  vtkTypeMacro(vtkNPRSketchPass, vtkNPREdgeEffectPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * The edge pass whose lines and G-buffer are sketched (its G-buffer is drawn before this pass
-   * in the same frame; the edge pass itself is not rendered).
-   */
-  virtual void SetEdgePass(vtkNPREdgePass* pass);
-  vtkGetObjectMacro(EdgePass, vtkNPREdgePass);
-  ///@}
+  void ReleaseGraphicsResources(vtkWindow* window) override;
 
   ///@{
   /**
@@ -178,15 +168,12 @@ protected:
   vtkNPRSketchPass();
   ~vtkNPRSketchPass() override;
 
-  // The steps of the frame (vtkNPRImageEffectPass).
-  vtkNPRGBufferPass* GetGBuffer() override;
+  // The steps of the frame (vtkNPRImageEffectPass) beside the G-buffer (vtkNPREdgeEffectPass).
   bool UpdateImages(const vtkRenderState* state) override;
   std::string GetCompositeKey(vtkRenderer* renderer) override;
   void GetCompositeRectangle(vtkRenderer* renderer, int rect[4]) override;
   bool DrawComposite(const vtkRenderState* state, const int origin[2]) override;
-  void ReleaseEffectResources(vtkWindow* window) override;
 
-  vtkNPREdgePass* EdgePass = nullptr;
   double Uncertainty = 3.0;
   unsigned int NoiseSeed = 1;
   double NoiseFrequency = 2.0;

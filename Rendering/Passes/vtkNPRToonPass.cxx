@@ -53,15 +53,15 @@ struct vtkNPRToonPass::Internals
   float Intensity[MaximumNumberOfLights];
   bool WarnedAboutLights = false;
   std::string ShaderSettings;
-  // Our code right after VTK's lighting.
-  vtkNPRShaderHook Hook{ "Toon", "//VTK::Light::Impl", "toon shading" };
 };
 
 vtkStandardNewMacro(vtkNPRToonPass);
 vtkCxxSetObjectMacro(vtkNPRToonPass, Table, vtkScalarsToColors);
 
+// Our code right after VTK's lighting.
 vtkNPRToonPass::vtkNPRToonPass()
-  : Internal(new Internals)
+  : vtkNPRGeometryPass("Toon", "//VTK::Light::Impl", "toon shading")
+  , Internal(new Internals)
 {
   this->ShaderStageTime.Modified();
 }
@@ -222,7 +222,6 @@ void vtkNPRToonPass::Render(const vtkRenderState* state)
   vtkRenderer* renderer = state->GetRenderer();
 
   this->UpdateTable(renderer->GetRenderWindow());
-  this->Internal->Hook.Window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   this->UpdateLights(state);
   // What is compiled into the shaders: the mappers rebuild them when it changes.
   const std::string settings = std::string(this->PerVertex ? "v" : "p") +
@@ -278,27 +277,15 @@ bool HasHighlights(const std::string& fragmentShader, vtkProp* prop)
 }
 }
 
-bool vtkNPRToonPass::PreReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
-{
-  // Filled in once VTK's code is in place.
-  this->Internal->Hook.InsertTags(this, fragmentShader, mapper);
-  return true;
-}
-
-bool vtkNPRToonPass::PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+void vtkNPRToonPass::FillShaderCode(std::string& vertexShader, std::string& geometryShader,
   std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  vtkNPRShaderHook& hook = this->Internal->Hook;
-  if (!hook.IsTagged(fragmentShader, mapper))
-  {
-    return true;
-  }
+  vtkNPRShaderHook& hook = *this->Hook;
   // Lines and points keep their own colours: no bands on them.
   if (!IsLitPolyDataShader(fragmentShader) || vtkNPRKeepsOwnLook(mapper, prop))
   {
     hook.Fill(fragmentShader, "", "");
-    return true;
+    return;
   }
   const vtkNPRShaderHook::Shaders shaders{ vertexShader, geometryShader, fragmentShader };
   const vtkNPRShaderHook::Sources before(shaders);
@@ -323,7 +310,6 @@ bool vtkNPRToonPass::PostReplaceShaderValues(std::string& vertexShader, std::str
   }
   // If not: the prop as VTK draws it, rather than no prop (or a crash).
   hook.KeepOrRevert(this, prop, shaders, before);
-  return true;
 }
 
 bool vtkNPRToonPass::SetShaderParameters(

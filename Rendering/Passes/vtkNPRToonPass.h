@@ -109,17 +109,17 @@ public:
    */
   static constexpr int MaximumNumberOfLights = 8;
 
-  // vtkOpenGLRenderPass hooks: replace the lighting of the mappers' shaders.
-  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
-  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  // vtkOpenGLRenderPass hook: the bands' and lights' uniforms.
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* vao = nullptr) override;
 
 protected:
   vtkNPRToonPass();
   ~vtkNPRToonPass() override;
+
+  // The mappers' lighting replaced by the bands (vtkNPRGeometryPass).
+  void FillShaderCode(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
 
   void UpdateTable(vtkWindow* window);
   void UpdateLights(const vtkRenderState* state);

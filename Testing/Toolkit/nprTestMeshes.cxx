@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 vtkSmartPointer<vtkActor> nprAddActor(
   vtkRenderer* renderer, vtkAlgorithmOutput* port, const double color[3])
@@ -120,6 +121,21 @@ vtkSmartPointer<vtkPolyData> nprMakeTorus(double R, double r, int along, int aro
   vtkSmartPointer<vtkPolyData> torus = nprMesh(points, nprTubeTriangles(along, around));
   torus->GetPointData()->SetNormals(normals);
   return torus;
+}
+
+vtkSmartPointer<vtkPolyData> nprBreakNormals(vtkPolyData* mesh, const std::vector<vtkIdType>& ids)
+{
+  auto broken = vtkSmartPointer<vtkPolyData>::New();
+  broken->DeepCopy(mesh);
+  vtkDataArray* normals = broken->GetPointData()->GetNormals();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const double kinds[3][3] = { { 0.0, 0.0, 0.0 }, { nan, 0.0, 0.0 }, { nan, inf, 0.0 } };
+  for (size_t i = 0; i < ids.size(); ++i)
+  {
+    normals->SetTuple(ids[i], kinds[i % 3]);
+  }
+  return broken;
 }
 
 void nprLookAtOrigin(vtkCamera* camera, const double eye[3], double far)

@@ -1,8 +1,9 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 // SPDX-License-Identifier: BSD-3-Clause
 // The test toolkit's meshes and scenes: actors of sources, spheres, a torus with exact normals,
-// the test models and the cameras the tests share. The meshes the tests share with npr-benchmark
-// (a polygon soup, a walk over cells, a tube's triangles) are nprMeshes' (Examples/Common).
+// copies with broken normals, the test models and the cameras the tests share. The meshes the tests
+// share with npr-benchmark (a polygon soup, a walk over cells, a tube's triangles) are nprMeshes'
+// (Examples/Common).
 #ifndef nprTestMeshes_h
 #define nprTestMeshes_h
 
@@ -12,6 +13,7 @@
 #include "vtkType.h"
 
 #include <string>
+#include <vector>
 
 class vtkActor;
 class vtkAlgorithmOutput;
@@ -78,6 +80,10 @@ bool nprSameCells(vtkCellArray* a, vtkCellArray* b);
 // triangles (nprTubeTriangles), with its exact unit normals (point data "Normals"); point (i, j)
 // is i * around + j.
 vtkSmartPointer<vtkPolyData> nprMakeTorus(double R, double r, int along, int around);
+
+// A deep copy of the mesh whose point normals at ids are broken, in turn a zero vector, a NaN and a
+// NaN with an infinity: the input of the checks that a filter survives invalid normals.
+vtkSmartPointer<vtkPolyData> nprBreakNormals(vtkPolyData* mesh, const std::vector<vtkIdType>& ids);
 
 // The baseline scenes' view: the camera reset, then turned 30 degrees in azimuth and elevation.
 void nprTurnBaselineCamera(vtkRenderer* renderer);

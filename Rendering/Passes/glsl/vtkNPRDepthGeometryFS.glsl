@@ -37,16 +37,7 @@ vec3 difference(vec3 p, ivec2 q, ivec2 step, ivec2 size)
   return coveredB ? b : vec3(0.0);
 }
 
-vec2 octahedral(vec3 n)
-{
-  n /= abs(n.x) + abs(n.y) + abs(n.z);
-  vec2 e = n.xy;
-  if (n.z < 0.0)
-  {
-    e = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
-  }
-  return e;
-}
+//NPR::PackNormal
 
 void main()
 {
@@ -61,6 +52,5 @@ void main()
   }
   vec3 n = cross(difference(p, q, ivec2(1, 0), size), difference(p, q, ivec2(0, 1), size));
   n = dot(n, n) > 1e-30 ? normalize(n) * sign(dot(n, -p) + 1e-30) : vec3(0.0, 0.0, 1.0);
-  vec2 e = floor((octahedral(n) * 0.5 + 0.5) * 4095.0 + 0.5);
-  gl_FragData[0] = vec4(max(-p.z, 1e-30), e.x * 4096.0 + e.y, 0.0, 1.0);
+  gl_FragData[0] = vec4(max(-p.z, 1e-30), nprPackNormal(n), 0.0, 1.0);
 }

@@ -29,22 +29,4 @@ vec3 nprFaceNormal(vec3 positionVC, vec3 toViewer)
   return dot(n, n) > 1e-12 ? normalize(n) * sign(dot(n, toViewer) + 1e-30) : vec3(0.0, 0.0, 1.0);
 }
 
-// Octahedral encoding of a unit vector: two coordinates in [-1, 1].
-vec2 nprOctahedral(vec3 n)
-{
-  n /= abs(n.x) + abs(n.y) + abs(n.z);
-  vec2 e = n.xy;
-  if (n.z < 0.0)
-  {
-    e = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
-  }
-  return e;
-}
-
-// Both octahedral coordinates quantised to 12 bits and packed into one float (an integer below
-// 2^24, exact in 32-bit float): about 0.05 degree resolution.
-float nprPackNormal(vec3 n)
-{
-  vec2 e = floor((nprOctahedral(n) * 0.5 + 0.5) * 4095.0 + 0.5);
-  return e.x * 4096.0 + e.y;
-}
+//NPR::PackNormal

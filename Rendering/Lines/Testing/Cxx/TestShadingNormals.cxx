@@ -95,13 +95,8 @@ NPR_TEST_CASE("soup", Soup);
 
 int Invalid()
 {
-  vtkSmartPointer<vtkPolyData> sphere = nprSphere(0.5, 24, 12);
-  vtkNew<vtkPolyData> broken;
-  broken->DeepCopy(sphere);
-  vtkDataArray* normals = broken->GetPointData()->GetNormals();
-  normals->SetTuple3(3, 0.0, 0.0, 0.0);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  normals->SetTuple3(7, nan, 0.0, 1.0);
+  // Point 3's normal zero, point 7's NaN.
+  vtkSmartPointer<vtkPolyData> broken = nprBreakNormals(nprSphere(0.5, 24, 12), { 3, 7 });
   vtkNew<nprCountingOutputWindow> messages;
   vtkNew<vtkNPRShadingNormals> filter;
   filter->SetInputData(broken);
