@@ -272,7 +272,7 @@ bool nprCompareWithBaselineFile(vtkImageData* image, const std::string& baseline
               << "\n";
     return written;
   }
-  const std::string rendered = OutputDirectory() + "/" + name + ".png";
+  const std::string rendered = nprTestOutputPath(name + ".png");
   vtkSmartPointer<vtkImageData> baseline = nprReadPNG(baselinePath);
   if (!baseline)
   {
@@ -296,7 +296,7 @@ bool nprCompareWithBaselineFile(vtkImageData* image, const std::string& baseline
     std::cerr << "rendered image: " << rendered << "\n";
     if (difference.DiffImage)
     {
-      const std::string diff = OutputDirectory() + "/" + name + ".diff.png";
+      const std::string diff = nprTestOutputPath(name + ".diff.png");
       nprSavePNG(difference.DiffImage, diff);
       std::cerr << "diff image: " << diff << "\n";
     }

@@ -173,7 +173,8 @@ void CheckDashes(const std::vector<int>& on)
   }
   // 180 px of line: 18 periods of 10 px, the first dash starting at x = 10, across the stroke's
   // middle point (the pattern runs on).
-  NPR_CHECK(!starts.empty() && starts.front() == 10, "first dash at " << starts.front());
+  NPR_CHECK(!starts.empty() && starts.front() == 10,
+    "first dash at " << (starts.empty() ? -1 : starts.front()) << " (-1: none), expected 10");
   NPR_CHECK(starts.size() == 18, starts.size() << " dashes, expected 18");
   for (size_t k = 1; k < starts.size(); ++k)
   {
