@@ -13,6 +13,7 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -49,6 +50,41 @@ bool vtkNPRCallsInkHooks(vtkMapper* mapper)
   return false;
 #endif
 }
+
+// Turns the mesh edges (vtkProperty::EdgeVisibilityOn) of the actors off while it lives. VTK
+// draws them through a geometry shader (vtkPolyDataEdgesGS) whose triangles, drawn as a
+// wireframe, gave lines out to the image borders (Mesa llvmpipe, VTK 9.1, even with their corners
+// left in place; up to VTK 9.3 the shader also moves the corners half a line width outwards, to
+// infinity for a triangle seen edge-on). So the ink's wireframe is drawn without that shader;
+// the filled draw keeps the edges as VTK draws them.
+class vtkNPREdgesOffForInk
+{
+public:
+  explicit vtkNPREdgesOffForInk(const std::vector<vtkProp*>& props)
+  {
+    for (vtkProp* prop : props)
+    {
+      vtkProperty* property = static_cast<vtkActor*>(prop)->GetProperty();
+      if (property->GetEdgeVisibility())
+      {
+        property->EdgeVisibilityOff();
+        this->Turned.push_back(property);
+      }
+    }
+  }
+  ~vtkNPREdgesOffForInk()
+  {
+    for (vtkProperty* property : this->Turned)
+    {
+      property->EdgeVisibilityOn();
+    }
+  }
+  vtkNPREdgesOffForInk(const vtkNPREdgesOffForInk&) = delete;
+  vtkNPREdgesOffForInk& operator=(const vtkNPREdgesOffForInk&) = delete;
+
+private:
+  std::vector<vtkProperty*> Turned;
+};
 }
 
 // The ink's code after texturing: the colour is final there.
@@ -153,7 +189,10 @@ void vtkNPRInkPass::DrawBackFaceInk(const vtkRenderState* state, double lineWidt
   // Front faces are culled by SetShaderParameters(), after each actor's property has set its
   // own culling; the shader's discard gives the same image without culling, slower.
   this->InkDrawState = glState;
-  this->DelegatePass->Render(&inkState);
+  {
+    const vtkNPREdgesOffForInk edgesOff(inked);
+    this->DelegatePass->Render(&inkState);
+  }
   this->InkDrawState = nullptr;
   glState->vtkglDisable(GL_CULL_FACE); // as a property without culling leaves it
   glState->vtkglCullFace(GL_BACK);

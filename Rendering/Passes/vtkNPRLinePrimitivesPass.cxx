@@ -36,11 +36,15 @@ bool vtkNPRLinePrimitivesPass::PostReplaceShaderValues(
   {
     return true;
   }
-  // Polygons were drawn in the G-buffer: every vertex beyond the far plane, nothing rasterised.
+  // Polygons were drawn in the G-buffer: every vertex at one point beyond the far plane, nothing
+  // rasterised. The point still depends on the position VTK computed, or the compiler drops the
+  // attributes it came from, which the mapper then fails to set (a vtkGlyph3DMapper's per-glyph
+  // matrix, GCMCMatrix: "Error setting 'GCMCMatrix' in shader VAO").
   const std::string::size_type end = vertexShader.rfind('}');
   if (end != std::string::npos)
   {
-    vertexShader.insert(end, "  gl_Position = vec4(0.0, 0.0, 2.0, 1.0);\n");
+    vertexShader.insert(
+      end, "  gl_Position = vec4(0.0, 0.0, 2.0, 1.0) * (abs(gl_Position.w) + 1.0);\n");
   }
   return true;
 }
