@@ -337,6 +337,17 @@ run_package_stage() {
   bash "$source_dir/Utilities/check-packages.sh" "${stage#packages-}" "${folders[@]}"
 }
 
+# After the table (CI keeps only the end of the output): the names of a failed stage's tests and
+# the sanitizer's or ctest's first words on each.
+report_failed_tests() {
+  local stage=$1 log=$2
+  [[ -f $log ]] || return 0
+  echo "bootstrap: $stage: what failed ($log):"
+  sed -n '/The following tests FAILED:/,$p' "$log" | grep -E '^[[:space:]]+[0-9]+ - ' | sed 's/^/  /'
+  grep -E '(ERROR|SUMMARY): (Address|Leak|UndefinedBehavior)Sanitizer|runtime error:|\*\*\*Timeout|: check failed: |Traceback|Error:' \
+    "$log" | sort | uniq -c | sort -rn | head -n 20 | sed 's/^/  /'
+}
+
 run_test_stages() {
   local stage start failed=0 passed_all=0 failed_all=0
   for stage in "${stages[@]}"; do
@@ -380,6 +391,9 @@ run_test_stages() {
     fi
   done
   echo "$passed_all passed, $failed_all failed"
+  for stage in "${stages[@]}"; do
+    [[ ${stage_status[$stage]} == passed ]] || report_failed_tests "$stage" "$build_dir/logs/$stage.log"
+  done
   return "$failed"
 }
 

@@ -20,6 +20,7 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
+#include <cmath>
 #include <mutex>
 #include <set>
 
@@ -89,6 +90,23 @@ void vtkNPRViewportOrigin(const vtkRenderState* state, int origin[2])
   if (state->GetFrameBuffer())
   {
     origin[0] = origin[1] = 0;
+  }
+}
+
+void vtkNPRTilePlacement(vtkRenderer* renderer, int offset[2], int tileSides[4])
+{
+  const double* viewport = renderer->GetViewport();
+  vtkWindow* window = renderer->GetVTKWindow();
+  const double* tile = window->GetTileViewport();
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    // vtkWindow::GetSize is the whole image's size: the window's times the tile scale.
+    const double pixels = std::max(1, window->GetSize()[axis]);
+    const double tolerance = 0.5 / pixels; // less than a pixel of the whole image
+    offset[axis] = static_cast<int>(
+      std::lround((std::max(viewport[axis], tile[axis]) - viewport[axis]) * pixels));
+    tileSides[axis] = tile[axis] > viewport[axis] + tolerance ? 1 : 0;
+    tileSides[axis + 2] = tile[axis + 2] < viewport[axis + 2] - tolerance ? 1 : 0;
   }
 }
 

@@ -38,6 +38,12 @@ bool vtkNPRRenderSelection(const vtkRenderState* state, int& renderedProps);
 // framebuffer object).
 void vtkNPRViewportOrigin(const vtkRenderState* state, int origin[2]);
 
+// Where the part of the renderer's viewport being drawn lies in a tiled render (a
+// vtkWindowToImageFilter's Scale, ParaView's screenshots larger than the view): its pixel offset
+// within the whole viewport, and which of its sides (left, bottom, right, top) meet another
+// tile instead of the viewport's edge (1) or not (0). Untiled: 0, 0 and no such side.
+void vtkNPRTilePlacement(vtkRenderer* renderer, int offset[2], int tileSides[4]);
+
 // Puts `tag` (one of ours) on the line after VTK's shader template tag `vtkTag` in `source`.
 // The passes hook into VTK's poly-data shaders this way, and those templates change between VTK
 // releases: a VTK poly-data shader (one with //VTK::Color::Impl) that lacks `vtkTag` is reported

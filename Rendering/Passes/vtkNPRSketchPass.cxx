@@ -25,6 +25,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include "vtkNPRAcrossTiles.h"
 #include "vtkNPRLineColor.h"
 #include "vtkNPRSketchFS.h"
 #include "vtkNPRSketchNoiseFS.h"
@@ -69,6 +70,10 @@ struct vtkNPRSketchPass::Internals
   vtkMTimeType NoiseFieldTime = 0;
   vtkMTimeType NoiseFieldEdgeTime = 0;
   int NoiseFieldBlock = 0;
+  // The blocks are those of the renderer's whole image: in a tiled render they start this many
+  // pixels before the tile (so that the tiles' noise joins up).
+  int NoiseFieldShift[2] = { 0, 0 };
+  int NoiseFieldSides[4] = { 0, 0, 0, 0 }; // vtkNPRTilePlacement's
 };
 
 vtkStandardNewMacro(vtkNPRSketchPass);
@@ -261,6 +266,7 @@ bool vtkNPRSketchPass::DrawComposite(const vtkRenderState* state, const int orig
     internal.Source = vtkNPRSketchFS;
     vtkShaderProgram::Substitute(internal.Source, "//NPR::LineColor", vtkNPRLineColor);
     vtkShaderProgram::Substitute(internal.Source, "//NPR::WindowDepth", vtkNPRWindowDepth);
+    vtkShaderProgram::Substitute(internal.Source, "//NPR::AcrossTiles", vtkNPRAcrossTiles);
   }
   vtkShaderProgram* program =
     internal.Sketch.Ready(window, internal.Source, this->GetSketchDefines());
@@ -294,13 +300,20 @@ void vtkNPRSketchPass::SetSketchUniforms(
   program->SetUniformi("depthTexture", gbuffer->GetDepthTexture()->GetTextureUnit());
   program->SetUniformi("coverageTexture", internal.CoverageTexture->GetTextureUnit());
   program->SetUniformi("noiseTexture", internal.Noise->GetTextureUnit());
+  int tileOffset[2], tileSides[4];
+  vtkNPRTilePlacement(renderer, tileOffset, tileSides);
+  program->SetUniform1iv("tileSides", 4, tileSides);
   if (this->NoiseSpace == SURFACE)
   {
     program->SetUniformf("noiseBlock", static_cast<float>(this->GetSurfaceNoiseBlock(renderer)));
+    const float blockShift[2] = { static_cast<float>(internal.NoiseFieldShift[0]),
+      static_cast<float>(internal.NoiseFieldShift[1]) };
+    program->SetUniform2f("blockShift", blockShift);
   }
   else
   {
     program->SetUniformf("noiseScale", static_cast<float>(this->GetEffectiveNoiseScale(renderer)));
+    program->SetUniform2i("tileOffset", tileOffset);
   }
   const double amplitude = this->GetEffectiveUncertainty(renderer);
   for (int which = 0; which < 2; ++which)
@@ -362,8 +375,12 @@ vtkTextureObject* vtkNPRSketchPass::RenderSurfaceNoise(
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   vtkNPRGBufferPass* gbuffer = this->EdgePass->GetGBufferPass();
   vtkTextureObject* depth = gbuffer->GetDepthTexture();
-  const int width = (static_cast<int>(depth->GetWidth()) + block - 1) / block;
-  const int height = (static_cast<int>(depth->GetHeight()) + block - 1) / block;
+  int tileOffset[2], tileSides[4], shift[2];
+  vtkNPRTilePlacement(renderer, tileOffset, tileSides);
+  shift[0] = tileOffset[0] % block;
+  shift[1] = tileOffset[1] % block;
+  const int width = (static_cast<int>(depth->GetWidth()) + shift[0] + block - 1) / block;
+  const int height = (static_cast<int>(depth->GetHeight()) + shift[1] + block - 1) / block;
   if (!internal.NoiseFieldTexture)
   {
     internal.NoiseFieldTexture =
@@ -377,7 +394,8 @@ vtkTextureObject* vtkNPRSketchPass::RenderSurfaceNoise(
     internal.NoiseFieldContentVersion == gbuffer->GetContentVersion() &&
     internal.NoiseFieldTime == this->GetMTime() &&
     internal.NoiseFieldEdgeTime == this->EdgePass->GetMTime() &&
-    internal.NoiseFieldBlock == block &&
+    internal.NoiseFieldBlock == block && internal.NoiseFieldShift[0] == shift[0] &&
+    internal.NoiseFieldShift[1] == shift[1] &&
     internal.NoiseFieldTexture->GetWidth() == static_cast<unsigned int>(width) &&
     internal.NoiseFieldTexture->GetHeight() == static_cast<unsigned int>(height))
   {
@@ -389,6 +407,9 @@ vtkTextureObject* vtkNPRSketchPass::RenderSurfaceNoise(
     return nullptr;
   }
   internal.NoiseFieldTexture->Resize(width, height);
+  internal.NoiseFieldShift[0] = shift[0];
+  internal.NoiseFieldShift[1] = shift[1];
+  std::copy(tileSides, tileSides + 4, internal.NoiseFieldSides);
   this->DrawNoiseField(state, program, reach, block);
   internal.NoiseFieldValid = true;
   internal.NoiseFieldContentVersion = gbuffer->GetContentVersion();
@@ -412,6 +433,8 @@ vtkShaderProgram* vtkNPRSketchPass::ReadyNoiseFieldProgram(
     internal.NoiseFieldSource = vtkNPRSketchNoiseFS;
     vtkShaderProgram::Substitute(
       internal.NoiseFieldSource, "//NPR::WindowDepth", vtkNPRWindowDepth);
+    vtkShaderProgram::Substitute(
+      internal.NoiseFieldSource, "//NPR::AcrossTiles", vtkNPRAcrossTiles);
   }
   vtkShaderProgram* program =
     internal.NoiseField.Ready(window, internal.NoiseFieldSource, defines.str());
@@ -440,15 +463,20 @@ void vtkNPRSketchPass::DrawNoiseField(
   // land, and most of this pass's work is the search for a surface from the empty blocks.
   const int* content = gbuffer->GetContentRectangle();
   const int grow = static_cast<int>(std::ceil(reach)) + 2 * block;
-  const int blocks[4] = { std::max(0, (content[0] - grow) / block),
-    std::max(0, (content[1] - grow) / block), std::min(width - 1, (content[2] + grow) / block),
-    std::min(height - 1, (content[3] + grow) / block) };
+  const int* shift = internal.NoiseFieldShift;
+  const int blocks[4] = { std::max(0, (content[0] + shift[0] - grow) / block),
+    std::max(0, (content[1] + shift[1] - grow) / block),
+    std::min(width - 1, (content[2] + shift[0] + grow) / block),
+    std::min(height - 1, (content[3] + shift[1] + grow) / block) };
   target.ScissorTo(blocks);
   depth->Activate();
   tile->Activate();
   program->SetUniformi("depthTexture", depth->GetTextureUnit());
   program->SetUniformi("noiseTexture", tile->GetTextureUnit());
   program->SetUniformf("noiseBlock", static_cast<float>(block));
+  const float blockShift[2] = { static_cast<float>(shift[0]), static_cast<float>(shift[1]) };
+  program->SetUniform2f("blockShift", blockShift);
+  program->SetUniform1iv("tileSides", 4, internal.NoiseFieldSides);
   if (gbuffer->GetDepthRemapped())
   {
     program->SetUniform2f("nprDepthRemap", gbuffer->GetDepthRemap());

@@ -14,14 +14,17 @@ uniform ivec2 viewportOrigin;      // of the renderer in the window
 #if NPR_SURFACE_NOISE
 uniform sampler2D noiseTexture;    // the surface noise of each block of pixels (xy)
 uniform float noiseBlock;          // pixels of a block on each side
+uniform vec2 blockShift;           // the first block starts this many pixels before the texture
 #else
 uniform sampler2D noiseTexture;    // 256 x 256 tile, xy: noise vector
 uniform float noiseScale;          // noise texels per pixel
+uniform ivec2 tileOffset;          // of this tile in the renderer's whole image (tiled renders)
 #endif
 uniform vec4 edgeDisplacement;     // uncertainty x edge matrix, row major
 uniform vec4 surfaceDisplacement;  // uncertainty x surface matrix, row major
 uniform vec3 paperColor;
 //NPR::LineColor
+//NPR::AcrossTiles
 //NPR::WindowDepth
 //VTK::Output::Dec
 
@@ -45,16 +48,16 @@ vec2 nprBilinear(sampler2D tile, ivec2 i, ivec2 j, vec2 f)
 vec2 nprNoise(vec2 pixel)
 {
   ivec2 last = textureSize(noiseTexture, 0) - 1;
-  vec2 t = (pixel + 0.5) / noiseBlock - 0.5;
+  vec2 t = (pixel + blockShift + 0.5) / noiseBlock - 0.5;
   vec2 cell = floor(t);
   return nprBilinear(noiseTexture, clamp(ivec2(cell), ivec2(0), last),
     clamp(ivec2(cell) + 1, ivec2(0), last), t - cell);
 }
 #else
-// The screen noise's tile, wrapped around.
+// The screen noise's tile, wrapped around, in the pixels of the renderer's whole image.
 vec2 nprNoise(vec2 pixel)
 {
-  vec2 t = (pixel + 0.5) * noiseScale - 0.5;
+  vec2 t = (pixel + vec2(tileOffset) + 0.5) * noiseScale - 0.5;
   vec2 cell = floor(t);
   ivec2 i = ivec2(cell) & 255;
   return nprBilinear(noiseTexture, i, (i + 1) & 255, t - cell);
@@ -68,6 +71,7 @@ vec2 nprTimes(vec4 m, vec2 v)
 
 vec4 nprCoverageAt(ivec2 texel, ivec2 size)
 {
+  texel = nprAcrossTiles(texel, size);
   return nprInside(texel, size) ? texelFetch(coverageTexture, texel, 0) : vec4(0.0, 0.0, 0.0, 1.0);
 }
 
@@ -82,7 +86,8 @@ void main()
   vec2 noise = nprNoise(pixel);
 
   // Surfaces: nearest texel at the displaced position.
-  ivec2 surfaceTexel = ivec2(floor(pixel + 0.5 + nprTimes(surfaceDisplacement, noise)));
+  ivec2 surfaceTexel =
+    nprAcrossTiles(ivec2(floor(pixel + 0.5 + nprTimes(surfaceDisplacement, noise))), size);
   float surfaceDepth = 1.0;
   vec3 surfaceColor = vec3(0.0);
   if (nprInside(surfaceTexel, size))

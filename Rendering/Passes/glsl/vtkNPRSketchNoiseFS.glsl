@@ -15,7 +15,9 @@ uniform float pixelFootprint;      // size of a pixel in view units, at view dep
 uniform float cellPixels;          // wanted size of a noise cell in pixels
 uniform float noiseReach;          // how far off the surface a pixel looks for it, in pixels
 uniform float noiseBlock;          // pixels of a block on each side
+uniform vec2 blockShift;           // the first block starts this many pixels before the texture
 //NPR::WindowDepth
+//NPR::AcrossTiles
 //VTK::Output::Dec
 
 bool nprInside(ivec2 texel, ivec2 size)
@@ -71,7 +73,7 @@ vec2 nprNoise(vec2 pixel, ivec2 size)
     stored = -1.0;
     for (int k = 0; k < 8; ++k)
     {
-      ivec2 tap = ivec2(floor(pixel + 0.5 + noiseReach * directions[k]));
+      ivec2 tap = nprAcrossTiles(ivec2(floor(pixel + 0.5 + noiseReach * directions[k])), size);
       float tapDepth = nprInside(tap, size) ? texelFetch(depthTexture, tap, 0).r : 1.0;
       stored = tapDepth < 1.0 ? max(stored, tapDepth) : stored;
     }
@@ -90,6 +92,7 @@ void main()
     discard; // never: see texCoord
   }
   ivec2 size = textureSize(depthTexture, 0);
-  vec2 pixel = min((floor(gl_FragCoord.xy) + 0.5) * noiseBlock - 0.5, vec2(size - 1));
+  vec2 pixel =
+    clamp((floor(gl_FragCoord.xy) + 0.5) * noiseBlock - 0.5 - blockShift, vec2(0.0), vec2(size - 1));
   gl_FragData[0] = vec4(nprNoise(floor(pixel + 0.5), size), 0.0, 1.0);
 }

@@ -1,0 +1,100 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+// An image larger than the window, rendered in tiles (vtkWindowToImageFilter's Scale, as
+// ParaView's screenshots larger than the view and PyVista's scaled screenshots do), against the
+// same view rendered whole in a window that large at the same DPI scale. Every tile draws the
+// renderer's part of the image through its own G-buffer: the sketch's noise must be that of the
+// whole image (its phase and its blocks), and a lookup displaced past a tile border must find
+// the stroke or fill that goes on there. (The sketch once restarted its screen noise at each
+// tile and left gaps in the strokes and seams in the fills along the borders.)
+//
+// The scene: an orange sphere and a blue cube (silhouettes, creases, fills) on white. Tolerance:
+// pixels differing by more than 40 from every pixel around (nprCompareImages), at most 0.05 % of
+// the image (60 pixels of 120,000). Before the fix the sketch differed in 559 pixels (surface
+// noise, nearly all along the tile borders) and 2,929 (screen noise); after it, 21 and 3 (the
+// surface noise's blocks next to a border interpolate without the other tile's block, so a stroke
+// there may move by a pixel).
+//
+// usage: TestTiledRender edges|toon|toon-edges|inked|drawing|sketch-surface|sketch-screen
+// NPR_TEST_DUMP=prefix saves prefix<case>-whole.png and prefix<case>-tiled.png.
+#include "nprTestImages.h"
+#include "nprTestMeshes.h"
+#include "nprTesting.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkNPRPass.h"
+#include "vtkNPRSketchPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <cstdlib>
+#include <string>
+
+namespace
+{
+constexpr int Width = 200, Height = 150, Scale = 2;
+
+// The scene in a window of width x height at dpi, `scale` tiles a side (1: the window's image).
+vtkSmartPointer<vtkImageData> RenderScene(
+  int style, int noiseSpace, int width, int height, int dpi, int scale)
+{
+  nprPassScene scene(width, height);
+  scene.Window->SetDPI(dpi);
+  scene.Pass->SetStyle(style);
+  scene.Sketch()->SetNoiseSpace(noiseSpace);
+  const double orange[3] = { 0.9, 0.5, 0.2 }, blue[3] = { 0.3, 0.5, 0.9 };
+  const double sphereCentre[3] = { -0.35, 0.0, 0.0 }, cubeCentre[3] = { 0.55, 0.1, 0.0 };
+  nprAddSphere(scene.Renderer, sphereCentre, 0.6, orange, 64);
+  vtkSmartPointer<vtkActor> cube = nprAddCube(scene.Renderer, cubeCentre, 0.7, blue);
+  cube->RotateY(30.0);
+  cube->RotateX(20.0);
+  scene.Renderer->ResetCamera();
+  scene.Camera()->Zoom(1.3);
+  scene.Window->Render();
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(scene.Window);
+  capture->SetScale(scale);
+  capture->ReadFrontBufferOff();
+  capture->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(capture->GetOutput());
+  return image;
+}
+
+int TestTiles(int style, int noiseSpace, const std::string& name)
+{
+  const auto whole = RenderScene(style, noiseSpace, Scale * Width, Scale * Height, 72 * Scale, 1);
+  const auto tiled = RenderScene(style, noiseSpace, Width, Height, 72, Scale);
+  if (const char* dump = std::getenv("NPR_TEST_DUMP"))
+  {
+    nprSavePNG(whole, std::string(dump) + name + "-whole.png");
+    nprSavePNG(tiled, std::string(dump) + name + "-tiled.png");
+  }
+  nprImageTolerance tolerance;
+  tolerance.PixelThreshold = 40;
+  tolerance.MaxDifferingFraction = 0.0005;
+  const nprImageDifference difference = nprCompareImages(tiled, whole, tolerance);
+  const double white[3] = { 1.0, 1.0, 1.0 };
+  const nprPixelStatistics drawn = nprComputePixelStatistics(whole, white);
+  std::cout << name << ": " << difference.DifferingPixels << " pixels of "
+            << Scale * Width * Scale * Height << " differ between the tiled and the whole image ("
+            << drawn.ObjectPixels << " drawn)\n";
+  NPR_CHECK(difference.SizeMatches, name << ": the tiled image has another size");
+  NPR_CHECK(drawn.ObjectPixels > 3000, name << ": the scene was not drawn");
+  NPR_CHECK(difference.DifferingFraction <= tolerance.MaxDifferingFraction,
+    name << ": " << difference.DifferingPixels
+         << " pixels differ between the image rendered in tiles and the one rendered whole");
+  return nprTestResult();
+}
+NPR_TEST_CASE("edges", [] { return TestTiles(vtkNPRPass::EDGES, 0, "edges"); });
+NPR_TEST_CASE("toon", [] { return TestTiles(vtkNPRPass::TOON, 0, "toon"); });
+NPR_TEST_CASE("toon-edges", [] { return TestTiles(vtkNPRPass::TOON_EDGES, 0, "toon-edges"); });
+NPR_TEST_CASE("inked", [] { return TestTiles(vtkNPRPass::INKED, 0, "inked"); });
+NPR_TEST_CASE("drawing", [] { return TestTiles(vtkNPRPass::DRAWING, 0, "drawing"); });
+NPR_TEST_CASE("sketch-surface",
+  [] { return TestTiles(vtkNPRPass::SKETCH, vtkNPRSketchPass::SURFACE, "sketch-surface"); });
+NPR_TEST_CASE("sketch-screen",
+  [] { return TestTiles(vtkNPRPass::SKETCH, vtkNPRSketchPass::SCREEN, "sketch-screen"); });
+}
