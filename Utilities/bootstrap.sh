@@ -344,7 +344,7 @@ report_failed_tests() {
   [[ -f $log ]] || return 0
   echo "bootstrap: $stage: what failed ($log):"
   sed -n '/The following tests FAILED:/,$p' "$log" | grep -E '^[[:space:]]+[0-9]+ - ' | sed 's/^/  /'
-  grep -E '(ERROR|SUMMARY): (Address|Leak|UndefinedBehavior)Sanitizer|runtime error:|\*\*\*Timeout|: check failed: |Traceback|Error:' \
+  grep -E '(ERROR|SUMMARY): (Address|Leak|UndefinedBehavior)Sanitizer|runtime error:|\*\*\*Timeout|: check failed: |Traceback|Error:|No space left|Killed|Segmentation fault|out of memory' \
     "$log" | sort | uniq -c | sort -rn | head -n 20 | sed 's/^/  /'
 }
 

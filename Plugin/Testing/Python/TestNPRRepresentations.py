@@ -5,7 +5,8 @@ Edges, Points, Point Gaussian with opacity by array, Wireframe, Feature Edges, S
 translucent surface and a selection. Each case is rendered in every style and checked by what
 that representation must still show: its own colour (the mesh edges, the points, the selection
 highlight), the red object behind it (translucency), or its pixels at all (slice, volume), and
-no error or warning from VTK or ParaView. Fails by exception (pvbatch then exits non-zero).
+no error or warning from VTK or ParaView; and the names ParaView registers the view under.
+Fails by exception (pvbatch then exits non-zero).
 
   pvbatch TestNPRRepresentations.py --plugin NPRView.so --output-dir DIR
 """
@@ -171,6 +172,11 @@ for make_case in CASES:
     check("ERROR" not in log.upper() and "WARNING" not in log.upper(),
           "%s: no error or warning in any style%s" % (name, "" if not log else ": " + log[:400]))
     clear_view()
+
+# The names scripts find views by (Documentation/paraview.md, "Scripts, traces and saved states").
+check(FindView("RenderViewNPR1") == view, "the first NPR view is registered as RenderViewNPR1")
+named = CreateView("NPRRenderView", registrationName="RenderView1")
+check(FindView("RenderView1") == named, "an NPR view created as RenderView1 is found by that name")
 
 if failures:
     raise RuntimeError("%d checks failed: %s" % (len(failures), "; ".join(failures)))
