@@ -23,8 +23,10 @@ args = plugin_arguments()
 LoadPlugin(args.plugin, ns=globals())
 SIZE = [320, 240]
 
-messages = vtkStringOutputWindow()
-vtkOutputWindow.SetInstance(messages)
+# VTK's and ParaView's messages while a case renders. Only then: pvbatch prints the script's own
+# output and tracebacks through the output window too.
+messages = [vtkStringOutputWindow()]  # a new one for each case
+console = vtkOutputWindow.GetInstance()
 
 view = CreateView("NPRRenderView")
 view.ViewSize = SIZE
@@ -132,6 +134,11 @@ def case_selection():
 CASES = [case_surface_with_edges, case_points, case_point_gaussian, case_wireframe,
          case_feature_edges, case_slice, case_volume, case_translucent, case_selection]
 failures = []
+# The drawing style paints faces white and draws the meshes' lines (Documentation/drawing.md):
+# the colours these cases check are not part of it.
+DRAWING_WHITE = {"point_gaussian": "the red box behind the splats is white too",
+                 "slice": "an image slice has no mesh lines to draw",
+                 "translucent": "the red box behind the surface is white too"}
 
 
 def check(condition, message):
@@ -142,15 +149,20 @@ def check(condition, message):
 
 def clear_view():
     for source in list(GetSources().values()):
+        ClearSelection(source)
+    for source in list(GetSources().values()):
         Delete(source)
-    ClearSelection()
 
 
 def render(name, style):
     view.Style = STYLES.index(style)
-    Render(view)
     path = os.path.join(args.output_dir, "%s-%s.png" % (name, style.lower().replace("+", "-")))
-    SaveScreenshot(path, view, ImageResolution=SIZE)
+    vtkOutputWindow.SetInstance(messages[0])
+    try:
+        Render(view)
+        SaveScreenshot(path, view, ImageResolution=SIZE)
+    finally:
+        vtkOutputWindow.SetInstance(console)
     return read_png(path)
 
 
@@ -158,17 +170,21 @@ for make_case in CASES:
     name = make_case.__name__[len("case_"):]
     measure = make_case()
     view.ResetCamera()
-    messages.Initialize()
+    messages[0] = vtkStringOutputWindow()
     shaded = None
     for style in STYLES:
         img = render(name, style)
+        if style == "Drawing" and name in DRAWING_WHITE:
+            print("skip  %s, Drawing: the drawing paints every face white (%s)"
+                  % (name, DRAWING_WHITE[name]))
+            continue
         what, value, minimum = measure(img, style)
         if style == "Shaded":
             shaded = value
         bound = minimum if minimum is not None else max(1, shaded // 2)
         check(value >= bound, "%s, %s: %d pixels of the %s (at least %d; Shaded %d)"
               % (name, style, value, what, bound, shaded))
-    log = messages.GetOutput()
+    log = messages[0].GetOutput()
     check("ERROR" not in log.upper() and "WARNING" not in log.upper(),
           "%s: no error or warning in any style%s" % (name, "" if not log else ": " + log[:400]))
     clear_view()
