@@ -3,7 +3,6 @@
 #include "vtkNPRSceneLines.h"
 
 #include "vtkActor.h"
-#include "vtkActorCollection.h"
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkCamera.h"
@@ -15,9 +14,12 @@
 #include "vtkIdTypeArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNPRFeatureLines.h"
+#include "vtkNPRPropParts.h"
 #include "vtkNPRVectors.h"
+#include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -34,55 +36,71 @@ double Seconds(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The actors as they are drawn: visible, opaque, polygonal through a vtkPolyDataMapper; each
-// polygonal leaf of a composite input (ParaView's representations, vtkCompositePolyDataMapper2)
-// is a mesh of its actor.
-std::vector<vtkNPRMeshInstance> DrawnMeshes(vtkRenderer* renderer)
+// One actor as it is drawn, with the matrix it is drawn with: visible, opaque, polygonal through a
+// vtkPolyDataMapper; each polygonal leaf of a composite input (ParaView's representations,
+// vtkCompositePolyDataMapper2) is a mesh of its actor.
+void AddDrawnMeshes(vtkActor* actor, vtkMatrix4x4* matrix, std::vector<vtkNPRMeshInstance>& meshes)
 {
-  std::vector<vtkNPRMeshInstance> actors;
-  vtkActorCollection* collection = renderer->GetActors();
-  vtkCollectionSimpleIterator it;
-  collection->InitTraversal(it);
-  while (vtkActor* actor = collection->GetNextActor(it))
+  auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+  if (!mapper)
   {
-    auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
-    if (!actor->GetVisibility() || !mapper)
+    return;
+  }
+  if (vtkAlgorithm* producer = mapper->GetInputAlgorithm())
+  {
+    producer->Update(mapper->GetInputConnection(0, 0)->GetIndex());
+  }
+  if (!actor->HasOpaqueGeometry())
+  {
+    return;
+  }
+  vtkNPRMeshInstance state{ actor, nullptr, 0, {} };
+  std::copy_n(&matrix->Element[0][0], 16, state.Matrix.data());
+  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    auto iterator = vtk::TakeSmartPointer(composite->NewIterator());
+    for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
     {
-      continue;
-    }
-    if (vtkAlgorithm* producer = mapper->GetInputAlgorithm())
-    {
-      producer->Update(mapper->GetInputConnection(0, 0)->GetIndex());
-    }
-    if (!actor->HasOpaqueGeometry())
-    {
-      continue;
-    }
-    vtkNPRMeshInstance state{ actor, nullptr, 0, {} };
-    vtkMatrix4x4* matrix = actor->GetMatrix();
-    std::copy_n(&matrix->Element[0][0], 16, state.Matrix.data());
-    vtkDataObject* input = mapper->GetInputDataObject(0, 0);
-    if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
-    {
-      auto iterator = vtk::TakeSmartPointer(composite->NewIterator());
-      for (iterator->InitTraversal(); !iterator->IsDoneWithTraversal(); iterator->GoToNextItem())
+      if (auto* leaf = vtkPolyData::SafeDownCast(iterator->GetCurrentDataObject()))
       {
-        if (auto* leaf = vtkPolyData::SafeDownCast(iterator->GetCurrentDataObject()))
-        {
-          state.Mesh = leaf;
-          state.MeshTime = leaf->GetMTime();
-          actors.push_back(state);
-        }
+        state.Mesh = leaf;
+        state.MeshTime = leaf->GetMTime();
+        meshes.push_back(state);
       }
     }
-    else if (auto* mesh = vtkPolyData::SafeDownCast(input))
+  }
+  else if (auto* mesh = vtkPolyData::SafeDownCast(input))
+  {
+    state.Mesh = mesh;
+    state.MeshTime = mesh->GetMTime();
+    meshes.push_back(state);
+  }
+}
+
+// The meshes of the renderer's visible actors, those inside assemblies included (vtkNPRPropParts).
+std::vector<vtkNPRMeshInstance> DrawnMeshes(vtkRenderer* renderer)
+{
+  std::vector<vtkNPRMeshInstance> meshes;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (!prop->GetVisibility())
     {
-      state.Mesh = mesh;
-      state.MeshTime = mesh->GetMTime();
-      actors.push_back(state);
+      continue;
+    }
+    for (const vtkNPRPropPart& part : vtkNPRPropParts(prop))
+    {
+      auto* actor = vtkActor::SafeDownCast(part.Prop);
+      if (actor && part.Matrix)
+      {
+        AddDrawnMeshes(actor, part.Matrix, meshes);
+      }
     }
   }
-  return actors;
+  return meshes;
 }
 }
 
@@ -261,7 +279,9 @@ vtkIdType vtkNPRSceneLines::UpdateLines(
     used[key] = entry;
     vtkNPRFeatureLines* lines = entry.Lines;
     lines->SetInputData(state.Mesh);
-    lines->SetCamera(camera, state.Actor->GetMatrix());
+    vtkNew<vtkMatrix4x4> model; // the matrix it is drawn with (an assembly's part: its path's)
+    model->DeepCopy(state.Matrix.data());
+    lines->SetCamera(camera, model);
     lines->SetSilhouettes(settings.Silhouettes);
     lines->SetCreases(settings.Creases);
     lines->SetBoundaries(settings.Boundaries);

@@ -7,10 +7,12 @@
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNPRPropParts.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 
+#include <algorithm>
 #include <cmath>
 
 vtkNPRFrameSignature vtkNPRTakeFrameSignature(
@@ -21,8 +23,14 @@ vtkNPRFrameSignature vtkNPRTakeFrameSignature(
   for (int i = 0; i < state->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = state->GetPropArray()[i];
-    // The redraw time includes the mapper and its input, brought up to date.
-    now.Props.push_back({ prop, std::max(prop->GetMTime(), prop->GetRedrawMTime()) });
+    // The redraw time includes the mapper and its input, brought up to date: an assembly's
+    // parts' each.
+    vtkMTimeType time = prop->GetMTime();
+    for (const vtkNPRPropPart& part : vtkNPRPropParts(prop))
+    {
+      time = std::max({ time, part.Prop->GetMTime(), part.Prop->GetRedrawMTime() });
+    }
+    now.Props.push_back({ prop, time });
   }
   vtkLightCollection* lights = renderer->GetLights();
   vtkCollectionSimpleIterator it;

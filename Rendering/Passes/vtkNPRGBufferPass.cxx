@@ -8,6 +8,7 @@
 #include "vtkNPRFrameSignature.h"
 #include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
+#include "vtkNPRPropParts.h"
 #include "vtkNPRShaderHook.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLCamera.h"
@@ -44,6 +45,20 @@ std::string WithPackNormal(const char* source)
   vtkShaderProgram::Substitute(text, "//NPR::PackNormal", vtkNPRPackNormal);
   return text;
 }
+
+// The props the frame's mappers draw for: an assembly's parts each, in drawing order.
+std::vector<vtkProp*> DrawnParts(const vtkRenderState* state)
+{
+  std::vector<vtkProp*> parts;
+  for (int i = 0; i < state->GetPropArrayCount(); ++i)
+  {
+    for (const vtkNPRPropPart& part : vtkNPRPropParts(state->GetPropArray()[i]))
+    {
+      parts.push_back(part.Prop);
+    }
+  }
+  return parts;
+}
 }
 
 struct vtkNPRGBufferPass::Internals
@@ -51,7 +66,8 @@ struct vtkNPRGBufferPass::Internals
   // Taken right after the last draw, so that what the draw itself touched counts as seen.
   vtkNPRFrameSignature Last;
   bool Valid = false;
-  // The props of this frame; an object id is the 1-based index of its prop here.
+  // The props drawn this frame, an assembly's parts each (its mappers' hooks see them); an
+  // object id is the 1-based index of its prop here.
   std::vector<vtkProp*> FrameProps;
   // Depth-only mode: geometry from depth, and the copy back into the caller's framebuffer.
   vtkNPRQuadProgram DepthGeometry;
@@ -249,8 +265,7 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   this->AllocateBuffers(window, width, height, components, this->WrittenEncoding);
   this->UpdateProjection(state->GetRenderer(), width, height, true);
   this->ComputeContentRectangle(state, width, height);
-  this->Internal->FrameProps.assign(
-    state->GetPropArray(), state->GetPropArray() + state->GetPropArrayCount());
+  this->Internal->FrameProps = DrawnParts(state);
   this->DrawGeometry(state, width, height);
   this->Internal->Last = vtkNPRTakeFrameSignature(
     state, width, height, this->WritesNormals, this->WritesObjectIds, this->GetSettingsTime());
@@ -272,9 +287,9 @@ void vtkNPRGBufferPass::GetTargetSize(const vtkRenderState* state, int& width, i
 int vtkNPRGBufferPass::CountOpaqueProps(const vtkRenderState* state)
 {
   int opaqueProps = 0;
-  for (int i = 0; i < state->GetPropArrayCount(); ++i)
+  for (vtkProp* part : DrawnParts(state))
   {
-    opaqueProps += state->GetPropArray()[i]->HasOpaqueGeometry() ? 1 : 0;
+    opaqueProps += part->HasOpaqueGeometry() ? 1 : 0;
   }
   return opaqueProps;
 }

@@ -7,6 +7,7 @@
 #include "vtkGlyph3DMapper.h"
 #include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
+#include "vtkNPRPropParts.h"
 #include "vtkNPRShaderHook.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
@@ -51,40 +52,35 @@ bool vtkNPRCallsInkHooks(vtkMapper* mapper)
 #endif
 }
 
-// Turns the mesh edges (vtkProperty::EdgeVisibilityOn) of the actors off while it lives. VTK
-// draws them through a geometry shader (vtkPolyDataEdgesGS) whose triangles, drawn as a
-// wireframe, gave lines out to the image borders (Mesa llvmpipe, VTK 9.1, even with their corners
-// left in place; up to VTK 9.3 the shader also moves the corners half a line width outwards, to
-// infinity for a triangle seen edge-on). So the ink's wireframe is drawn without that shader;
-// the filled draw keeps the edges as VTK draws them.
-class vtkNPREdgesOffForInk
+// Whether VTK draws the top-level prop as surfaces whose mappers call this pass's hooks: an
+// actor, or an assembly whose parts all are such actors (any other part would be drawn as a
+// wireframe in its own colours).
+bool vtkNPRIsInkable(vtkProp* prop)
 {
-public:
-  explicit vtkNPREdgesOffForInk(const std::vector<vtkProp*>& props)
-  {
-    for (vtkProp* prop : props)
-    {
-      vtkProperty* property = static_cast<vtkActor*>(prop)->GetProperty();
-      if (property->GetEdgeVisibility())
+  const std::vector<vtkNPRPropPart> parts = vtkNPRPropParts(prop);
+  return !vtkNPRIsAnnotation(prop) && !parts.empty() &&
+    std::all_of(parts.begin(), parts.end(),
+      [](const vtkNPRPropPart& part)
       {
-        property->EdgeVisibilityOff();
-        this->Turned.push_back(property);
-      }
-    }
-  }
-  ~vtkNPREdgesOffForInk()
-  {
-    for (vtkProperty* property : this->Turned)
-    {
-      property->EdgeVisibilityOn();
-    }
-  }
-  vtkNPREdgesOffForInk(const vtkNPREdgesOffForInk&) = delete;
-  vtkNPREdgesOffForInk& operator=(const vtkNPREdgesOffForInk&) = delete;
+        auto* actor = vtkActor::SafeDownCast(part.Prop);
+        return actor && vtkNPRCallsInkHooks(actor->GetMapper()) && !vtkNPRIsAnnotation(actor);
+      });
+}
 
-private:
-  std::vector<vtkProperty*> Turned;
-};
+// Whether a part of the top-level prop shows its mesh edges (vtkProperty::EdgeVisibilityOn on a
+// surface): VTK draws them through a geometry shader.
+bool vtkNPRShowsMeshEdges(vtkProp* prop)
+{
+  for (const vtkNPRPropPart& part : vtkNPRPropParts(prop))
+  {
+    vtkProperty* property = static_cast<vtkActor*>(part.Prop)->GetProperty();
+    if (property->GetEdgeVisibility() && property->GetRepresentation() == VTK_SURFACE)
+    {
+      return true;
+    }
+  }
+  return false;
+}
 }
 
 // The ink's code after texturing: the colour is final there.
@@ -164,12 +160,14 @@ void vtkNPRInkPass::DrawBackFaceInk(const vtkRenderState* state, double lineWidt
   // Ink only for the surfaces whose mapper calls this pass's shader hooks: any other prop would be
   // drawn as a wireframe in its own colours.
   std::vector<vtkProp*> inked;
+  this->InkWithoutMeshEdges = false;
   for (int i = 0; i < state->GetPropArrayCount(); ++i)
   {
-    vtkActor* actor = vtkActor::SafeDownCast(state->GetPropArray()[i]);
-    if (actor && vtkNPRCallsInkHooks(actor->GetMapper()) && !vtkNPRIsAnnotation(actor))
+    vtkProp* prop = state->GetPropArray()[i];
+    if (vtkNPRIsInkable(prop))
     {
-      inked.push_back(actor);
+      inked.push_back(prop);
+      this->InkWithoutMeshEdges = this->InkWithoutMeshEdges || vtkNPRShowsMeshEdges(prop);
     }
   }
   if (inked.empty())
@@ -189,10 +187,8 @@ void vtkNPRInkPass::DrawBackFaceInk(const vtkRenderState* state, double lineWidt
   // Front faces are culled by SetShaderParameters(), after each actor's property has set its
   // own culling; the shader's discard gives the same image without culling, slower.
   this->InkDrawState = glState;
-  {
-    const vtkNPREdgesOffForInk edgesOff(inked);
-    this->DelegatePass->Render(&inkState);
-  }
+  this->SwitchMeshEdgesShader();
+  this->DelegatePass->Render(&inkState);
   this->InkDrawState = nullptr;
   glState->vtkglDisable(GL_CULL_FACE); // as a property without culling leaves it
   glState->vtkglCullFace(GL_BACK);
@@ -204,6 +200,7 @@ void vtkNPRInkPass::DrawFilledFaces(const vtkRenderState* state, double visibleW
 {
   // Pulled towards the viewer by the line width's worth of depth slope.
   this->DrawMode = this->CoverageOnly ? DrawMaskFill : DrawShaded;
+  this->SwitchMeshEdgesShader();
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(-static_cast<float>(visibleWidth), -1.0f);
   this->DelegatePass->Render(state);
@@ -211,6 +208,32 @@ void vtkNPRInkPass::DrawFilledFaces(const vtkRenderState* state, double visibleW
   glDisable(GL_POLYGON_OFFSET_FILL);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   this->DrawMode = DrawShaded;
+}
+
+void vtkNPRInkPass::SwitchMeshEdgesShader()
+{
+  if (this->InkWithoutMeshEdges)
+  {
+    // The mappers rebuild their shaders for this draw: the two draws' programs differ.
+    this->ShaderStageTime.Modified();
+  }
+}
+
+bool vtkNPRInkPass::PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
+{
+  // VTK's mesh edges: the geometry shader vtkPolyDataEdgesGS (it declares edgeEqn) and the
+  // fragment code at the Edges tags, which is left out here. What VTK's fragment code for edges
+  // drawn as tubes reads is declared, unused.
+  if (this->DrawMode == DrawInk && geometryShader.find("edgeEqn") != std::string::npos)
+  {
+    geometryShader.clear();
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Edges::Dec",
+      "vec4 edgeEqn[3];\nfloat edist[3];\nuniform float lineWidth;\n", false);
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Edges::Impl", "", false);
+  }
+  return this->Superclass::PreReplaceShaderValues(
+    vertexShader, geometryShader, fragmentShader, mapper, prop);
 }
 
 void vtkNPRInkPass::FillShaderCode(std::string& vertexShader, std::string& geometryShader,

@@ -23,18 +23,20 @@
  * LineWidth is in pixels at 72 DPI (default 1.5), scaled by the window's DPI / 72 and tile
  * scale, clamped to what the OpenGL implementation draws (GL_ALIASED_LINE_WIDTH_RANGE; a warning
  * says so once). Only props drawn by a vtkOpenGLPolyDataMapper (and subclasses, and from VTK 9.3
- * the vtkCompositePolyDataMapper, which draws through one) get ink; other props are drawn once,
- * as usual. Lines are not anti-aliased. CoverageOnly writes a mask instead: ink white, everything
- * the props cover black, the background black.
+ * the vtkCompositePolyDataMapper, which draws through one) get ink, and an assembly whose parts
+ * all are; other props are drawn once, as usual. Lines are not anti-aliased. CoverageOnly writes a
+ * mask instead: ink white, everything the props cover black, the background black.
  *
  * Both draws go through the same shader (the ink is a uniform switch), so alternating them costs
- * no shader rebuild. OpenGL's polygon mode and offset are not tracked by vtkOpenGLState in VTK
- * 9.1; this pass sets them directly and restores the defaults (fill, offset off) after each draw.
- * Front faces are culled during the wireframe draw, through vtkOpenGLState, from
- * SetShaderParameters(): each actor's property sets its own culling before its mapper draws, and
- * this hook runs after it. The fragment shader also discards front faces. Culling halves the
- * wireframe's cost: the 1.2M-triangle bunny at 1920x1080 took 3.2x the shaded frame
- * with it and 4.9x without (llvmpipe, 2 cores).
+ * no shader rebuild, except in a frame where a surface shows its mesh edges: the wireframe is drawn
+ * without VTK's edges geometry shader, so the mappers take their shaders again (from VTK's shader
+ * cache: no compile) at each draw; their buffer objects stay. OpenGL's polygon mode and offset are
+ * not tracked by vtkOpenGLState in VTK 9.1; this pass sets them directly and restores the defaults
+ * (fill, offset off) after each draw. Front faces are culled during the wireframe draw, through
+ * vtkOpenGLState, from SetShaderParameters(): each actor's property sets its own culling before its
+ * mapper draws, and this hook runs after it. The fragment shader also discards front faces. Culling
+ * halves the wireframe's cost: the 1.2M-triangle bunny at 1920x1080 took 3.2x the shaded frame with
+ * it and 4.9x without (llvmpipe, 2 cores).
  *
  * @sa vtkNPRPass vtkNPREdgePass
  */
@@ -89,6 +91,10 @@ public:
   vtkBooleanMacro(CoverageOnly, bool);
   ///@}
 
+  // vtkOpenGLRenderPass hook: the mesh edges' geometry shader left out of the ink's wireframe.
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+
   // vtkOpenGLRenderPass hook: the ink switch's uniforms, and front faces culled for the ink.
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* vao = nullptr) override;
@@ -106,6 +112,8 @@ protected:
   void ClearMask(vtkRenderer* renderer);  // CoverageOnly: the background black
   void DrawBackFaceInk(const vtkRenderState* state, double lineWidth);
   void DrawFilledFaces(const vtkRenderState* state, double visibleWidth);
+  // Before each draw of a frame with mesh edges: the mappers take the draw's shaders.
+  void SwitchMeshEdgesShader();
 
   enum DrawModes
   {
@@ -122,6 +130,13 @@ protected:
   // GL_ALIASED_LINE_WIDTH_RANGE's upper end, read once per context (0: not read yet). Not VTK's
   // cached GetMaximumHardwareLineWidth(): some windows (ParaView's X window on VTK 9.2) leave it 1.
   double WidestLine = 0.0;
+  // Whether an inked surface of this frame shows its mesh edges (vtkProperty::EdgeVisibilityOn):
+  // VTK draws them through a geometry shader (vtkPolyDataEdgesGS) whose triangles, drawn as a
+  // wireframe, gave lines out to the image borders (Mesa llvmpipe, VTK 9.1, even with their
+  // corners left in place; up to VTK 9.3 the shader also moves the corners half a line width
+  // outwards, to infinity for a triangle seen edge-on). The ink's wireframe is drawn without it
+  // (PreReplaceShaderValues), the filled faces with it, the actors' properties untouched.
+  bool InkWithoutMeshEdges = false;
   // While the back-face wireframe is drawn: the state through which front faces are culled.
   vtkOpenGLState* InkDrawState = nullptr;
 

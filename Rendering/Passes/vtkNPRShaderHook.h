@@ -24,7 +24,8 @@ class vtkProp;
 class vtkNPRShaderHook
 {
 public:
-  // A program's stages as a hook gets them; no pass changes the geometry shader.
+  // A program's stages as a hook gets them; no hook changes the geometry shader (the ink pass
+  // leaves VTK's mesh-edges shader out of its wireframe draw before the hooks run).
   struct Shaders
   {
     std::string& Vertex;

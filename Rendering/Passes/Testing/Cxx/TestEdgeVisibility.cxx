@@ -8,7 +8,9 @@
 // drawn away from them, that the red mesh edges are there as VTK draws them without the pass
 // (except in the drawing, which shows its own lines only), and that the style's own lines stay.
 //
-// usage: TestEdgeVisibility inked|edges|toon|toon-edges|sketch|drawing
+// inked-property-time checks that an inked frame leaves the actors' properties unmodified.
+//
+// usage: TestEdgeVisibility inked|inked-property-time|edges|toon|toon-edges|sketch|drawing
 // NPR_TEST_DUMP=prefix saves the frame as prefixSTYLE.png.
 #include "nprTesting.h"
 
@@ -166,7 +168,32 @@ int TestEdges(int style, const char* name, bool lines, bool meshEdges)
     name << ": " << counts.Ink << " ink pixels, " << styleInk << " without mesh edges");
   return nprTestResult();
 }
+
+// The ink draws its wireframe without the edges' geometry shader by a shader replacement, not by
+// turning the properties' EdgeVisibility off and on around it: that modified each property twice
+// a frame, and VTK prepared the actor's shaders and buffer objects again at both draws.
+int TestInkedPropertyTime()
+{
+  EdgeScene scene(vtkNPRPass::INKED, true);
+  scene.Render();
+  std::vector<vtkMTimeType> before;
+  for (const auto& actor : scene.Actors)
+  {
+    before.push_back(actor->GetProperty()->GetMTime());
+  }
+  scene.Render();
+  for (size_t i = 0; i < scene.Actors.size(); ++i)
+  {
+    const vtkMTimeType after = scene.Actors[i]->GetProperty()->GetMTime();
+    std::cout << "actor " << i << ": property modified at " << before[i]
+              << " before an inked frame, " << after << " after it\n";
+    NPR_CHECK(after == before[i], "an inked frame modified actor " << i << "'s property");
+  }
+  return nprTestResult();
+}
+
 NPR_TEST_CASE("inked", [] { return TestEdges(vtkNPRPass::INKED, "inked", true, true); });
+NPR_TEST_CASE("inked-property-time", TestInkedPropertyTime);
 NPR_TEST_CASE("edges", [] { return TestEdges(vtkNPRPass::EDGES, "edges", true, true); });
 NPR_TEST_CASE("toon", [] { return TestEdges(vtkNPRPass::TOON, "toon", false, true); });
 NPR_TEST_CASE(
