@@ -24,6 +24,7 @@
 #include "vtkTessellatedBoxSource.h"
 #include "vtkTriangleFilter.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -192,6 +193,19 @@ const std::vector<std::string>& nprBenchmarkSceneNames()
   return names;
 }
 
+const std::vector<std::string>& nprBenchmarkGeneratedSceneNames()
+{
+  static const std::vector<std::string> names = { "cone-flange", "steep-cone",
+    "filleted-cylinder", "boss-pocket", "bumpy-torus" };
+  return names;
+}
+
+bool nprIsGeneratedScene(const std::string& name)
+{
+  const std::vector<std::string>& names = nprBenchmarkGeneratedSceneNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
 nprBenchmarkScene nprLoadBenchmarkScene(
   const std::string& name, const std::string& dataDir, const std::string& denseMesh)
 {
@@ -227,6 +241,28 @@ nprBenchmarkScene nprLoadBenchmarkScene(
   {
     scene.Raw = Knot();
     scene.Description = "trefoil knot as a swelling tube (600 x 48 quads as triangles)";
+  }
+  else if (name == "cone-flange" || name == "steep-cone")
+  {
+    const double angle = name == "cone-flange" ? 35.0 : 60.0;
+    scene.Raw = nprConeOnFlange(angle);
+    scene.Description = "generated: cone on a flange, " + nprFormat(angle, 3) +
+      "-degree concave and convex circular creases";
+  }
+  else if (name == "filleted-cylinder")
+  {
+    scene.Raw = nprFilletedCylinder();
+    scene.Description = "generated: cylinder with a chamfer, a fillet and a filleted boss";
+  }
+  else if (name == "boss-pocket")
+  {
+    scene.Raw = nprBossAndPocket();
+    scene.Description = "generated: plate with a boss and a pocket (90-degree creases)";
+  }
+  else if (name == "bumpy-torus")
+  {
+    scene.Raw = nprBumpyTorus();
+    scene.Description = "generated, scan-like: torus displaced by bumps of three sizes";
   }
   else if (name == "box")
   {
