@@ -124,7 +124,8 @@ void AppendQuarterRound(std::vector<std::array<double, 2>>& profile,
   for (int k = 0; k <= 6; ++k)
   {
     const double angle = vtkMath::RadiansFromDegrees(from + turn * 15.0 * k);
-    profile.push_back({ centre[0] + radius * std::cos(angle), centre[1] + radius * std::sin(angle) });
+    profile.push_back(
+      { centre[0] + radius * std::cos(angle), centre[1] + radius * std::sin(angle) });
   }
 }
 }
@@ -132,7 +133,7 @@ void AppendQuarterRound(std::vector<std::array<double, 2>>& profile,
 vtkSmartPointer<vtkPolyData> nprFilletedCylinder(int around)
 {
   std::vector<std::array<double, 2>> profile = { { 0.0, 0.0 }, { 0.8, 0.0 }, { 1.0, 0.2 } };
-  AppendQuarterRound(profile, { 0.75, 1.15 }, 0.25, 0.0, 1);   // convex: the top's outer edge
+  AppendQuarterRound(profile, { 0.75, 1.15 }, 0.25, 0.0, 1);    // convex: the top's outer edge
   AppendQuarterRound(profile, { 0.55, 1.65 }, 0.25, -90.0, -1); // concave: the boss's foot
   profile.push_back({ 0.3, 2.0 });
   profile.push_back({ 0.0, 2.0 });
@@ -156,7 +157,8 @@ vtkSmartPointer<vtkPolyData> nprBumpyTorus(int along, int around)
     for (int j = 0; j < around; ++j)
     {
       const double v = 2.0 * vtkMath::Pi() * j / around;
-      // Bumps of three sizes, their phases mixed so that no two line up: lumpy, not periodic-looking.
+      // Bumps of three sizes, their phases mixed so that no two line up: lumpy, not
+      // periodic-looking.
       const double bumps = 0.10 * std::sin(3.0 * u + 1.3) * std::sin(2.0 * v + 0.4) +
         0.05 * std::sin(7.0 * u + 2.0 * v + 0.7) + 0.025 * std::sin(13.0 * u - 5.0 * v + 2.1);
       const double r = 0.4 * (1.0 + bumps);

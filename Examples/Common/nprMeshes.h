@@ -43,8 +43,8 @@ vtkSmartPointer<vtkPolyData> nprRevolvedProfile(
 
 // A truncated cone rising from a round flange: the cone's side makes coneAngle degrees (0..90)
 // with the flange's top, a concave circular crease of that angle where they meet and a convex one
-// of the same angle at the cone's flat top. Flange radius 1, 0.25 thick; cone radius 0.6 at its
-// foot, 0.15 at its top.
+// of the same angle at the cone's flat top. Flange radius 1, 0.25 thick; cone radius 0.85 at its
+// foot, 0.1 at its top.
 vtkSmartPointer<vtkPolyData> nprConeOnFlange(double coneAngle, int around = 128);
 
 // A cylinder (radius 1, 1.4 high) with a 45-degree chamfer round its foot (two convex creases of

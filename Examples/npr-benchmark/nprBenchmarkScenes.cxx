@@ -28,6 +28,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -184,6 +185,31 @@ vtkSmartPointer<vtkPolyData> WithMovedPoints(vtkPolyData* raw, Move move)
   }
   return nprMesh(points, raw->GetPolys());
 }
+
+// The generated set (nprMeshes), in its order.
+struct GeneratedScene
+{
+  std::string Name;
+  std::string Description;
+  std::function<vtkSmartPointer<vtkPolyData>()> Make;
+};
+
+const std::vector<GeneratedScene>& GeneratedScenes()
+{
+  static const std::vector<GeneratedScene> scenes = {
+    { "cone-flange", "generated: cone on a flange, 35-degree concave and convex circular creases",
+      [] { return nprConeOnFlange(35.0); } },
+    { "steep-cone", "generated: cone on a flange, 60-degree concave and convex circular creases",
+      [] { return nprConeOnFlange(60.0); } },
+    { "filleted-cylinder", "generated: cylinder with a chamfer, a fillet and a filleted boss",
+      [] { return nprFilletedCylinder(); } },
+    { "boss-pocket", "generated: plate with a boss and a pocket (90-degree creases)",
+      [] { return nprBossAndPocket(); } },
+    { "bumpy-torus", "generated, scan-like: torus displaced by bumps of three sizes",
+      [] { return nprBumpyTorus(); } }
+  };
+  return scenes;
+}
 }
 
 const std::vector<std::string>& nprBenchmarkSceneNames()
@@ -195,8 +221,15 @@ const std::vector<std::string>& nprBenchmarkSceneNames()
 
 const std::vector<std::string>& nprBenchmarkGeneratedSceneNames()
 {
-  static const std::vector<std::string> names = { "cone-flange", "steep-cone",
-    "filleted-cylinder", "boss-pocket", "bumpy-torus" };
+  static const std::vector<std::string> names = []
+  {
+    std::vector<std::string> all;
+    for (const GeneratedScene& scene : GeneratedScenes())
+    {
+      all.push_back(scene.Name);
+    }
+    return all;
+  }();
   return names;
 }
 
@@ -211,7 +244,14 @@ nprBenchmarkScene nprLoadBenchmarkScene(
 {
   nprBenchmarkScene scene;
   scene.Name = name;
-  if (name == "cad")
+  const auto generated = std::find_if(GeneratedScenes().begin(), GeneratedScenes().end(),
+    [&](const GeneratedScene& candidate) { return candidate.Name == name; });
+  if (generated != GeneratedScenes().end())
+  {
+    scene.Raw = generated->Make();
+    scene.Description = generated->Description;
+  }
+  else if (name == "cad")
   {
     scene.Raw = ReadModel(dataDir + "/cad_part.vtp");
     scene.Description = "CAD part (cad_part.vtp)";
@@ -241,28 +281,6 @@ nprBenchmarkScene nprLoadBenchmarkScene(
   {
     scene.Raw = Knot();
     scene.Description = "trefoil knot as a swelling tube (600 x 48 quads as triangles)";
-  }
-  else if (name == "cone-flange" || name == "steep-cone")
-  {
-    const double angle = name == "cone-flange" ? 35.0 : 60.0;
-    scene.Raw = nprConeOnFlange(angle);
-    scene.Description = "generated: cone on a flange, " + nprFormat(angle, 3) +
-      "-degree concave and convex circular creases";
-  }
-  else if (name == "filleted-cylinder")
-  {
-    scene.Raw = nprFilletedCylinder();
-    scene.Description = "generated: cylinder with a chamfer, a fillet and a filleted boss";
-  }
-  else if (name == "boss-pocket")
-  {
-    scene.Raw = nprBossAndPocket();
-    scene.Description = "generated: plate with a boss and a pocket (90-degree creases)";
-  }
-  else if (name == "bumpy-torus")
-  {
-    scene.Raw = nprBumpyTorus();
-    scene.Description = "generated, scan-like: torus displaced by bumps of three sizes";
   }
   else if (name == "box")
   {
