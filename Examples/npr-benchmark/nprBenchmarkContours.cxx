@@ -38,17 +38,22 @@ bool IsCad(const std::string& scene)
 }
 
 // The generated parts are also seen from 40 degrees above, where the tester found concave
-// creases missed (issue 36): the same azimuths at that elevation.
+// creases missed (issue 36), and from 65, a little above the steep cone's slope: the same
+// azimuths at those elevations.
 std::vector<nprBenchmarkCamera> WithViewsFromAbove(const std::vector<nprBenchmarkCamera>& cameras)
 {
   std::vector<nprBenchmarkCamera> all = cameras;
-  std::vector<double> azimuths;
-  for (const nprBenchmarkCamera& camera : cameras)
+  for (int elevation : { 40, 65 })
   {
-    if (std::find(azimuths.begin(), azimuths.end(), camera.Azimuth) == azimuths.end())
+    std::vector<double> azimuths;
+    for (const nprBenchmarkCamera& camera : cameras)
     {
-      azimuths.push_back(camera.Azimuth);
-      all.push_back({ "a" + nprFormat(camera.Azimuth, 3) + "e40", camera.Azimuth, 40.0 });
+      if (std::find(azimuths.begin(), azimuths.end(), camera.Azimuth) == azimuths.end())
+      {
+        azimuths.push_back(camera.Azimuth);
+        all.push_back({ "a" + nprFormat(camera.Azimuth, 3) + "e" + std::to_string(elevation),
+          camera.Azimuth, static_cast<double>(elevation) });
+      }
     }
   }
   return all;
@@ -274,7 +279,7 @@ int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
   if (std::any_of(scenes.begin(), scenes.end(),
         [](const nprBenchmarkScene& scene) { return nprIsGeneratedScene(scene.Name); }))
   {
-    cameraLine += "; the generated scenes also at elevation 40, at the same azimuths";
+    cameraLine += "; the generated scenes also at elevations 40 and 65, at the same azimuths";
   }
 
   std::vector<ContourRow> rows;
