@@ -16,16 +16,16 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
 {
 struct ContourRow
 {
-  std::string Scene, Kind, Camera, Method, Truth;
+  std::string Set, Scene, Kind, Camera, Method, Truth;
   double Precision = 0.0, Recall = 0.0, F1 = 0.0;
   long long MethodPixels = 0, TruthPixels = 0;
 };
@@ -33,7 +33,30 @@ struct ContourRow
 // The CAD parts; the other scenes are smooth or scanned surfaces.
 bool IsCad(const std::string& scene)
 {
-  return scene == "cad" || scene == "rotor";
+  return scene == "cad" || scene == "rotor" ||
+    (nprIsGeneratedScene(scene) && scene != "bumpy-torus");
+}
+
+// The generated parts are also seen from 40 degrees above, where the tester found concave
+// creases missed (issue 36), and from 65, a little above the steep cone's slope: the same
+// azimuths at those elevations.
+std::vector<nprBenchmarkCamera> WithViewsFromAbove(const std::vector<nprBenchmarkCamera>& cameras)
+{
+  std::vector<nprBenchmarkCamera> all = cameras;
+  for (int elevation : { 40, 65 })
+  {
+    std::vector<double> azimuths;
+    for (const nprBenchmarkCamera& camera : cameras)
+    {
+      if (std::find(azimuths.begin(), azimuths.end(), camera.Azimuth) == azimuths.end())
+      {
+        azimuths.push_back(camera.Azimuth);
+        all.push_back({ "a" + nprFormat(camera.Azimuth, 3) + "e" + std::to_string(elevation),
+          camera.Azimuth, static_cast<double>(elevation) });
+      }
+    }
+  }
+  return all;
 }
 
 struct Variant
@@ -59,17 +82,101 @@ const Truth Truths[] = { { "mesh", true, false }, { "smooth", true, true },
 void WriteCSV(const std::string& path, const std::vector<ContourRow>& rows)
 {
   std::ofstream out(path);
-  out << "scene,kind,camera,method,truth,precision_1px,recall_1px,f1_1px,method_pixels,"
+  out << "set,scene,kind,camera,method,truth,precision_1px,recall_1px,f1_1px,method_pixels,"
          "truth_pixels\n";
   for (const ContourRow& row : rows)
   {
-    out << row.Scene << "," << row.Kind << "," << row.Camera << "," << row.Method << ","
-        << row.Truth << "," << nprFormat(row.Precision) << "," << nprFormat(row.Recall) << ","
-        << nprFormat(row.F1) << "," << row.MethodPixels << "," << row.TruthPixels << "\n";
+    out << row.Set << "," << row.Scene << "," << row.Kind << "," << row.Camera << "," << row.Method
+        << "," << row.Truth << "," << nprFormat(row.Precision) << "," << nprFormat(row.Recall)
+        << "," << nprFormat(row.F1) << "," << row.MethodPixels << "," << row.TruthPixels << "\n";
   }
   if (!out)
   {
     throw std::runtime_error("cannot write " + path);
+  }
+}
+
+// A Markdown table's header row and the line under it.
+void WriteTableHead(std::ostream& out, const std::vector<std::string>& columns)
+{
+  std::string rule = "|";
+  for (const std::string& column : columns)
+  {
+    out << "| " << column << " ";
+    rule += "---|";
+  }
+  out << "|\n" << rule << "\n";
+}
+
+// The rows grouped by the name key(row) gives them (none for an empty name), in the order of
+// their first rows, each group summed up by add(summary, row).
+template <typename Summary, typename Key, typename Add>
+std::vector<std::pair<std::string, Summary>> Summarise(
+  const std::vector<ContourRow>& rows, Key key, Add add)
+{
+  std::vector<std::pair<std::string, Summary>> groups;
+  for (const ContourRow& row : rows)
+  {
+    const std::string name = key(row);
+    if (name.empty())
+    {
+      continue;
+    }
+    auto group = std::find_if(groups.begin(), groups.end(),
+      [&](const std::pair<std::string, Summary>& other) { return other.first == name; });
+    if (group == groups.end())
+    {
+      groups.emplace_back(name, Summary());
+      group = groups.end() - 1;
+    }
+    add(group->second, row);
+  }
+  return groups;
+}
+
+// Per set of scenes (the repository's, the generated) and kind: the figures of issue 36, for the
+// lines against the mesh truth on CAD parts (mean and lowest F1@1, views below 0.99) and the
+// outline against the smooth contours on smooth surfaces (mean F1@1 and recall).
+void WriteSetSummary(std::ostream& out, const std::vector<ContourRow>& rows)
+{
+  struct Summary
+  {
+    double F1 = 0.0, Recall = 0.0, LowestF1 = 1.0, LowestRecall = 1.0;
+    int Views = 0, ViewsBelow099 = 0;
+  };
+  const auto groups = Summarise<Summary>(
+    rows,
+    [](const ContourRow& row) -> std::string
+    {
+      const bool cad = row.Kind == "cad";
+      if (cad ? row.Method != "lines" || row.Truth != "mesh"
+              : row.Method != "outline" || row.Truth != "smooth")
+      {
+        return "";
+      }
+      return row.Set + " | " + row.Kind + " | " + row.Method + " | " + row.Truth;
+    },
+    [](Summary& summary, const ContourRow& row)
+    {
+      summary.F1 += row.F1;
+      summary.Recall += row.Recall;
+      summary.LowestF1 = std::min(summary.LowestF1, row.F1);
+      summary.LowestRecall = std::min(summary.LowestRecall, row.Recall);
+      summary.ViewsBelow099 += row.F1 < 0.99 ? 1 : 0;
+      ++summary.Views;
+    });
+  out << "\n## The sets\n\nThe repository's scenes and the generated ones (nprMeshes), apart: "
+         "CAD parts, every line type against the mesh truth; smooth and scan-like surfaces, the "
+         "outline against the smooth contours.\n\n";
+  WriteTableHead(out,
+    { "set", "kind", "method", "truth", "views", "mean F1@1", "lowest F1@1", "views F1@1 < 0.99",
+      "mean recall@1", "lowest recall@1" });
+  for (const auto& group : groups)
+  {
+    const Summary& s = group.second;
+    out << "| " << group.first << " | " << s.Views << " | " << nprFormat(s.F1 / s.Views, 3) << " | "
+        << nprFormat(s.LowestF1, 3) << " | " << s.ViewsBelow099 << " | "
+        << nprFormat(s.Recall / s.Views, 3) << " | " << nprFormat(s.LowestRecall, 3) << " |\n";
   }
 }
 
@@ -86,47 +193,44 @@ void WriteMarkdown(const std::string& path, const std::vector<ContourRow>& rows,
     std::string WorstView;
     int Views = 0, ViewsAt097 = 0, ViewsAt099 = 0;
   };
-  std::vector<std::string> order;
-  std::map<std::string, Summary> summaries;
-  for (const ContourRow& row : rows)
-  {
-    const std::string key = row.Scene + " | " + row.Kind + " | " + row.Method + " | " + row.Truth;
-    if (!summaries.count(key))
+  const auto groups = Summarise<Summary>(
+    rows,
+    [](const ContourRow& row)
+    { return row.Scene + " | " + row.Kind + " | " + row.Method + " | " + row.Truth; },
+    [](Summary& summary, const ContourRow& row)
     {
-      order.push_back(key);
-    }
-    Summary& summary = summaries[key];
-    summary.Precision += row.Precision;
-    summary.Recall += row.Recall;
-    summary.F1 += row.F1;
-    if (row.F1 < summary.WorstF1 || summary.Views == 0)
-    {
-      summary.WorstF1 = row.F1;
-      summary.WorstView = row.Camera;
-    }
-    summary.LowestPrecision = std::min(summary.LowestPrecision, row.Precision);
-    summary.LowestRecall = std::min(summary.LowestRecall, row.Recall);
-    summary.ViewsAt097 += row.F1 >= 0.97 ? 1 : 0;
-    summary.ViewsAt099 += row.F1 >= 0.99 ? 1 : 0;
-    ++summary.Views;
-  }
+      summary.Precision += row.Precision;
+      summary.Recall += row.Recall;
+      summary.F1 += row.F1;
+      if (row.F1 < summary.WorstF1 || summary.Views == 0)
+      {
+        summary.WorstF1 = row.F1;
+        summary.WorstView = row.Camera;
+      }
+      summary.LowestPrecision = std::min(summary.LowestPrecision, row.Precision);
+      summary.LowestRecall = std::min(summary.LowestRecall, row.Recall);
+      summary.ViewsAt097 += row.F1 >= 0.97 ? 1 : 0;
+      summary.ViewsAt099 += row.F1 >= 0.99 ? 1 : 0;
+      ++summary.Views;
+    });
   std::ofstream out(path);
   out << "# Lines on smooth surfaces and CAD parts (npr-benchmark --contours)\n\n" << header;
   out << "\nMeans over the views; the worst view's F1@1 and its camera; the lowest precision and "
          "recall of any view; the views whose F1@1 reaches 0.97 and 0.99.\n\n";
-  out << "| scene | kind | method | truth | precision@1 | recall@1 | F1@1 | worst F1@1 | "
-         "lowest precision, recall | views F1@1 >= 0.97 | >= 0.99 |\n";
-  out << "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const std::string& key : order)
+  WriteTableHead(out,
+    { "scene", "kind", "method", "truth", "precision@1", "recall@1", "F1@1", "worst F1@1",
+      "lowest precision, recall", "views F1@1 >= 0.97", ">= 0.99" });
+  for (const auto& group : groups)
   {
-    const Summary& s = summaries[key];
+    const Summary& s = group.second;
     const std::string views = "/" + std::to_string(s.Views);
-    out << "| " << key << " | " << nprFormat(s.Precision / s.Views, 3) << " | "
+    out << "| " << group.first << " | " << nprFormat(s.Precision / s.Views, 3) << " | "
         << nprFormat(s.Recall / s.Views, 3) << " | " << nprFormat(s.F1 / s.Views, 3) << " | "
         << nprFormat(s.WorstF1, 3) << " (" << s.WorstView << ") | "
         << nprFormat(s.LowestPrecision, 3) << ", " << nprFormat(s.LowestRecall, 3) << " | "
         << s.ViewsAt097 << views << " | " << s.ViewsAt099 << views << " |\n";
   }
+  WriteSetSummary(out, rows);
   out << "\nRun time: " << nprFormat(seconds, 3) << " s\n";
   if (!out)
   {
@@ -172,6 +276,11 @@ int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
     cameras.assign(nprBenchmarkCameras().begin(), nprBenchmarkCameras().begin() + options.Cameras);
     cameraLine = nprBenchmarkCameraLine(options.Cameras);
   }
+  if (std::any_of(scenes.begin(), scenes.end(),
+        [](const nprBenchmarkScene& scene) { return nprIsGeneratedScene(scene.Name); }))
+  {
+    cameraLine += "; the generated scenes also at elevations 40 and 65, at the same azimuths";
+  }
 
   std::vector<ContourRow> rows;
   for (const nprBenchmarkScene& scene : scenes)
@@ -180,7 +289,8 @@ int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
     for (const auto& size : options.Sizes)
     {
       stage.Window->SetSize(size.first, size.second);
-      for (const nprBenchmarkCamera& camera : cameras)
+      for (const nprBenchmarkCamera& camera :
+        nprIsGeneratedScene(scene.Name) ? WithViewsFromAbove(cameras) : cameras)
       {
         stage.Activate(nullptr, false);
         nprApplyBenchmarkCamera(stage.Renderer, camera);
@@ -218,6 +328,7 @@ int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
             nprEdgeMetrics metrics;
             metrics.Compute(mask.Pixels.data(), truths[t].Pixels.data(), mask.Width, mask.Height);
             ContourRow row;
+            row.Set = nprIsGeneratedScene(scene.Name) ? "generated" : "repository";
             row.Scene = scene.Name;
             row.Kind = IsCad(scene.Name) ? "cad" : "smooth";
             row.Camera = camera.Name;

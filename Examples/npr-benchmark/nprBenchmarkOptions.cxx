@@ -43,8 +43,9 @@ OUT/speed.csv and OUT/speed.md (default scenes bunny1m,box, sizes 1920x1080,1024
 With --contours: the edge pass on smooth and scanned surfaces and on CAD parts, every line type and
 silhouettes alone, with and without its smooth silhouettes, against two truths: the mesh's
 silhouette edges and the smooth surface's contour (with the same creases and borders); writes
-OUT/contours.csv and OUT/contours.md (default scenes cad,rotor,bunny,isosurface,blobs,knot, size
-1024x768; --quick: knot).
+OUT/contours.csv and OUT/contours.md (default scenes cad,rotor,bunny,isosurface,blobs,knot and the
+generated set cone-flange,steep-cone,filleted-cylinder,boss-pocket,bumpy-torus, also seen from 40
+degrees above, each set summed up apart; size 1024x768; --quick: knot).
 With --scale: the cost against the model's size, on the bunny decimated to 62,500 triangles and
 refined by Loop subdivision (binary PLY, made once into the --scale-meshes folder): the wall time
 and peak memory of whole programs, each a child process (npr-render in five styles and to SVG,
@@ -60,7 +61,8 @@ OUT/scale.csv, OUT/scale.md, OUT/scale_programs.png and OUT/scale_steps.png (def
   --frames N         timed frames per method and view (default 10; a warm-up frame first)
   --sizes LIST       WxH sizes, comma separated (default 1024x768,1920x1080)
   --scenes LIST      of cad, rotor, bunny, isosurface, blobs, knot, bunny1m, box (default all
-                     but box; --stress: cad,bunny)
+                     but box; --stress: cad,bunny) and the generated set cone-flange,
+                     steep-cone, filleted-cylinder, boss-pocket, bumpy-torus (--contours)
   --methods LIST     method names, or the families edges, inked, objectlines (default all)
   --cameras N        the first N of the 3 cameras (default 3; --stress: 1)
   --orbit DEG        --contours: instead of the cameras, a turn around each model: azimuth
@@ -224,10 +226,12 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
       {
         const auto& names = nprBenchmarkSceneNames();
         // box (--speed's small scene) is not among the defaults.
-        if (scene != "box" && std::find(names.begin(), names.end(), scene) == names.end())
+        if (scene != "box" && !nprIsGeneratedScene(scene) &&
+          std::find(names.begin(), names.end(), scene) == names.end())
         {
           throw nprUsageError("unknown scene '" + scene +
-            "' (cad, rotor, bunny, isosurface, blobs, knot, bunny1m, box)");
+            "' (cad, rotor, bunny, isosurface, blobs, knot, bunny1m, box, cone-flange, "
+            "steep-cone, filleted-cylinder, boss-pocket, bumpy-torus)");
         }
       }
     }
@@ -338,6 +342,11 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
       options.Scenes = options.Quick
         ? std::vector<std::string>{ "knot" }
         : std::vector<std::string>{ "cad", "rotor", "bunny", "isosurface", "blobs", "knot" };
+      if (!options.Quick)
+      {
+        const std::vector<std::string>& generated = nprBenchmarkGeneratedSceneNames();
+        options.Scenes.insert(options.Scenes.end(), generated.begin(), generated.end());
+      }
       options.ScenesGiven = true;
     }
     if (!sizesGiven && !options.Quick)

@@ -24,9 +24,11 @@
 #include "vtkTessellatedBoxSource.h"
 #include "vtkTriangleFilter.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -183,6 +185,31 @@ vtkSmartPointer<vtkPolyData> WithMovedPoints(vtkPolyData* raw, Move move)
   }
   return nprMesh(points, raw->GetPolys());
 }
+
+// The generated set (nprMeshes), in its order.
+struct GeneratedScene
+{
+  std::string Name;
+  std::string Description;
+  std::function<vtkSmartPointer<vtkPolyData>()> Make;
+};
+
+const std::vector<GeneratedScene>& GeneratedScenes()
+{
+  static const std::vector<GeneratedScene> scenes = {
+    { "cone-flange", "generated: cone on a flange, 35-degree concave and convex circular creases",
+      [] { return nprConeOnFlange(35.0); } },
+    { "steep-cone", "generated: cone on a flange, 60-degree concave and convex circular creases",
+      [] { return nprConeOnFlange(60.0); } },
+    { "filleted-cylinder", "generated: cylinder with a chamfer, a fillet and a filleted boss",
+      [] { return nprFilletedCylinder(); } },
+    { "boss-pocket", "generated: plate with a boss and a pocket (90-degree creases)",
+      [] { return nprBossAndPocket(); } },
+    { "bumpy-torus", "generated, scan-like: torus displaced by bumps of three sizes",
+      [] { return nprBumpyTorus(); } }
+  };
+  return scenes;
+}
 }
 
 const std::vector<std::string>& nprBenchmarkSceneNames()
@@ -192,12 +219,39 @@ const std::vector<std::string>& nprBenchmarkSceneNames()
   return names;
 }
 
+const std::vector<std::string>& nprBenchmarkGeneratedSceneNames()
+{
+  static const std::vector<std::string> names = []
+  {
+    std::vector<std::string> all;
+    for (const GeneratedScene& scene : GeneratedScenes())
+    {
+      all.push_back(scene.Name);
+    }
+    return all;
+  }();
+  return names;
+}
+
+bool nprIsGeneratedScene(const std::string& name)
+{
+  const std::vector<std::string>& names = nprBenchmarkGeneratedSceneNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
 nprBenchmarkScene nprLoadBenchmarkScene(
   const std::string& name, const std::string& dataDir, const std::string& denseMesh)
 {
   nprBenchmarkScene scene;
   scene.Name = name;
-  if (name == "cad")
+  const auto generated = std::find_if(GeneratedScenes().begin(), GeneratedScenes().end(),
+    [&](const GeneratedScene& candidate) { return candidate.Name == name; });
+  if (generated != GeneratedScenes().end())
+  {
+    scene.Raw = generated->Make();
+    scene.Description = generated->Description;
+  }
+  else if (name == "cad")
   {
     scene.Raw = ReadModel(dataDir + "/cad_part.vtp");
     scene.Description = "CAD part (cad_part.vtp)";

@@ -27,6 +27,12 @@ struct nprBenchmarkScene
 // scene "box" (108 triangles, for --speed) loads too but is not among them.
 const std::vector<std::string>& nprBenchmarkSceneNames();
 
+// The generated set (nprMeshes): CAD parts with circular creases, concave and convex, above the
+// crease angle (cone-flange, steep-cone, filleted-cylinder, boss-pocket) and a scan-like bumpy
+// surface (bumpy-torus). --contours measures it after the default scenes and reports it apart.
+const std::vector<std::string>& nprBenchmarkGeneratedSceneNames();
+bool nprIsGeneratedScene(const std::string& name);
+
 // Loads or generates a scene. dataDir holds cad_part.vtp, rotor.ply and bunny.ply; denseMesh is
 // the 1M-triangle bunny (bunny_1m.ply). Throws std::runtime_error on failure.
 nprBenchmarkScene nprLoadBenchmarkScene(

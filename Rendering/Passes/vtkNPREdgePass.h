@@ -26,7 +26,9 @@
  *   interior contour towards its end, a fold seen nearly edge-on), and nothing on front-facing
  *   smooth regions, where n.v stays positive.
  * - Creases: the angle between the normals of neighbouring pixels of one object exceeds
- *   CreaseAngle (degrees). Lines lie on the side facing the viewer more. The normals compared
+ *   CreaseAngle (degrees). Lines lie on the side facing the viewer more, or (perspective views)
+ *   on the nearer side where the other is the far side of a depth jump across which the two
+ *   faces' planes meet: a crease beside a face seen nearly edge-on. The normals compared
  *   are the shading normals, or with FaceCreases (off by default, FLOAT encoding) the faces' own
  *   (the G-buffer's face normals), so that creases are those of the mesh also where the shading
  *   normals are averaged across an edge sharper than the angle (where vtkPolyDataNormals leaves

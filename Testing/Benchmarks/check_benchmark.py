@@ -196,6 +196,10 @@ def check_contours(out):
     md = os.path.join(out, "contours.md")
     check(os.path.isfile(md) and "| scene | kind | method | truth |" in open(md).read(),
           "contours.md has no table")
+    check({row["set"] for row in rows} == {"repository"}, "contours.csv: the knot's set")
+    # Each set summed up apart: the knot, smooth, its outline against the smooth contour.
+    check("| repository | smooth | outline | smooth | 1 |" in open(md).read(),
+          "contours.md: no summary of the repository's set")
 
 
 def check_contours_orbit(args):

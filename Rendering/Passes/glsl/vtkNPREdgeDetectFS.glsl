@@ -120,6 +120,36 @@ vec3 nprUnpackNormal(float code)
   return nprUnpackOctahedral(vec2(floor(code / 4096.0), mod(code, 4096.0)) / 4095.0 * 2.0 - 1.0);
 }
 
+#if NPR_CREASES
+// Whether a crease runs between pixel p and its neighbour p + d that lies farther by more than a
+// step's margin, so that the neighbour leaves the line out as a step's far side (main, below).
+// At a concave crease whose nearer face is seen nearly edge-on (a cone rising from a flange,
+// seen from a little above its slope) the depth jumps by as much across one pixel as at a step;
+// but the planes of the two faces (their normals through their depths) cross between the two
+// pixels' centres, where at a step the nearer surface's plane stays in front at both. a0, aD:
+// the affine depths (1/z: perspective only; the rays of a parallel view carry no position).
+bool nprCreaseBeyondStep(ivec2 p, ivec2 d, float depth0, float depthD, float a0, float aD,
+  vec3 n0, vec3 nD)
+{
+#if NPR_PERSPECTIVE
+  if (depth0 >= depthD * (1.0 - 4.0 * silhouetteThreshold))
+  {
+    return false;
+  }
+  vec3 ray0 = nprViewRay(p);
+  vec3 rayD = nprViewRay(p + d);
+  // On a plane through a point of affine depth a at ray r, the affine depth at ray r' is
+  // a (n.r') / (n.r): this surface against the neighbour's plane at p, then this plane against
+  // the neighbour's surface at p + d.
+  float here = a0 - aD * dot(nD, ray0) / dot(nD, rayD);
+  float there = a0 * dot(n0, rayD) / dot(n0, ray0) - aD;
+  return here * there <= 0.0;
+#else
+  return false;
+#endif
+}
+#endif
+
 void main()
 {
   ivec2 size = textureSize(geometryTexture, 0);
@@ -270,6 +300,7 @@ void main()
     // Between the faces' own normals (float encoding): the mesh's creases, also where the
     // shading normals are averaged across an edge sharper than the angle.
     vec3 n0 = NPR_FACE_NORMAL(g0);
+    const ivec2 steps[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
     for (int k = 0; k < 4; ++k)
     {
       // Not across a depth step from the far side: that line is the nearer surface's silhouette.
@@ -282,8 +313,10 @@ void main()
       if (sameObject)
       {
         vec3 nk = NPR_FACE_NORMAL(g[k]);
-        // One pixel per crease: the side that faces the viewer more (ties: right and up).
-        if (n0.z > nk.z || (n0.z == nk.z && (k == 0 || k == 2)))
+        // One pixel per crease: the side that faces the viewer more (ties: right and up), or
+        // this side where the other is a step's far side across the crease (left out above).
+        if (n0.z > nk.z || (n0.z == nk.z && (k == 0 || k == 2)) ||
+          nprCreaseBeyondStep(p, steps[k], g0.x, g[k].x, a0, a[k], n0, nk))
         {
           float angle = acos(clamp(dot(n0, nk), -1.0, 1.0));
           crease = max(crease, smoothstep(creaseAngle - creaseRamp, creaseAngle + creaseRamp, angle));
