@@ -16,8 +16,10 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNPRFeatureLines.h"
 #include "vtkNPRVectors.h"
+#include "vtkPointGaussianMapper.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -34,9 +36,17 @@ double Seconds(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The actors as they are drawn: visible, opaque, polygonal through a vtkPolyDataMapper; each
-// polygonal leaf of a composite input (ParaView's representations, vtkCompositePolyDataMapper2)
-// is a mesh of its actor.
+// Whether the actor shows surfaces: not a point cloud or a wireframe (the Points and Wireframe
+// representations, vtkPointGaussianMapper splats), which has no outline or creases of its own.
+bool ShowsSurfaces(vtkActor* actor)
+{
+  return actor->GetProperty()->GetRepresentation() == VTK_SURFACE &&
+    !vtkPointGaussianMapper::SafeDownCast(actor->GetMapper());
+}
+
+// The actors as they are drawn: visible, opaque, surfaces (ShowsSurfaces) through a
+// vtkPolyDataMapper; each polygonal leaf of a composite input (ParaView's representations,
+// vtkCompositePolyDataMapper2) is a mesh of its actor.
 std::vector<vtkNPRMeshInstance> DrawnMeshes(vtkRenderer* renderer)
 {
   std::vector<vtkNPRMeshInstance> actors;
@@ -46,7 +56,7 @@ std::vector<vtkNPRMeshInstance> DrawnMeshes(vtkRenderer* renderer)
   while (vtkActor* actor = collection->GetNextActor(it))
   {
     auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
-    if (!actor->GetVisibility() || !mapper)
+    if (!actor->GetVisibility() || !mapper || !ShowsSurfaces(actor))
     {
       continue;
     }
