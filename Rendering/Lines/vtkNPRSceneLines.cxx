@@ -17,9 +17,11 @@
 #include "vtkNPRPropParts.h"
 #include "vtkNPRVectors.h"
 #include "vtkNew.h"
+#include "vtkPointGaussianMapper.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPropCollection.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -36,13 +38,21 @@ double Seconds(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// One actor as it is drawn, with the matrix it is drawn with: visible, opaque, polygonal through a
-// vtkPolyDataMapper; each polygonal leaf of a composite input (ParaView's representations,
-// vtkCompositePolyDataMapper2) is a mesh of its actor.
+// Whether the actor shows surfaces: not a point cloud or a wireframe (the Points and Wireframe
+// representations, vtkPointGaussianMapper splats), which has no outline or creases of its own.
+bool ShowsSurfaces(vtkActor* actor)
+{
+  return actor->GetProperty()->GetRepresentation() == VTK_SURFACE &&
+    !vtkPointGaussianMapper::SafeDownCast(actor->GetMapper());
+}
+
+// One actor as it is drawn, with the matrix it is drawn with: visible, opaque, surfaces
+// (ShowsSurfaces) through a vtkPolyDataMapper; each polygonal leaf of a composite input
+// (ParaView's representations, vtkCompositePolyDataMapper2) is a mesh of its actor.
 void AddDrawnMeshes(vtkActor* actor, vtkMatrix4x4* matrix, std::vector<vtkNPRMeshInstance>& meshes)
 {
   auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
-  if (!mapper)
+  if (!mapper || !ShowsSurfaces(actor))
   {
     return;
   }

@@ -8,6 +8,7 @@
 #include "vtkNPRGBufferPass.h"
 #include "vtkNPRInkPass.h"
 #include "vtkNPRLinePrimitivesPass.h"
+#include "vtkNPRMeshEdgesPass.h"
 #include "vtkNPROpaquePass.h"
 #include "vtkNPRSketchPass.h"
 #include "vtkNPRToonPass.h"
@@ -65,10 +66,13 @@ vtkNPRPass::vtkNPRPass()
   sketchPasses->AddItem(this->SketchPass);
   sketchPasses->AddItem(this->LinePrimitivesPass);
   this->SketchSequence->SetPasses(sketchPasses);
+  // The drawing's faces are one colour: the mesh edges VTK draws into them are drawn again over it.
+  this->MeshEdgesPass = vtkNPRMeshEdgesPass::New();
   this->DrawingSequence = vtkSequencePass::New();
   vtkNew<vtkRenderPassCollection> drawingPasses;
   drawingPasses->AddItem(this->GBufferPass);
   drawingPasses->AddItem(this->DrawingPass);
+  drawingPasses->AddItem(this->MeshEdgesPass);
   drawingPasses->AddItem(this->LinePrimitivesPass);
   this->DrawingSequence->SetPasses(drawingPasses);
   this->TranslucentPass = vtkTranslucentPass::New();
@@ -84,6 +88,7 @@ vtkNPRPass::~vtkNPRPass()
   this->DrawingSequence->Delete();
   this->DrawingPass->Delete();
   this->LinePrimitivesPass->Delete();
+  this->MeshEdgesPass->Delete();
   this->SketchPass->Delete();
   this->InkPass->Delete();
   this->ToonPass->Delete();
@@ -211,6 +216,7 @@ void vtkNPRPass::ReleaseGraphicsResources(vtkWindow* window)
   this->InkPass->ReleaseGraphicsResources(window);
   this->DrawingPass->ReleaseGraphicsResources(window);
   this->LinePrimitivesPass->ReleaseGraphicsResources(window);
+  this->MeshEdgesPass->ReleaseGraphicsResources(window);
   this->OpaquePass->ReleaseGraphicsResources(window);
   this->SurfacePass->ReleaseGraphicsResources(window);
   this->DepthPeelingPass->ReleaseGraphicsResources(window);

@@ -15,10 +15,11 @@
  *       SKETCH      vtkNPRGBufferPass (drawing flat colours: a one-band vtkNPRToonPass, or the
  *                   toon pass with SketchToonShading), then vtkNPRSketchPass,
  *       INKED       vtkNPRInkPass (drawing a vtkOpaquePass twice: fat back-face wireframe,
- *                   then the faces with polygon offset) straight into the window,
+ *                   pushed back by polygon offset, then the faces) straight into the window,
  *       DRAWING     vtkNPRGBufferPass (drawing flat colours, of which only the depth is used),
  *                   then vtkNPRDrawingPass: faces in one colour, the exact object-space lines
- *                   over them, hidden lines dashed on request (SetHiddenLines()),
+ *                   over them, hidden lines dashed on request (SetHiddenLines()), then the
+ *                   mesh edges actors show (EdgeVisibilityOn) as VTK draws them,
  *     translucent: vtkTranslucentPass, or vtkDualDepthPeelingPass when the renderer's
  *                  UseDepthPeeling is on (its MaximumNumberOfPeels and OcclusionRatio apply),
  *     volumes, overlay.
@@ -144,6 +145,7 @@ protected:
   vtkNPRInkPass* InkPass;
   vtkNPRDrawingPass* DrawingPass;
   class vtkNPRLinePrimitivesPass* LinePrimitivesPass;
+  class vtkNPRMeshEdgesPass* MeshEdgesPass; // the drawing's: mesh edges over its faces
   vtkSequencePass* EdgesSequence;
   vtkSequencePass* SketchSequence;
   vtkSequencePass* DrawingSequence;

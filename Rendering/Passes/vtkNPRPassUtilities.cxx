@@ -11,6 +11,7 @@
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPointGaussianMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderWindow.h"
@@ -185,6 +186,11 @@ bool vtkNPRIsAnnotation(vtkProp* prop)
   return !(prop->IsA("vtkActor") || prop->IsA("vtkAssembly") || prop->IsA("vtkPropAssembly"));
 }
 
+bool vtkNPRDrawsSplats(vtkActor* actor)
+{
+  return vtkPointGaussianMapper::SafeDownCast(actor->GetMapper()) != nullptr;
+}
+
 bool vtkNPRKeepsOwnLook(vtkAbstractMapper* mapper, vtkProp* prop)
 {
   auto* polyDataMapper = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
@@ -193,7 +199,7 @@ bool vtkNPRKeepsOwnLook(vtkAbstractMapper* mapper, vtkProp* prop)
   {
     return false;
   }
-  if (vtkNPRIsAnnotation(vtkNPRUserProp(prop)))
+  if (vtkNPRIsAnnotation(vtkNPRUserProp(prop)) || vtkNPRDrawsSplats(actor))
   {
     return true;
   }

@@ -9,6 +9,7 @@
 #include <string> // for std::string
 
 class vtkAbstractMapper;
+class vtkActor;
 class vtkObject;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
@@ -61,9 +62,15 @@ vtkProp* vtkNPRUserProp(vtkProp* prop);
 // assembly. Annotations keep their own look; actors, LOD actors, glyphs and assemblies get styled.
 bool vtkNPRIsAnnotation(vtkProp* prop);
 
+// Whether the actor draws point splats (a vtkPointGaussianMapper, ParaView's Point Gaussian): a
+// point cloud, often translucent through an opacity array, whose splats VTK 9.1 draws as
+// triangles with alpha; they are not a surface.
+bool vtkNPRDrawsSplats(vtkActor* actor);
+
 // Whether the vtkOpenGLPolyDataMapper `mapper`, drawing for `prop`, keeps its own look, as VTK
 // draws it: a line or point primitive (lines, vertices, or polygons in the wireframe or points
-// representation), or anything drawn for an annotation (vtkNPRIsAnnotation of vtkNPRUserProp).
+// representation), splats (vtkNPRDrawsSplats), or anything drawn for an annotation
+// (vtkNPRIsAnnotation of vtkNPRUserProp).
 // Valid from the mapper's shader hooks (its bound primitive).
 bool vtkNPRKeepsOwnLook(vtkAbstractMapper* mapper, vtkProp* prop);
 
