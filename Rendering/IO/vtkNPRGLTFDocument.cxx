@@ -275,8 +275,8 @@ std::string vtkNPRGLTFDocument::ReadBuffer(
   // VTK 9.1's glTF reader fails to load a longer file too, and then crashed on its accessors.
   if (status.st_size != length)
   {
-    throw Invalid(what + " file '" + uri + "' has " + std::to_string(status.st_size) +
-      " bytes, " + (status.st_size < length ? "fewer" : "more") + " than its byteLength " +
+    throw Invalid(what + " file '" + uri + "' has " + std::to_string(status.st_size) + " bytes, " +
+      (status.st_size < length ? "fewer" : "more") + " than its byteLength " +
       std::to_string(length));
   }
   std::ifstream in(path, std::ios::binary);
