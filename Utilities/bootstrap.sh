@@ -19,8 +19,9 @@
 #   host           Debian 12, VTK 9.1: build and all tests, in $NPR_BUILD_DIR
 #   fuzz           Debian 12: npr-fuzz-readers (AddressSanitizer, UBSan) on NPR_FUZZ_MUTANTS
 #                  (default 1000) mutants of every model format from NPR_FUZZ_SEED (default 1),
-#                  or for NPR_FUZZ_SECONDS;
-#                  mutants that crash or hang land in $NPR_BUILD_DIR/fuzz/crashes
+#                  or for NPR_FUZZ_SECONDS; then a fresh-seed campaign of
+#                  NPR_FUZZ_FRESH_SECONDS (default 24) that reports without failing;
+#                  mutants that fail land in $NPR_BUILD_DIR/fuzz/crashes (fresh-crashes)
 #   sanitize       Debian 12, VTK 9.1, built with AddressSanitizer and UndefinedBehaviorSanitizer
 #                  (NPR_SANITIZE=ON): all tests but the long-running ones, in
 #                  $NPR_BUILD_DIR/sanitize; NPR_SKIP_SANITIZE=1 leaves it out (quick local runs)
@@ -213,7 +214,23 @@ run_fuzz_stage() {
     --seeds "$source_dir/Testing/Data/Fuzz/seeds" --work "$build_dir/fuzz/work" \
     --crashes "$build_dir/fuzz/crashes" "${budget[@]}" \
     --seed "${NPR_FUZZ_SEED:-1}" 2>&1 | tee -a "$build_dir/logs/fuzz.log"
-  return "${PIPESTATUS[0]}"
+  local verdict=${PIPESTATUS[0]}
+  run_fresh_fuzz
+  return "$verdict"
+}
+
+# A short campaign from a fresh seed (NPR_FUZZ_FRESH_SEED, default the date and $RANDOM; printed
+# so that it can be replayed with --seed) for NPR_FUZZ_FRESH_SECONDS (default 24): new mutants
+# every run. Its findings are printed and kept in $NPR_BUILD_DIR/fuzz/fresh-crashes, but do not
+# fail the stage (--explore): only the fixed corpus above does.
+run_fresh_fuzz() {
+  local seed=${NPR_FUZZ_FRESH_SEED:-$(date +%Y%m%d)$RANDOM}
+  echo "fuzz: a fresh campaign, seed $seed (findings reported, not failing the stage)" |
+    tee -a "$build_dir/logs/fuzz.log"
+  ASAN_OPTIONS=detect_leaks=0:exitcode=86 "$build_dir/bin/npr-fuzz-readers" \
+    --seeds "$source_dir/Testing/Data/Fuzz/seeds" --work "$build_dir/fuzz/fresh-work" \
+    --crashes "$build_dir/fuzz/fresh-crashes" --seconds "${NPR_FUZZ_FRESH_SECONDS:-24}" \
+    --seed "$seed" --explore 2>&1 | sed 's/^/fresh: /' | tee -a "$build_dir/logs/fuzz.log"
 }
 
 # The host build with ASan and UBSan (cmake/vtkNPRSanitize.cmake), in a build folder of its own:

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace
 {
@@ -82,9 +83,10 @@ vtkNPRDrawableSurface::CellCounts vtkNPRDrawableSurface::CountUndrawableCells(
 // For every point, its number among the finite ones (-1: a NaN or infinite coordinate); the
 // test on every core.
 std::vector<vtkIdType> vtkNPRDrawableSurface::NumberFinitePoints(
-  vtkPoints* points, vtkIdType& finitePoints)
+  vtkPoints* points, vtkIdType& finitePoints, vtkIdType& beyondFloat)
 {
   const vtkIdType count = points->GetNumberOfPoints();
+  // 1: drawable, 0: NaN or infinite, 2: finite but beyond float's range.
   std::vector<unsigned char> finite(static_cast<size_t>(count));
   const vtkNPRPointCoordinates data(points->GetData());
   vtkSMPTools::For(0, count,
@@ -94,15 +96,20 @@ std::vector<vtkIdType> vtkNPRDrawableSurface::NumberFinitePoints(
       for (vtkIdType i = begin; i < end; ++i)
       {
         data.Get(i, p);
-        finite[static_cast<size_t>(i)] =
-          std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+        const bool isFinite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+        const double largest = std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]) });
+        finite[static_cast<size_t>(i)] = !isFinite       ? 0
+          : largest <= std::numeric_limits<float>::max() ? 1
+                                                         : 2;
       }
     });
   std::vector<vtkIdType> newPointIds(static_cast<size_t>(count), -1);
   finitePoints = 0;
+  beyondFloat = 0;
   for (size_t i = 0; i < finite.size(); ++i)
   {
-    newPointIds[i] = finite[i] ? finitePoints++ : -1;
+    newPointIds[i] = finite[i] == 1 ? finitePoints++ : -1;
+    beyondFloat += finite[i] == 2;
   }
   return newPointIds;
 }
@@ -147,7 +154,7 @@ void vtkNPRDrawableSurface::CopyDrawable(vtkPolyData* surface,
 
 // How many of the three axes the points the cells use span no length along (2: on one line,
 // 3: at one spot): the points marked, then their bounds on every core.
-int vtkNPRDrawableSurface::CountFlatAxes(vtkPolyData* mesh)
+int vtkNPRDrawableSurface::CountFlatAxes(vtkPolyData* mesh, double& diagonal)
 {
   std::vector<unsigned char> used(static_cast<size_t>(mesh->GetNumberOfPoints()), 0);
   for (vtkCellArray* cells :
@@ -196,10 +203,14 @@ int vtkNPRDrawableSurface::CountFlatAxes(vtkPolyData* mesh)
     }
   }
   int flatAxes = 0;
+  diagonal = 0.0;
   for (int axis = 0; axis < 3; ++axis)
   {
-    flatAxes += !(all[2 * axis + 1] > all[2 * axis]);
+    const double side = all[2 * axis + 1] - all[2 * axis];
+    flatAxes += !(side > 0.0);
+    diagonal += side > 0.0 ? side * side : 0.0;
   }
+  diagonal = std::sqrt(diagonal);
   return flatAxes;
 }
 

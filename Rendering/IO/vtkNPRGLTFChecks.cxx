@@ -82,9 +82,17 @@ std::string ParseJSON(const std::string& json, Json::Value& root)
   builder.settings_["failIfExtra"] = false; // trailing NULs or spaces pad a GLB's JSON chunk
   std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
   std::string errors;
-  if (reader->parse(json.data(), json.data() + json.size(), &root, &errors))
+  try
   {
-    return "";
+    if (reader->parse(json.data(), json.data() + json.size(), &root, &errors))
+    {
+      return "";
+    }
+  }
+  // jsoncpp throws, not returns, past its stackLimit: values nested more than 200 deep.
+  catch (const std::exception& error)
+  {
+    return std::string(error.what()) + " (nested more than 200 deep)";
   }
   // jsoncpp: "* Line 2, Column 1\n  Syntax error: ...\n": its first error, on one line.
   std::istringstream lines(errors);

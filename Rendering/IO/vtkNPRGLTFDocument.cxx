@@ -272,10 +272,12 @@ std::string vtkNPRGLTFDocument::ReadBuffer(
   {
     throw Invalid(what + " file '" + uri + "' is missing");
   }
-  if (status.st_size < length)
+  // VTK 9.1's glTF reader fails to load a longer file too, and then crashed on its accessors.
+  if (status.st_size != length)
   {
-    throw Invalid(what + " file '" + uri + "' has " + std::to_string(status.st_size) +
-      " bytes, fewer than its byteLength " + std::to_string(length));
+    throw Invalid(what + " file '" + uri + "' has " + std::to_string(status.st_size) + " bytes, " +
+      (status.st_size < length ? "fewer" : "more") + " than its byteLength " +
+      std::to_string(length));
   }
   std::ifstream in(path, std::ios::binary);
   std::string bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>{});

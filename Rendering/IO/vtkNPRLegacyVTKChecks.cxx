@@ -99,6 +99,9 @@ public:
   size_t Size() const { return this->Text.size(); }
 
   void SetBinary(bool binary) { this->Binary = binary; }
+  bool IsBinary() const { return this->Binary; }
+  // Where `what` first occurs in the whole file (npos: nowhere).
+  size_t Find(const std::string& what) const { return this->Text.find(what); }
 
   // Binary data starts after the keyword line.
   void StartData()
@@ -181,6 +184,10 @@ public:
   void Check()
   {
     this->CheckHeader();
+    if (this->Walker.IsBinary())
+    {
+      this->CheckSpaceRuns();
+    }
     if (!this->HasPointsAndCells())
     {
       return; // image and rectilinear data: no points or cells to check
@@ -196,6 +203,19 @@ public:
   }
 
 private:
+  // VTK 9.1's legacy reader hangs (a loop without end) on 256 or more spaces in a row anywhere
+  // in a binary file, between sections or inside the data (issue 36, the fuzzer).
+  void CheckSpaceRuns() const
+  {
+    const std::string run(256, ' ');
+    const size_t at = this->Walker.Find(run);
+    if (at != std::string::npos)
+    {
+      Fail("256 or more spaces in a row at byte " + std::to_string(at) +
+        " of a binary file (VTK's legacy reader hangs on them)");
+    }
+  }
+
   // The version, the title and ASCII or BINARY.
   void CheckHeader()
   {

@@ -32,6 +32,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 #include <sys/stat.h>
 #include <vector>
 
@@ -392,12 +393,13 @@ bool vtkNPRModelReader::KeepDrawable(
 bool vtkNPRModelReader::DropUndrawable(
   const std::string& name, vtkPolyData* surface, vtkPolyData* output)
 {
-  // Drop points with NaN or infinite coordinates, the cells that use them, and cells that name
-  // a point that does not exist (VTP and VTK files, which VTK's readers take as they are).
+  // Drop points with NaN or infinite coordinates or beyond float's range, the cells that use
+  // them, and cells that name a point that does not exist (VTP and VTK files, which VTK's
+  // readers take as they are).
   const vtkIdType numberOfPoints = surface->GetNumberOfPoints();
-  vtkIdType finitePoints = 0;
+  vtkIdType finitePoints = 0, beyondFloat = 0;
   const std::vector<vtkIdType> newPointIds =
-    vtkNPRDrawableSurface::NumberFinitePoints(surface->GetPoints(), finitePoints);
+    vtkNPRDrawableSurface::NumberFinitePoints(surface->GetPoints(), finitePoints, beyondFloat);
   const vtkNPRDrawableSurface::CellCounts dropped =
     vtkNPRDrawableSurface::CountUndrawableCells(surface, newPointIds);
   if (finitePoints == numberOfPoints && dropped.OutOfRange == 0)
@@ -414,9 +416,12 @@ bool vtkNPRModelReader::DropUndrawable(
   std::string droppedText;
   if (this->NumberOfDroppedPoints)
   {
-    droppedText = "dropped " + std::to_string(this->NumberOfDroppedPoints) +
-      " points with NaN/Inf coordinates and the " + std::to_string(dropped.NonFinite) +
-      " cells that use them";
+    const vtkIdType nonFinite = this->NumberOfDroppedPoints - beyondFloat;
+    droppedText = "dropped " +
+      (nonFinite ? std::to_string(nonFinite) + " points with NaN/Inf coordinates" : "") +
+      (nonFinite && beyondFloat ? " and " : "") +
+      (beyondFloat ? std::to_string(beyondFloat) + " points beyond float's range (3.4e38)" : "") +
+      " and the " + std::to_string(dropped.NonFinite) + " cells that use them";
   }
   if (dropped.OutOfRange)
   {
@@ -424,24 +429,10 @@ bool vtkNPRModelReader::DropUndrawable(
       std::to_string(dropped.OutOfRange) + " cells that use a point index past the " +
       std::to_string(numberOfPoints) + " points";
   }
-  if (output->GetNumberOfCells() == 0)
+  const std::string nothing = NothingToDraw(output);
+  if (!nothing.empty())
   {
-    return this->Fail(name + ": nothing to draw: no cell is left after it " + droppedText);
-  }
-  // Every point the cells use at one spot or on one line.
-  const int flatAxes = vtkNPRDrawableSurface::CountFlatAxes(output);
-  if (flatAxes >= 2)
-  {
-    return this->Fail(name + ": nothing to draw: every point of its " +
-      std::to_string(output->GetNumberOfCells()) + " cells lies " +
-      (flatAxes == 3 ? "at one spot" : "on one line") + " (zero-area bounds)" +
-      (droppedText.empty() ? std::string() : " after it " + droppedText));
-  }
-  if (vtkNPRDrawableSurface::HasOnlyZeroAreaPolygons(output))
-  {
-    return this->Fail(name + ": nothing to draw: every one of its " +
-      std::to_string(output->GetNumberOfCells()) +
-      " faces has zero area (its corners on one line)" +
+    return this->Fail(name + ": nothing to draw: " + nothing +
       (droppedText.empty() ? std::string() : " after it " + droppedText));
   }
   if (!droppedText.empty())
@@ -450,4 +441,36 @@ bool vtkNPRModelReader::DropUndrawable(
     vtkWarningMacro(<< this->WarningMessage);
   }
   return true;
+}
+
+std::string vtkNPRModelReader::NothingToDraw(vtkPolyData* output)
+{
+  const std::string cells = std::to_string(output->GetNumberOfCells()) + " cells";
+  if (output->GetNumberOfCells() == 0)
+  {
+    return "no cell is left";
+  }
+  double diagonal = 0.0;
+  const int flatAxes = vtkNPRDrawableSurface::CountFlatAxes(output, diagonal);
+  if (flatAxes >= 2)
+  {
+    return "every point of its " + cells + " lies " +
+      (flatAxes == 3 ? "at one spot" : "on one line") + " (zero-area bounds)";
+  }
+  if (diagonal < vtkNPRDrawableSurface::SmallestDrawableDiagonal ||
+    diagonal > vtkNPRDrawableSurface::LargestDrawableDiagonal)
+  {
+    std::ostringstream size;
+    size << "its " << cells << " span " << diagonal << " (the diagonal of their bounds), "
+         << (diagonal < vtkNPRDrawableSurface::SmallestDrawableDiagonal ? "less" : "more")
+         << " than float rendering frames (" << vtkNPRDrawableSurface::SmallestDrawableDiagonal
+         << " to " << vtkNPRDrawableSurface::LargestDrawableDiagonal << ")";
+    return size.str();
+  }
+  if (vtkNPRDrawableSurface::HasOnlyZeroAreaPolygons(output))
+  {
+    return "every one of its " + std::to_string(output->GetNumberOfCells()) +
+      " faces has zero area (its corners on one line)";
+  }
+  return std::string();
 }

@@ -14,11 +14,12 @@
  *
  * Before VTK's reader runs, the file's structure is checked where that reader trusts it (PLY,
  * STL, OBJ, legacy VTK, glTF/GLB: vtkNPRModelFormatChecks, vtkNPRGLTFChecks). After it, points
- * with a NaN or infinite coordinate are removed with every cell that uses them, and cells that
- * name a point past the end are removed, with one warning that counts them
- * (GetNumberOfDroppedPoints(), GetNumberOfDroppedCells(), GetNumberOfOutOfRangeCells()). A file
- * with nothing drawable left (no cell, or every point of the cells at one spot or on one line)
- * is an error. Point and cell data follow their points and cells.
+ * with a NaN or infinite coordinate or one beyond float's range are removed with every cell that
+ * uses them, and cells that name a point past the end are removed, with one warning that counts
+ * them (GetNumberOfDroppedPoints(), GetNumberOfDroppedCells(), GetNumberOfOutOfRangeCells()). A
+ * file with nothing drawable left (no cell, every point of the cells at one spot or on one line,
+ * bounds too small or too large for float rendering to frame, or only faces without an area)
+ * is an error that says which. Point and cell data follow their points and cells.
  */
 #ifndef vtkNPRModelReader_h
 #define vtkNPRModelReader_h
@@ -94,6 +95,9 @@ private:
   bool ReadBinaryPLY(const std::string& fileName, vtkPolyData* output, bool& handled);
   bool KeepDrawable(const std::string& fileName, vtkPolyData* surface, vtkPolyData* output);
   bool DropUndrawable(const std::string& fileName, vtkPolyData* surface, vtkPolyData* output);
+  // Why nothing of the output can be drawn (no cell, bounds without an area or outside what
+  // float rendering frames, faces without an area), or "" when something can.
+  static std::string NothingToDraw(vtkPolyData* output);
   bool Fail(const std::string& message);
 };
 

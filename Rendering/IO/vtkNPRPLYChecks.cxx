@@ -317,6 +317,18 @@ void CheckBinaryBody(
 
 // ---- The ASCII body --------------------------------------------------------------------------
 
+// VTK's PLY reader reads a line into 4096 bytes (its end of line and NUL included): a longer
+// one is cut, and the rest read as the next line, which freed memory twice (issue 36).
+void CheckLineLength(const std::string& line, const std::string& where)
+{
+  const size_t longest = 4094;
+  if (line.size() > longest)
+  {
+    throw Invalid("malformed PLY file: " + where + " has " + std::to_string(line.size()) +
+      " bytes, more than the " + std::to_string(longest) + " VTK's PLY reader reads");
+  }
+}
+
 // Row i of an element: the next line that is not blank.
 std::string ReadASCIIRow(std::istream& in, const PLYElement& element, long long i)
 {
@@ -328,6 +340,7 @@ std::string ReadASCIIRow(std::istream& in, const PLYElement& element, long long 
       throw Invalid("truncated PLY file: " + element.Name + " " + std::to_string(i) + " of " +
         std::to_string(element.Count) + " is missing");
     }
+    CheckLineLength(text, "the line of " + element.Name + " " + std::to_string(i));
   } while (text.find_first_not_of(" \t\r") == std::string::npos);
   return text;
 }
@@ -431,9 +444,11 @@ std::string vtkNPRPLYChecks::ReadPLYHeader(
   return vtkNPRFormatParsing::WhatIsWrong(
     [&]
     {
+      CheckLineLength(line, "header line 1");
       bool ended = false;
-      while (!ended && std::getline(in, line))
+      for (int number = 2; !ended && std::getline(in, line); ++number)
       {
+        CheckLineLength(line, "header line " + std::to_string(number));
         ended = ReadHeaderLine(line, format, elements);
       }
       if (!ended)

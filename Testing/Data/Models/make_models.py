@@ -158,6 +158,20 @@ write("bad_negative_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -9\n")
 # One face on finite points (drawn), two on NaN/Inf points (dropped with one warning).
 write("part_nan.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\nv 0 inf 0\nf 1 2 3\nf 1 4 5\nf 2 4 5\n")
 write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n")  # every point on one line: nothing to draw
+# Silent blank images of npr-render before (issue 36): a cube too small or too large for the
+# camera to frame in float, and one point beyond float's range (dropped with its face).
+def scaled_cube(scale, extra=""):
+    points = "".join("%r %r %r\n" % tuple(scale * c for c in p) for p in P)
+    count = 8 + (extra != "")
+    return ("# vtk DataFile Version 3.0\nscaled\nASCII\nDATASET POLYDATA\nPOINTS %d double\n%s%s"
+            "POLYGONS %d %d\n%s%s" % (count, points, extra, 6 + (extra != ""), 30 + 4 * (extra != ""),
+                                      "".join("4 %d %d %d %d\n" % q for q in QUADS),
+                                      "3 0 1 8\n" if extra else ""))
+
+
+write("tiny.vtk", scaled_cube(1e-25))
+write("huge.vtk", scaled_cube(1e38))
+write("beyond_float.vtk", scaled_cube(1.0, "1e300 0 0\n"))
 pieces = f"""<?xml version="1.0"?>
 <VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">
   <PolyData>

@@ -160,6 +160,14 @@ int main(int argc, char* argv[])
     NPR_CHECK(warning.find("dropped 2 points with NaN/Inf") != std::string::npos &&
         warning.find("part_nan.obj") != std::string::npos,
       "part_nan.obj: warning '" << warning << "'");
+    reader = Read(dir + "/beyond_float.vtk");
+    NPR_CHECK(reader->GetOutput()->GetNumberOfCells() == 6 &&
+        reader->GetNumberOfDroppedPoints() == 1 && reader->GetNumberOfDroppedCells() == 1 &&
+        std::string(reader->GetWarningMessage())
+            .find("dropped 1 points beyond float's range (3.4e38) and the 1 cells") !=
+          std::string::npos,
+      "beyond_float.vtk: " << reader->GetOutput()->GetNumberOfCells() << " cells, warning '"
+                           << reader->GetWarningMessage() << "'");
     reader = Read(dir + "/part_bad_index.vtp");
     NPR_CHECK(reader->GetOutput()->GetNumberOfCells() == 5 &&
         reader->GetNumberOfOutOfRangeCells() == 1 &&
@@ -178,6 +186,8 @@ int main(int argc, char* argv[])
     { "vertex_twice.ply", "element 'vertex' given twice" },
     { "deep.vtp", "elements nested more than 64 deep" },
     { "zero_area.stl", "every one of its 3 faces has zero area" },
+    { "tiny.vtk", "less than float rendering frames (1e-20 to 1e+37)" },
+    { "huge.vtk", "more than float rendering frames (1e-20 to 1e+37)" },
     { "bad.gltf", "malformed glTF file: invalid JSON: Line 2, Column 1" },
     { "no_geometry.obj", "contains no geometry" }, { "cube.xyz", "unknown model format '.xyz'" },
     { "all_nan.off", "no cell is left" },
