@@ -111,8 +111,8 @@ void vtkNPRInkPass::Render(const vtkRenderState* state)
     this->ClearMask(renderer);
   }
   this->PreRender(state); // the mappers now call this pass's shader hooks
-  this->DrawBackFaceInk(state, visibleWidth, drawnWidth);
-  this->DrawFilledFaces(state);
+  this->DrawBackFaceInk(state, drawnWidth);
+  this->DrawFilledFaces(state, visibleWidth);
   this->PostRender(state);
   vtkOpenGLCheckErrorMacro("failed after vtkNPRInkPass::Render");
 }
@@ -155,8 +155,7 @@ void vtkNPRInkPass::ClearMask(vtkRenderer* renderer)
   glState->vtkglClear(GL_COLOR_BUFFER_BIT);
 }
 
-void vtkNPRInkPass::DrawBackFaceInk(
-  const vtkRenderState* state, double visibleWidth, double lineWidth)
+void vtkNPRInkPass::DrawBackFaceInk(const vtkRenderState* state, double lineWidth)
 {
   // Ink only for the surfaces whose mapper calls this pass's shader hooks: any other prop would be
   // drawn as a wireframe in its own colours.
@@ -189,14 +188,7 @@ void vtkNPRInkPass::DrawBackFaceInk(
   // own culling; the shader's discard gives the same image without culling, slower.
   this->InkDrawState = glState;
   this->SwitchMeshEdgesShader();
-  // Pushed away from the viewer by the line width's worth of depth slope, so that the filled
-  // faces hide the half of each line that lies over them; the faces keep their own depth, and
-  // what VTK draws on them (a selection highlight: the same mesh as a wireframe or points) stays.
-  glEnable(GL_POLYGON_OFFSET_LINE);
-  glPolygonOffset(static_cast<float>(visibleWidth), 1.0f);
   this->DelegatePass->Render(&inkState);
-  glPolygonOffset(0.0f, 0.0f);
-  glDisable(GL_POLYGON_OFFSET_LINE);
   this->InkDrawState = nullptr;
   glState->vtkglDisable(GL_CULL_FACE); // as a property without culling leaves it
   glState->vtkglCullFace(GL_BACK);
@@ -204,11 +196,19 @@ void vtkNPRInkPass::DrawBackFaceInk(
   glState->vtkglLineWidth(1.0f);
 }
 
-void vtkNPRInkPass::DrawFilledFaces(const vtkRenderState* state)
+void vtkNPRInkPass::DrawFilledFaces(const vtkRenderState* state, double visibleWidth)
 {
   this->DrawMode = this->CoverageOnly ? DrawMaskFill : DrawShaded;
   this->SwitchMeshEdgesShader();
+  // Pulled towards the viewer by the line width's worth of depth slope: the faces hide the half of
+  // each line that lies over them. (Lines pushed back instead keep a selection highlight on the
+  // faces visible, but the slivers of faces clipped at the tile borders of a tiled render then
+  // show as ink lines across the image: npr.tiled_render.inked measured 958 pixels.)
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(-static_cast<float>(visibleWidth), -1.0f);
   this->DelegatePass->Render(state);
+  glPolygonOffset(0.0f, 0.0f);
+  glDisable(GL_POLYGON_OFFSET_FILL);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   this->DrawMode = DrawShaded;
 }

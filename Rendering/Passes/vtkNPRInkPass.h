@@ -9,17 +9,16 @@
  * vtkOpaquePass) draws the opaque props twice:
  *
  * 1. back faces only, as a wireframe (glPolygonMode GL_LINE) of 2 x the line width, in InkColor,
- *    unlit, writing depth, pushed away from the viewer with glPolygonOffset (factor = the line
- *    width in pixels, units 1);
- * 2. every face filled and shaded as usual, at its own depth, so that a filled front face hides
- *    the fat lines everywhere except where they reach past the surface's outline, and what VTK
- *    draws on the faces (a selection highlight: the same mesh as a wireframe or points) stays.
+ *    unlit, writing depth;
+ * 2. every face filled and shaded as usual, pulled towards the viewer with glPolygonOffset
+ *    (factor = the line width in pixels, units 1), so that a filled front face hides the fat
+ *    lines everywhere except where they reach past the surface's outline.
  *
  * What is left is an ink line of about the line width outside every silhouette (an outline
  * against the background, an internal silhouette over a farther part), and along the boundary of
  * open surfaces. Creases are not drawn: the trick cannot see them. The offset factor is the line
- * width because a line reaching d pixels past a back-face edge is at that edge's depth: it must
- * go back by d pixels of depth slope for a front face over it to stay in front.
+ * width because a line reaching d pixels past a back-face edge is at that edge's depth: a front
+ * face over it must be pulled forward by d pixels of its own depth slope to stay in front.
  *
  * LineWidth is in pixels at 72 DPI (default 1.5), scaled by the window's DPI / 72 and tile
  * scale, clamped to what the OpenGL implementation draws (GL_ALIASED_LINE_WIDTH_RANGE; a warning
@@ -111,9 +110,8 @@ protected:
   // The steps of Render().
   double DrawableLineWidth(double width); // at most what this OpenGL draws (warns once)
   void ClearMask(vtkRenderer* renderer);  // CoverageOnly: the background black
-  // The back-face wireframe lineWidth wide, pushed back by visibleWidth's worth of depth slope.
-  void DrawBackFaceInk(const vtkRenderState* state, double visibleWidth, double lineWidth);
-  void DrawFilledFaces(const vtkRenderState* state);
+  void DrawBackFaceInk(const vtkRenderState* state, double lineWidth);
+  void DrawFilledFaces(const vtkRenderState* state, double visibleWidth);
   // Before each draw of a frame with mesh edges: the mappers take the draw's shaders.
   void SwitchMeshEdgesShader();
 

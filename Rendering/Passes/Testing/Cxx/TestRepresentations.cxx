@@ -208,8 +208,8 @@ int TestTranslucentSplats(int style)
 // 60% of the magenta pixels VTK draws (the style's own lines cover some of them). The sketch
 // hides more: its depth sprite is the nearer of its noise-displaced depths, so the displaced
 // sphere is in front of part of the highlight (43% of the wireframe, 57% of the points left,
-// measured); at least 35% there. Inked once left 5% (only at the outline: its faces were pulled
-// towards the viewer over the highlight).
+// measured); at least 35% there. Inked leaves 5% (only at the outline: its faces are pulled
+// towards the viewer over the highlight); ctest does not run its cases (classic-techniques.md).
 int TestHighlight(int style, int representation)
 {
   const char* name = vtkNPRPass::GetStyleName(style);
