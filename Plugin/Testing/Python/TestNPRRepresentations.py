@@ -17,7 +17,7 @@ from paraview.simple import *  # noqa: F401,F403
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from nprviewscene import STYLES, plugin_arguments, read_png  # noqa: E402
+from nprviewscene import STYLES, create_view, plugin_arguments, read_png  # noqa: E402
 
 args = plugin_arguments()
 LoadPlugin(args.plugin, ns=globals())
@@ -28,12 +28,7 @@ SIZE = [320, 240]
 messages = [vtkStringOutputWindow()]  # a new one for each case
 console = vtkOutputWindow.GetInstance()
 
-view = CreateView("NPRRenderView")
-view.ViewSize = SIZE
-view.OrientationAxesVisibility = 0
-if hasattr(view, "UseColorPaletteForBackground"):
-    view.UseColorPaletteForBackground = 0
-view.Background = [1.0, 1.0, 1.0]
+view = create_view(SIZE)
 
 
 def colour_pixels(img, rgb, tolerance=60):

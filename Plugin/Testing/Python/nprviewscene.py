@@ -26,16 +26,22 @@ def plugin_arguments(*extra):
     return args
 
 
-def create_scene(size=SIZE):
-    """A "Render View (NPR)" on a white background showing CAD-like parts (a plate, a pin) and a
-    contour of the Wavelet source (split between ranks under MPI). Returns the view and the
-    sources by name."""
+def create_view(size=SIZE):
+    """A "Render View (NPR)" of that size on a white background, without the orientation axes."""
     view = CreateView("NPRRenderView")
     view.ViewSize = size
     view.OrientationAxesVisibility = 0
     if hasattr(view, "UseColorPaletteForBackground"):
         view.UseColorPaletteForBackground = 0
     view.Background = [1.0, 1.0, 1.0]
+    return view
+
+
+def create_scene(size=SIZE):
+    """A "Render View (NPR)" on a white background showing CAD-like parts (a plate, a pin) and a
+    contour of the Wavelet source (split between ranks under MPI). Returns the view and the
+    sources by name."""
+    view = create_view(size)
     sources = {
         "box": Box(XLength=26, YLength=2, ZLength=22, Center=[0, -12, 0]),
         "cylinder": Cylinder(Resolution=48, Radius=2.5, Height=12, Center=[-14, -5, 6]),
