@@ -34,6 +34,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 namespace
@@ -240,7 +241,8 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
     this->RenderDepthOnly(state, width, height);
     return;
   }
-  const int opaqueProps = CountOpaqueProps(state);
+  std::vector<vtkProp*> parts = DrawnParts(state);
+  const int opaqueProps = CountOpaqueProps(parts);
   if (opaqueProps == 0)
   {
     // Nothing to draw: no buffers, no effects.
@@ -265,7 +267,7 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   this->AllocateBuffers(window, width, height, components, this->WrittenEncoding);
   this->UpdateProjection(state->GetRenderer(), width, height, true);
   this->ComputeContentRectangle(state, width, height);
-  this->Internal->FrameProps = DrawnParts(state);
+  this->Internal->FrameProps = std::move(parts);
   this->DrawGeometry(state, width, height);
   this->Internal->Last = vtkNPRTakeFrameSignature(
     state, width, height, this->WritesNormals, this->WritesObjectIds, this->GetSettingsTime());
@@ -284,10 +286,10 @@ void vtkNPRGBufferPass::GetTargetSize(const vtkRenderState* state, int& width, i
   state->GetRenderer()->GetTiledSizeAndOrigin(&width, &height, &x, &y);
 }
 
-int vtkNPRGBufferPass::CountOpaqueProps(const vtkRenderState* state)
+int vtkNPRGBufferPass::CountOpaqueProps(const std::vector<vtkProp*>& parts)
 {
   int opaqueProps = 0;
-  for (vtkProp* part : DrawnParts(state))
+  for (vtkProp* part : parts)
   {
     opaqueProps += part->HasOpaqueGeometry() ? 1 : 0;
   }

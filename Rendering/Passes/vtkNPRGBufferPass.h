@@ -69,6 +69,7 @@
 #include "vtkNPRPassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
+#include <vector> // for CountOpaqueProps
 
 class vtkMatrix4x4;
 class vtkOpenGLFramebufferObject;
@@ -252,7 +253,7 @@ protected:
   void RenderDepthOnly(const vtkRenderState* state, int width, int height);
   // The steps of Render() and RenderDepthOnly().
   static void GetTargetSize(const vtkRenderState* state, int& width, int& height);
-  static int CountOpaqueProps(const vtkRenderState* state);
+  static int CountOpaqueProps(const std::vector<vtkProp*>& parts);
   void UpdateOutputs(int opaqueProps);
   void SetOutputs(bool normals, bool ids, bool faceNormals, int encoding);
   // The camera's matrices, projection type and depth range; with mayRemapDepth, the log depth

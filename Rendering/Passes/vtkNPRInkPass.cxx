@@ -55,9 +55,8 @@ bool vtkNPRCallsInkHooks(vtkMapper* mapper)
 // Whether VTK draws the top-level prop as surfaces whose mappers call this pass's hooks: an
 // actor, or an assembly whose parts all are such actors (any other part would be drawn as a
 // wireframe in its own colours).
-bool vtkNPRIsInkable(vtkProp* prop)
+bool vtkNPRIsInkable(vtkProp* prop, const std::vector<vtkNPRPropPart>& parts)
 {
-  const std::vector<vtkNPRPropPart> parts = vtkNPRPropParts(prop);
   return !vtkNPRIsAnnotation(prop) && !parts.empty() &&
     std::all_of(parts.begin(), parts.end(),
       [](const vtkNPRPropPart& part)
@@ -69,17 +68,11 @@ bool vtkNPRIsInkable(vtkProp* prop)
 
 // Whether a part of the top-level prop shows its mesh edges (vtkProperty::EdgeVisibilityOn on a
 // surface): VTK draws them through a geometry shader.
-bool vtkNPRShowsMeshEdges(vtkProp* prop)
+bool vtkNPRShowsMeshEdges(const std::vector<vtkNPRPropPart>& parts)
 {
-  for (const vtkNPRPropPart& part : vtkNPRPropParts(prop))
-  {
-    vtkProperty* property = static_cast<vtkActor*>(part.Prop)->GetProperty();
-    if (property->GetEdgeVisibility() && property->GetRepresentation() == VTK_SURFACE)
-    {
-      return true;
-    }
-  }
-  return false;
+  return std::any_of(parts.begin(), parts.end(),
+    [](const vtkNPRPropPart& part)
+    { return vtkNPRDrawsMeshEdges(static_cast<vtkActor*>(part.Prop)->GetProperty()); });
 }
 }
 
@@ -164,10 +157,11 @@ void vtkNPRInkPass::DrawBackFaceInk(const vtkRenderState* state, double lineWidt
   for (int i = 0; i < state->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = state->GetPropArray()[i];
-    if (vtkNPRIsInkable(prop))
+    const std::vector<vtkNPRPropPart> parts = vtkNPRPropParts(prop);
+    if (vtkNPRIsInkable(prop, parts))
     {
       inked.push_back(prop);
-      this->InkWithoutMeshEdges = this->InkWithoutMeshEdges || vtkNPRShowsMeshEdges(prop);
+      this->InkWithoutMeshEdges = this->InkWithoutMeshEdges || vtkNPRShowsMeshEdges(parts);
     }
   }
   if (inked.empty())

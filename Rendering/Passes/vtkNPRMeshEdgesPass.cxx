@@ -6,6 +6,7 @@
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNPROpenGL.h"
+#include "vtkNPRPassUtilities.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkProperty.h"
@@ -92,8 +93,7 @@ bool vtkNPRMeshEdgesPass::ShowsMeshEdges(vtkActor* actor)
 {
   vtkProperty* property = actor ? actor->GetProperty() : nullptr;
   return property && actor->GetVisibility() && actor->GetMapper() &&
-    property->GetEdgeVisibility() && property->GetRepresentation() == VTK_SURFACE &&
-    actor->HasOpaqueGeometry();
+    vtkNPRDrawsMeshEdges(property) && actor->HasOpaqueGeometry();
 }
 
 void vtkNPRMeshEdgesPass::Render(const vtkRenderState* state)

@@ -191,6 +191,11 @@ bool vtkNPRDrawsSplats(vtkActor* actor)
   return vtkPointGaussianMapper::SafeDownCast(actor->GetMapper()) != nullptr;
 }
 
+bool vtkNPRDrawsMeshEdges(vtkProperty* property)
+{
+  return property->GetEdgeVisibility() && property->GetRepresentation() == VTK_SURFACE;
+}
+
 bool vtkNPRKeepsOwnLook(vtkAbstractMapper* mapper, vtkProp* prop)
 {
   auto* polyDataMapper = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);

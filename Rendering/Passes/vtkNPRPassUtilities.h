@@ -14,6 +14,7 @@ class vtkObject;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkProp;
+class vtkProperty;
 class vtkRenderState;
 class vtkRenderbuffer;
 class vtkRenderer;
@@ -66,6 +67,10 @@ bool vtkNPRIsAnnotation(vtkProp* prop);
 // point cloud, often translucent through an opacity array, whose splats VTK 9.1 draws as
 // triangles with alpha; they are not a surface.
 bool vtkNPRDrawsSplats(vtkActor* actor);
+
+// Whether VTK draws the mesh edges of a surface with this property (EdgeVisibilityOn on the
+// Surface representation, ParaView's "Surface With Edges").
+bool vtkNPRDrawsMeshEdges(vtkProperty* property);
 
 // Whether the vtkOpenGLPolyDataMapper `mapper`, drawing for `prop`, keeps its own look, as VTK
 // draws it: a line or point primitive (lines, vertices, or polygons in the wireframe or points
