@@ -250,9 +250,8 @@ run_sanitize_stage() {
   if ((PIPESTATUS[0] != 0)); then
     return 1
   fi
-  # A failed test runs once more: LeakSanitizer's tracer itself sometimes dies (signal 11, "LeakSanitizer
-  # has encountered a fatal error") in a process with llvmpipe's threads on a loaded machine; a
-  # real leak or error fails both runs.
+  # A failed test runs once more; a real leak or error fails both runs. (LeakSanitizer's tracer
+  # dying of signal 11 is avoided by the tests' LSAN_OPTIONS: Documentation/testing.md.)
   ctest --test-dir "$sanitize_dir" --output-on-failure -j 2 -LE LongRunning --repeat until-pass:2 2>&1 |
     tee -a "$build_dir/logs/sanitize.log"
   return "${PIPESTATUS[0]}"
@@ -361,7 +360,7 @@ report_failed_tests() {
   [[ -f $log ]] || return 0
   echo "bootstrap: $stage: what failed ($log):"
   sed -n '/The following tests FAILED:/,$p' "$log" | grep -E '^[[:space:]]+[0-9]+ - ' | sed 's/^/  /'
-  grep -E '(ERROR|SUMMARY): (Address|Leak|UndefinedBehavior)Sanitizer|runtime error:|\*\*\*Timeout|: check failed: |Traceback|Error:|No space left|Killed|Segmentation fault|out of memory' \
+  grep -E '(ERROR|SUMMARY): (Address|Leak|UndefinedBehavior)Sanitizer|Sanitizer has encountered|Tracer caught|runtime error:|\*\*\*(Timeout|Exception)|Subprocess aborted|Child aborted|: check failed: |Traceback|Error:|No space left|Killed|Segmentation fault|out of memory' \
     "$log" | sort | uniq -c | sort -rn | head -n 20 | sed 's/^/  /'
 }
 

@@ -288,6 +288,13 @@ void vtkNPREdgePass::SetDetectUniforms(vtkShaderProgram* program, int encoding)
   program->SetUniform3f("viewRayOrigin", rayOrigin);
   program->SetUniform3f("viewRayPerPixelX", rayPerPixelX);
   program->SetUniform3f("viewRayPerPixelY", rayPerPixelY);
+  if (!gbuffer->GetPerspective())
+  {
+    float pixelStepX[3], pixelStepY[3];
+    gbuffer->GetViewPixelStep(pixelStepX, pixelStepY);
+    program->SetUniform3f("viewPixelStepX", pixelStepX);
+    program->SetUniform3f("viewPixelStepY", pixelStepY);
+  }
 }
 
 std::string vtkNPREdgePass::GetCompositeDefines(vtkRenderer* renderer, int output)

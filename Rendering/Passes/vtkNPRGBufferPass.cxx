@@ -235,7 +235,7 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
     return; // no delegate, or a picking render: no G-buffer
   }
   int width = 0, height = 0;
-  GetTargetSize(state, width, height);
+  vtkNPRTargetSize(state, width, height);
   if (this->DepthOnly)
   {
     this->RenderDepthOnly(state, width, height);
@@ -273,17 +273,6 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
     state, width, height, this->WritesNormals, this->WritesObjectIds, this->GetSettingsTime());
   this->Internal->Valid = true;
   vtkOpenGLCheckErrorMacro("failed after vtkNPRGBufferPass::Render");
-}
-
-void vtkNPRGBufferPass::GetTargetSize(const vtkRenderState* state, int& width, int& height)
-{
-  if (state->GetFrameBuffer())
-  {
-    state->GetFrameBuffer()->GetLastSize(width, height);
-    return;
-  }
-  int x, y;
-  state->GetRenderer()->GetTiledSizeAndOrigin(&width, &height, &x, &y);
 }
 
 int vtkNPRGBufferPass::CountOpaqueProps(const std::vector<vtkProp*>& parts)
@@ -540,7 +529,7 @@ void vtkNPRGBufferPass::ReleaseGraphicsResources(vtkWindow* window)
   this->Internal->Valid = false;
 }
 
-void vtkNPRGBufferPass::GetViewRay(float origin[3], float perPixelX[3], float perPixelY[3]) const
+void vtkNPRGBufferPass::GetPixelCentrePoints(double nearPoints[3][3], double farPoints[3][3]) const
 {
   // The inverse projection is kept in GLSL's layout: element (i, j) multiplies component i.
   auto unproject = [this](double x, double y, double z, double point[3])
@@ -557,19 +546,26 @@ void vtkNPRGBufferPass::GetViewRay(float origin[3], float perPixelX[3], float pe
       point[j] = h[j] / h[3];
     }
   };
-  // The ray at the centres of pixels (0, 0), (1, 0) and (0, 1): it is affine in the pixel.
-  double rays[3][3];
+  // The centres of pixels (0, 0), (1, 0) and (0, 1): a ray's points there are affine in the pixel.
   const double centres[3][2] = { { 0.5, 0.5 }, { 1.5, 0.5 }, { 0.5, 1.5 } };
   for (int c = 0; c < 3; ++c)
   {
     const double x = 2.0 * centres[c][0] * this->Viewport[2] - 1.0;
     const double y = 2.0 * centres[c][1] * this->Viewport[3] - 1.0;
-    double nearPoint[3], farPoint[3];
-    unproject(x, y, -1.0, nearPoint);
-    unproject(x, y, 1.0, farPoint);
+    unproject(x, y, -1.0, nearPoints[c]);
+    unproject(x, y, 1.0, farPoints[c]);
+  }
+}
+
+void vtkNPRGBufferPass::GetViewRay(float origin[3], float perPixelX[3], float perPixelY[3]) const
+{
+  double nearPoints[3][3], farPoints[3][3], rays[3][3];
+  this->GetPixelCentrePoints(nearPoints, farPoints);
+  for (int c = 0; c < 3; ++c)
+  {
     for (int j = 0; j < 3; ++j)
     {
-      rays[c][j] = this->Perspective ? nearPoint[j] : farPoint[j] - nearPoint[j];
+      rays[c][j] = this->Perspective ? nearPoints[c][j] : farPoints[c][j] - nearPoints[c][j];
     }
   }
   for (int j = 0; j < 3; ++j)
@@ -577,6 +573,17 @@ void vtkNPRGBufferPass::GetViewRay(float origin[3], float perPixelX[3], float pe
     origin[j] = static_cast<float>(rays[0][j]);
     perPixelX[j] = static_cast<float>(rays[1][j] - rays[0][j]);
     perPixelY[j] = static_cast<float>(rays[2][j] - rays[0][j]);
+  }
+}
+
+void vtkNPRGBufferPass::GetViewPixelStep(float stepX[3], float stepY[3]) const
+{
+  double nearPoints[3][3], farPoints[3][3];
+  this->GetPixelCentrePoints(nearPoints, farPoints);
+  for (int j = 0; j < 3; ++j)
+  {
+    stepX[j] = static_cast<float>(nearPoints[1][j] - nearPoints[0][j]);
+    stepY[j] = static_cast<float>(nearPoints[2][j] - nearPoints[0][j]);
   }
 }
 

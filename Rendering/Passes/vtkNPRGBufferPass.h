@@ -195,6 +195,12 @@ public:
   void GetViewRay(float origin[3], float perPixelX[3], float perPixelY[3]) const;
 
   /**
+   * The view-space step between the points of neighbouring pixels (i + 1, j) and (i, j + 1) on
+   * the near plane: for a parallel view, the step between their points at any one view depth.
+   */
+  void GetViewPixelStep(float stepX[3], float stepY[3]) const;
+
+  /**
    * The view depths that the packed encodings map onto 0..1 in the last frame (the camera's
    * clipping range).
    */
@@ -252,7 +258,6 @@ protected:
   void ComputeContentRectangle(const vtkRenderState* state, int width, int height);
   void RenderDepthOnly(const vtkRenderState* state, int width, int height);
   // The steps of Render() and RenderDepthOnly().
-  static void GetTargetSize(const vtkRenderState* state, int& width, int& height);
   static int CountOpaqueProps(const std::vector<vtkProp*>& parts);
   void UpdateOutputs(int opaqueProps);
   void SetOutputs(bool normals, bool ids, bool faceNormals, int encoding);
@@ -262,6 +267,8 @@ protected:
   void DrawGeometry(const vtkRenderState* state, int width, int height);
   void DeriveGeometryFromDepth(vtkOpenGLRenderWindow* window, int width, int height);
   void CopyBack(const vtkRenderState* state, int width, int height);
+  // The view-space points of pixels (0, 0), (1, 0) and (0, 1)'s centres on the near and far planes.
+  void GetPixelCentrePoints(double nearPoints[3][3], double farPoints[3][3]) const;
 
   bool NormalsRequested = false;
   bool ObjectIdsRequested = false;

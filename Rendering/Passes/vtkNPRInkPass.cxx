@@ -3,26 +3,34 @@
 #include "vtkNPRInkPass.h"
 
 #include "vtkActor.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataSetMapper.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkNPRPropParts.h"
+#include "vtkNPRQuadProgram.h"
+#include "vtkNPRRenderTarget.h"
 #include "vtkNPRShaderHook.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
 #include "vtkVersionMacros.h"
 #if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
 #include "vtkCompositePolyDataMapper.h"
 #endif
 
+#include "vtkNPRInkCompositeFS.h"
 #include "vtkNPRInkDecl.h"
 #include "vtkNPRInkImpl.h"
 
@@ -66,6 +74,45 @@ bool vtkNPRIsInkable(vtkProp* prop, const std::vector<vtkNPRPropPart>& parts)
       });
 }
 
+// Whether the data set (each block of a composite one) has lines or vertices, which VTK draws as
+// line and point primitives.
+bool vtkNPRHasLinesOrVerts(vtkDataObject* data)
+{
+  if (auto* polyData = vtkPolyData::SafeDownCast(data))
+  {
+    return polyData->GetNumberOfLines() > 0 || polyData->GetNumberOfVerts() > 0;
+  }
+  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
+  if (!composite)
+  {
+    return false;
+  }
+  vtkSmartPointer<vtkCompositeDataIterator> block;
+  block.TakeReference(composite->NewIterator());
+  for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
+  {
+    if (vtkNPRHasLinesOrVerts(block->GetCurrentDataObject()))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Whether the opaque actor draws lines or points where a surface can be: a representation other
+// than Surface, splats, lines or vertices in its data, or a mapper the ink's hooks do not reach.
+bool vtkNPRDrawsLinesOrPoints(vtkActor* actor)
+{
+  vtkProperty* property = actor->GetProperty();
+  vtkMapper* mapper = actor->GetMapper();
+  if (!mapper || property->GetOpacity() < 1.0)
+  {
+    return false; // nothing drawn, or drawn after the opaque props
+  }
+  return property->GetRepresentation() != VTK_SURFACE || vtkNPRDrawsSplats(actor) ||
+    !vtkNPRCallsInkHooks(mapper) || vtkNPRHasLinesOrVerts(mapper->GetInputDataObject(0, 0));
+}
+
 // Whether a part of the top-level prop shows its mesh edges (vtkProperty::EdgeVisibilityOn on a
 // surface): VTK draws them through a geometry shader.
 bool vtkNPRShowsMeshEdges(const std::vector<vtkNPRPropPart>& parts)
@@ -77,12 +124,23 @@ bool vtkNPRShowsMeshEdges(const std::vector<vtkNPRPropPart>& parts)
 }
 
 // The ink's code after texturing: the colour is final there.
+// The ink image of a frame that draws lines or points (DrawInkImage): its colour (alpha 1 where
+// the ink shows) and depth, and the program that puts it over the frame.
+struct vtkNPRInkPass::Internals
+{
+  vtkNPRRenderTarget Target;
+  vtkSmartPointer<vtkTextureObject> Ink;
+  vtkSmartPointer<vtkTextureObject> Depth;
+  vtkNPRQuadProgram Composite;
+};
+
 vtkNPRInkPass::vtkNPRInkPass()
   : vtkNPRGeometryPass("Ink", "//VTK::TCoord::Impl", "the ink")
+  , Internal(new Internals)
 {
 }
 
-vtkNPRInkPass::~vtkNPRInkPass() {}
+vtkNPRInkPass::~vtkNPRInkPass() = default;
 
 double vtkNPRInkPass::GetEffectiveLineWidth(vtkRenderer* renderer) const
 {
@@ -104,8 +162,22 @@ void vtkNPRInkPass::Render(const vtkRenderState* state)
     this->ClearMask(renderer);
   }
   this->PreRender(state); // the mappers now call this pass's shader hooks
-  this->DrawBackFaceInk(state, drawnWidth);
-  this->DrawFilledFaces(state, visibleWidth);
+  std::vector<vtkProp*> inked = this->ListInkedProps(state);
+  if (inked.empty())
+  {
+    this->DrawFilledFaces(state, 0.0);
+  }
+  else if (DrawsLinesOrPoints(state))
+  {
+    this->DrawInkImage(state, inked, drawnWidth, visibleWidth);
+    this->DrawFilledFaces(state, 0.0);
+    this->CompositeInkImage(state);
+  }
+  else
+  {
+    this->DrawBackFaceInk(state, inked, drawnWidth);
+    this->DrawFilledFaces(state, visibleWidth);
+  }
   this->PostRender(state);
   vtkOpenGLCheckErrorMacro("failed after vtkNPRInkPass::Render");
 }
@@ -148,7 +220,7 @@ void vtkNPRInkPass::ClearMask(vtkRenderer* renderer)
   glState->vtkglClear(GL_COLOR_BUFFER_BIT);
 }
 
-void vtkNPRInkPass::DrawBackFaceInk(const vtkRenderState* state, double lineWidth)
+std::vector<vtkProp*> vtkNPRInkPass::ListInkedProps(const vtkRenderState* state)
 {
   // Ink only for the surfaces whose mapper calls this pass's shader hooks: any other prop would be
   // drawn as a wireframe in its own colours.
@@ -164,17 +236,23 @@ void vtkNPRInkPass::DrawBackFaceInk(const vtkRenderState* state, double lineWidt
       this->InkWithoutMeshEdges = this->InkWithoutMeshEdges || vtkNPRShowsMeshEdges(parts);
     }
   }
-  if (inked.empty())
-  {
-    return;
-  }
-  vtkRenderer* renderer = state->GetRenderer();
+  return inked;
+}
+
+void vtkNPRInkPass::DrawProps(const vtkRenderState* state, std::vector<vtkProp*>& props)
+{
+  vtkRenderState propsState(state->GetRenderer());
+  propsState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
+  propsState.SetFrameBuffer(state->GetFrameBuffer());
+  propsState.SetRequiredKeys(state->GetRequiredKeys());
+  this->DelegatePass->Render(&propsState);
+}
+
+void vtkNPRInkPass::DrawBackFaceInk(
+  const vtkRenderState* state, std::vector<vtkProp*>& inked, double lineWidth)
+{
   vtkOpenGLState* glState =
-    static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
-  vtkRenderState inkState(renderer);
-  inkState.SetPropArrayAndCount(inked.data(), static_cast<int>(inked.size()));
-  inkState.SetFrameBuffer(state->GetFrameBuffer());
-  inkState.SetRequiredKeys(state->GetRequiredKeys());
+    static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow())->GetState();
   this->DrawMode = DrawInk;
   glState->vtkglLineWidth(static_cast<float>(lineWidth));
   glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
@@ -182,7 +260,7 @@ void vtkNPRInkPass::DrawBackFaceInk(const vtkRenderState* state, double lineWidt
   // own culling; the shader's discard gives the same image without culling, slower.
   this->InkDrawState = glState;
   this->SwitchMeshEdgesShader();
-  this->DelegatePass->Render(&inkState);
+  this->DrawProps(state, inked);
   this->InkDrawState = nullptr;
   glState->vtkglDisable(GL_CULL_FACE); // as a property without culling leaves it
   glState->vtkglCullFace(GL_BACK);
@@ -190,7 +268,7 @@ void vtkNPRInkPass::DrawBackFaceInk(const vtkRenderState* state, double lineWidt
   glState->vtkglLineWidth(1.0f);
 }
 
-void vtkNPRInkPass::DrawFilledFaces(const vtkRenderState* state, double visibleWidth)
+void vtkNPRInkPass::DrawFilledFaces(const vtkRenderState* state, double pullWidth)
 {
   this->DrawMode = this->CoverageOnly ? DrawMaskFill : DrawShaded;
   this->SwitchMeshEdgesShader();
@@ -198,13 +276,102 @@ void vtkNPRInkPass::DrawFilledFaces(const vtkRenderState* state, double visibleW
   // each line that lies over them. (Lines pushed back instead keep a selection highlight on the
   // faces visible, but the slivers of faces clipped at the tile borders of a tiled render then
   // show as ink lines across the image: npr.tiled_render.inked measured 958 pixels.)
-  glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(-static_cast<float>(visibleWidth), -1.0f);
+  if (pullWidth > 0.0)
+  {
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(-static_cast<float>(pullWidth), -1.0f);
+  }
   this->DelegatePass->Render(state);
-  glPolygonOffset(0.0f, 0.0f);
-  glDisable(GL_POLYGON_OFFSET_FILL);
+  if (pullWidth > 0.0)
+  {
+    glPolygonOffset(0.0f, 0.0f);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   this->DrawMode = DrawShaded;
+}
+
+bool vtkNPRInkPass::DrawsLinesOrPoints(const vtkRenderState* state)
+{
+  for (int i = 0; i < state->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = state->GetPropArray()[i];
+    if (vtkNPRIsAnnotation(prop))
+    {
+      continue; // drawn as it is, at its own depth, in every case
+    }
+    for (const vtkNPRPropPart& part : vtkNPRPropParts(prop))
+    {
+      auto* actor = vtkActor::SafeDownCast(part.Prop);
+      if (actor && vtkNPRDrawsLinesOrPoints(actor))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+void vtkNPRInkPass::DrawInkImage(
+  const vtkRenderState* state, std::vector<vtkProp*>& inked, double lineWidth, double visibleWidth)
+{
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow());
+  Internals& internal = *this->Internal;
+  int width, height;
+  vtkNPRTargetSize(state, width, height);
+  if (!internal.Ink)
+  {
+    internal.Ink.TakeReference(
+      vtkNPRNewTexture(window, vtkTextureObject::Nearest, vtkTextureObject::ClampToEdge));
+    internal.Ink->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+    internal.Depth.TakeReference(
+      vtkNPRNewTexture(window, vtkTextureObject::Nearest, vtkTextureObject::ClampToEdge));
+    internal.Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+  }
+  internal.Ink->Resize(width, height);
+  internal.Depth->Resize(width, height);
+  vtkNPRRenderTarget::Scope target(
+    internal.Target, window, { internal.Ink }, internal.Depth, width, height);
+  target.Clear(0.0, 0.0, 0.0, 0.0);
+  // As the usual draw has it (ink, then the faces pulled over it, ties to the ink), with the faces
+  // marking the ink they cover as none.
+  this->DrawBackFaceInk(state, inked, lineWidth);
+  this->DrawMode = DrawNoInk;
+  this->SwitchMeshEdgesShader();
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(-static_cast<float>(visibleWidth), -1.0f);
+  this->DrawProps(state, inked);
+  glPolygonOffset(0.0f, 0.0f);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  this->DrawMode = DrawShaded;
+}
+
+void vtkNPRInkPass::CompositeInkImage(const vtkRenderState* state)
+{
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow());
+  Internals& internal = *this->Internal;
+  vtkShaderProgram* composite = internal.Composite.Ready(window, vtkNPRInkCompositeFS, "");
+  if (!composite)
+  {
+    vtkErrorMacro("the ink's composite shader did not compile: the frame has no ink");
+    return;
+  }
+  int origin[2];
+  vtkNPRViewportOrigin(state, origin);
+  vtkNPRCompositeState compositeState(window->GetState());
+  compositeState.Apply(origin, internal.Ink->GetWidth(), internal.Ink->GetHeight());
+  window->GetState()->vtkglScissor(
+    origin[0], origin[1], internal.Ink->GetWidth(), internal.Ink->GetHeight());
+  // The ink where it showed against the pulled faces, unless a line or point is in front of it.
+  window->GetState()->vtkglDisable(GL_BLEND);
+  window->GetState()->vtkglDepthFunc(GL_LEQUAL);
+  internal.Ink->Activate();
+  internal.Depth->Activate();
+  composite->SetUniformi("inkTexture", internal.Ink->GetTextureUnit());
+  composite->SetUniformi("depthTexture", internal.Depth->GetTextureUnit());
+  internal.Composite.Render();
+  internal.Ink->Deactivate();
+  internal.Depth->Deactivate();
 }
 
 void vtkNPRInkPass::SwitchMeshEdgesShader()
@@ -267,6 +434,18 @@ bool vtkNPRInkPass::SetShaderParameters(
 void vtkNPRInkPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->WidestLine = 0.0; // the next context is asked again
+  Internals& internal = *this->Internal;
+  internal.Target.ReleaseGraphicsResources(window);
+  internal.Composite.Release(window);
+  for (vtkTextureObject* texture : { internal.Ink.Get(), internal.Depth.Get() })
+  {
+    if (texture)
+    {
+      texture->ReleaseGraphicsResources(window);
+    }
+  }
+  internal.Ink = nullptr;
+  internal.Depth = nullptr;
   this->Superclass::ReleaseGraphicsResources(window);
 }
 

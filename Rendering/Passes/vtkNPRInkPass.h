@@ -46,7 +46,11 @@
 #include "vtkNPRGeometryPass.h"
 #include "vtkNPRPassesModule.h" // for export macro
 
+#include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
+
 class vtkOpenGLState;
+class vtkProp;
 class vtkRenderer;
 
 class VTKNPRPASSES_EXPORT vtkNPRInkPass : public vtkNPRGeometryPass
@@ -110,16 +114,31 @@ protected:
   // The steps of Render().
   double DrawableLineWidth(double width); // at most what this OpenGL draws (warns once)
   void ClearMask(vtkRenderer* renderer);  // CoverageOnly: the background black
-  void DrawBackFaceInk(const vtkRenderState* state, double lineWidth);
-  void DrawFilledFaces(const vtkRenderState* state, double visibleWidth);
+  // The top-level props drawn as inked surfaces (sets InkWithoutMeshEdges).
+  std::vector<vtkProp*> ListInkedProps(const vtkRenderState* state);
+  // The delegate's draw of `props` alone.
+  void DrawProps(const vtkRenderState* state, std::vector<vtkProp*>& props);
+  void DrawBackFaceInk(const vtkRenderState* state, std::vector<vtkProp*>& inked, double lineWidth);
+  // All props, shaded; the faces pulled towards the viewer by `pullWidth` pixels of their depth
+  // slope (0: at their own depth).
+  void DrawFilledFaces(const vtkRenderState* state, double pullWidth);
+  // Whether the frame draws lines or points at the depth of a surface (a selection highlight, a
+  // wireframe, vertices, lines): pulled faces would hide them.
+  static bool DrawsLinesOrPoints(const vtkRenderState* state);
+  // For such a frame: the ink as it shows against the pulled faces, found in an image of its own
+  // (colour and depth) and put over the faces drawn at their own depth.
+  void DrawInkImage(const vtkRenderState* state, std::vector<vtkProp*>& inked, double lineWidth,
+    double visibleWidth);
+  void CompositeInkImage(const vtkRenderState* state);
   // Before each draw of a frame with mesh edges: the mappers take the draw's shaders.
   void SwitchMeshEdgesShader();
 
   enum DrawModes
   {
-    DrawShaded = 0,  // as VTK draws it
-    DrawInk = 1,     // back faces in ink, front faces discarded
-    DrawMaskFill = 2 // CoverageOnly: faces black
+    DrawShaded = 0,   // as VTK draws it
+    DrawInk = 1,      // back faces in ink, front faces discarded
+    DrawMaskFill = 2, // CoverageOnly: faces black
+    DrawNoInk = 3     // the ink image (DrawInkImage): faces mark the ink they cover
   };
 
   double LineWidth = 1.5;
@@ -143,6 +162,9 @@ protected:
 private:
   vtkNPRInkPass(const vtkNPRInkPass&) = delete;
   void operator=(const vtkNPRInkPass&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
 };
 
 #endif

@@ -84,6 +84,17 @@ bool vtkNPRRenderSelection(const vtkRenderState* state, int& renderedProps)
   return true;
 }
 
+void vtkNPRTargetSize(const vtkRenderState* state, int& width, int& height)
+{
+  if (state->GetFrameBuffer())
+  {
+    state->GetFrameBuffer()->GetLastSize(width, height);
+    return;
+  }
+  int x, y;
+  state->GetRenderer()->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+}
+
 void vtkNPRViewportOrigin(const vtkRenderState* state, int origin[2])
 {
   int width, height;

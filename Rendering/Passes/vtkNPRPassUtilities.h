@@ -40,6 +40,10 @@ bool vtkNPRRenderSelection(const vtkRenderState* state, int& renderedProps);
 // framebuffer object).
 void vtkNPRViewportOrigin(const vtkRenderState* state, int origin[2]);
 
+// The size of the image a pass draws for the renderer: the framebuffer object it was called with,
+// or the renderer's part of the window (of this tile, in a tiled render).
+void vtkNPRTargetSize(const vtkRenderState* state, int& width, int& height);
+
 // Where the part of the renderer's viewport being drawn lies in a tiled render (a
 // vtkWindowToImageFilter's Scale, ParaView's screenshots larger than the view): its pixel offset
 // within the whole viewport, and which of its sides (left, bottom, right, top) meet another

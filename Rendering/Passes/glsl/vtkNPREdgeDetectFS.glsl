@@ -20,6 +20,10 @@ uniform float suggestiveThreshold; // second difference of n.v over one pixel
 uniform vec3 viewRayOrigin; // view space: the ray through pixel (0, 0)'s centre (the direction of
 uniform vec3 viewRayPerPixelX; // projection for a parallel view), and its change per pixel
 uniform vec3 viewRayPerPixelY;
+#if !NPR_PERSPECTIVE
+uniform vec3 viewPixelStepX; // parallel view: the step between neighbouring pixels' points
+uniform vec3 viewPixelStepY;
+#endif
 //VTK::Output::Dec
 
 #if NPR_ENCODING >= 2
@@ -126,27 +130,32 @@ vec3 nprUnpackNormal(float code)
 // At a concave crease whose nearer face is seen nearly edge-on (a cone rising from a flange,
 // seen from a little above its slope) the depth jumps by as much across one pixel as at a step;
 // but the planes of the two faces (their normals through their depths) cross between the two
-// pixels' centres, where at a step the nearer surface's plane stays in front at both. a0, aD:
-// the affine depths (1/z: perspective only; the rays of a parallel view carry no position).
+// pixels' centres, where at a step the nearer surface's plane stays in front at both. a0, aD: the
+// affine depths (1/z for perspective, z for a parallel view).
 bool nprCreaseBeyondStep(ivec2 p, ivec2 d, float depth0, float depthD, float a0, float aD,
   vec3 n0, vec3 nD)
 {
-#if NPR_PERSPECTIVE
   if (depth0 >= depthD * (1.0 - 4.0 * silhouetteThreshold))
   {
     return false;
   }
+  // This surface against the neighbour's plane at p (here), then this plane against the
+  // neighbour's surface at p + d (there).
+#if NPR_PERSPECTIVE
+  // On a plane through a point of affine depth a at ray r, the affine depth at ray r' is
+  // a (n.r') / (n.r).
   vec3 ray0 = nprViewRay(p);
   vec3 rayD = nprViewRay(p + d);
-  // On a plane through a point of affine depth a at ray r, the affine depth at ray r' is
-  // a (n.r') / (n.r): this surface against the neighbour's plane at p, then this plane against
-  // the neighbour's surface at p + d.
   float here = a0 - aD * dot(nD, ray0) / dot(nD, rayD);
   float there = a0 * dot(n0, rayD) / dot(n0, ray0) - aD;
-  return here * there <= 0.0;
 #else
-  return false;
+  // Parallel rays along -z: a plane of normal n through view depth z at one pixel has view depth
+  // z + (n.xy . s) / n.z at the pixel a view-space step s away.
+  vec2 s = (float(d.x) * viewPixelStepX + float(d.y) * viewPixelStepY).xy;
+  float here = a0 - (aD - dot(nD.xy, s) / nD.z);
+  float there = a0 + dot(n0.xy, s) / n0.z - aD;
 #endif
+  return here * there <= 0.0;
 }
 #endif
 

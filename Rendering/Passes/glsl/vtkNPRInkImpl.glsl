@@ -14,3 +14,7 @@
   {
     gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0);
   }
+  else if (nprInkMode == 3)
+  {
+    gl_FragData[0] = vec4(0.0, 0.0, 0.0, 0.5); // not 0: VTK's shader discards that
+  }

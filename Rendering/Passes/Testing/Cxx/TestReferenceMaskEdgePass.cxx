@@ -142,9 +142,13 @@ NPR_TEST_CASE("mask-edge-pass-bunny", [] { return MaskAgainstEdgePass("bunny.ply
 // (36 and 38 degrees here) is seen nearly edge-on: the far side of a depth jump as large as a
 // step's, which vtkNPREdgePass took for one. The mesh
 // prepared as npr-render and npr-benchmark prepare it (nprPrepareMesh: normals split at 30
-// degrees). Per view: recall >= 0.99 and precision >= 0.99 within a pixel, and recall >= 0.99 on
-// the creases alone (the mask's pixels that are not also lines of the mask without creases).
-int CadCreases()
+// degrees). Per view: recall >= 0.99 and precision >= 0.99 within a pixel, and recall >= 0.995 on
+// the creases alone (the mask's pixels that are not also lines of the mask without creases). In
+// perspective, and in a parallel view (CAD programs' usual one) with the camera 1.8 times closer
+// (the same image, larger depth jumps against the view depth), where the cone at 38 degrees lost
+// 0.7-0.9% of its crease pixels from 40 degrees above before the crease test covered parallel
+// views (measured: crease recall 0.991-0.993, now 1).
+int CadCreases(bool parallel)
 {
   struct Part
   {
@@ -159,6 +163,7 @@ int CadCreases()
   MaskScene scene(640, 480);
   vtkNew<vtkNPRPass> pass;
   UseEdgePass(scene, pass);
+  scene.Camera()->SetParallelProjection(parallel);
   double worstRecall = 1.0, worstPrecision = 1.0;
   for (const Part& part : parts)
   {
@@ -176,6 +181,11 @@ int CadCreases()
         camera->Azimuth(azimuth);
         camera->Elevation(elevation);
         camera->OrthogonalizeViewUp();
+        if (parallel)
+        {
+          // Closer, the image unchanged: the depth jumps grow against the view depth.
+          camera->Dolly(1.8);
+        }
         scene.Renderer->ResetCameraClippingRange();
         scene.Window->Render();
         vtkSmartPointer<vtkImageData> rendered = nprCaptureImage(scene.Window);
@@ -195,7 +205,7 @@ int CadCreases()
         NPR_CHECK(agreement.Recall() >= 0.99,
           part.Name << ", azimuth " << azimuth << ", elevation " << elevation
                     << ": a crease missed, recall " << agreement.Recall());
-        NPR_CHECK(creases.Truth == 0 || creases.Recall() >= 0.99,
+        NPR_CHECK(creases.Truth == 0 || creases.Recall() >= 0.995,
           part.Name << ", azimuth " << azimuth << ", elevation " << elevation
                     << ": a crease missed, crease recall " << creases.Recall());
         NPR_CHECK(agreement.Precision() >= 0.99,
@@ -206,9 +216,11 @@ int CadCreases()
       }
     }
   }
-  std::cout << "CAD creases: lowest recall " << worstRecall << ", lowest precision "
-            << worstPrecision << "\n";
+  std::cout << "CAD creases (" << (parallel ? "parallel" : "perspective")
+            << " view): lowest recall " << worstRecall << ", lowest precision " << worstPrecision
+            << "\n";
   return nprTestResult();
 }
-NPR_TEST_CASE("mask-edge-pass-cad-creases", CadCreases);
+NPR_TEST_CASE("mask-edge-pass-cad-creases", [] { return CadCreases(false); });
+NPR_TEST_CASE("mask-edge-pass-cad-creases-parallel", [] { return CadCreases(true); });
 }

@@ -8,14 +8,17 @@
 // the stroke or fill that goes on there. (The sketch once restarted its screen noise at each
 // tile and left gaps in the strokes and seams in the fills along the borders.)
 //
-// The scene: an orange sphere and a blue cube (silhouettes, creases, fills) on white. Tolerance:
+// The scene: an orange sphere and a blue cube (silhouettes, creases, fills) on white; with
+// `highlight`, the sphere's wireframe over it in magenta (a selection highlight: the inked style
+// then finds its ink in an image of its own, vtkNPRInkPass::DrawInkImage). Tolerance:
 // pixels differing by more than 40 from every pixel around (nprCompareImages), at most 0.05 % of
 // the image (60 pixels of 120,000). Before the fix the sketch differed in 559 pixels (surface
 // noise, nearly all along the tile borders) and 2,929 (screen noise); after it, 21 and 3 (the
 // surface noise's blocks next to a border interpolate without the other tile's block, so a stroke
 // there may move by a pixel).
 //
-// usage: TestTiledRender edges|toon|toon-edges|inked|drawing|sketch-surface|sketch-screen
+// usage: TestTiledRender edges|toon|toon-edges|inked|inked-highlight|drawing|sketch-surface|
+//        sketch-screen
 // NPR_TEST_DUMP=prefix saves prefix<case>-whole.png and prefix<case>-tiled.png.
 #include "nprTestImages.h"
 #include "nprTestMeshes.h"
@@ -26,6 +29,7 @@
 #include "vtkImageData.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRSketchPass.h"
+#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkWindowToImageFilter.h"
 
@@ -38,7 +42,7 @@ constexpr int Width = 200, Height = 150, Scale = 2;
 
 // The scene in a window of width x height at dpi, `scale` tiles a side (1: the window's image).
 vtkSmartPointer<vtkImageData> RenderScene(
-  int style, int noiseSpace, int width, int height, int dpi, int scale)
+  int style, int noiseSpace, bool highlight, int width, int height, int dpi, int scale)
 {
   nprPassScene scene(width, height);
   scene.Window->SetDPI(dpi);
@@ -47,6 +51,14 @@ vtkSmartPointer<vtkImageData> RenderScene(
   const double orange[3] = { 0.9, 0.5, 0.2 }, blue[3] = { 0.3, 0.5, 0.9 };
   const double sphereCentre[3] = { -0.35, 0.0, 0.0 }, cubeCentre[3] = { 0.55, 0.1, 0.0 };
   nprAddSphere(scene.Renderer, sphereCentre, 0.6, orange, 64);
+  if (highlight)
+  {
+    const double magenta[3] = { 1.0, 0.0, 1.0 };
+    vtkProperty* wireframe =
+      nprAddSphere(scene.Renderer, sphereCentre, 0.6, magenta, 64)->GetProperty();
+    wireframe->SetRepresentationToWireframe();
+    wireframe->SetLineWidth(2.0);
+  }
   vtkSmartPointer<vtkActor> cube = nprAddCube(scene.Renderer, cubeCentre, 0.7, blue);
   cube->RotateY(30.0);
   cube->RotateX(20.0);
@@ -63,10 +75,11 @@ vtkSmartPointer<vtkImageData> RenderScene(
   return image;
 }
 
-int TestTiles(int style, int noiseSpace, const std::string& name)
+int TestTiles(int style, int noiseSpace, const std::string& name, bool highlight = false)
 {
-  const auto whole = RenderScene(style, noiseSpace, Scale * Width, Scale * Height, 72 * Scale, 1);
-  const auto tiled = RenderScene(style, noiseSpace, Width, Height, 72, Scale);
+  const auto whole =
+    RenderScene(style, noiseSpace, highlight, Scale * Width, Scale * Height, 72 * Scale, 1);
+  const auto tiled = RenderScene(style, noiseSpace, highlight, Width, Height, 72, Scale);
   if (const char* dump = std::getenv("NPR_TEST_DUMP"))
   {
     nprSavePNG(whole, std::string(dump) + name + "-whole.png");
@@ -92,6 +105,8 @@ NPR_TEST_CASE("edges", [] { return TestTiles(vtkNPRPass::EDGES, 0, "edges"); });
 NPR_TEST_CASE("toon", [] { return TestTiles(vtkNPRPass::TOON, 0, "toon"); });
 NPR_TEST_CASE("toon-edges", [] { return TestTiles(vtkNPRPass::TOON_EDGES, 0, "toon-edges"); });
 NPR_TEST_CASE("inked", [] { return TestTiles(vtkNPRPass::INKED, 0, "inked"); });
+NPR_TEST_CASE(
+  "inked-highlight", [] { return TestTiles(vtkNPRPass::INKED, 0, "inked-highlight", true); });
 NPR_TEST_CASE("drawing", [] { return TestTiles(vtkNPRPass::DRAWING, 0, "drawing"); });
 NPR_TEST_CASE("sketch-surface",
   [] { return TestTiles(vtkNPRPass::SKETCH, vtkNPRSketchPass::SURFACE, "sketch-surface"); });
