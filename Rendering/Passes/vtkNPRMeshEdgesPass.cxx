@@ -7,8 +7,10 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
+#include "vtkNPRPropParts.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
@@ -18,6 +20,7 @@
 #include <algorithm>
 #include <cstring>
 #include <map>
+#include <utility>
 
 vtkStandardNewMacro(vtkNPRMeshEdgesPass);
 
@@ -27,6 +30,21 @@ namespace
 // topology offset moves lines (units -4: 6.4e-5), times a few for wide lines on slanted faces.
 constexpr double EdgeDepthPull = 5e-4;
 
+// The mapper's settings and input onto the companion's. A vtkPolyDataMapper's own copy: in VTK
+// 9.1 vtkOpenGLPolyDataMapper::ShallowCopy also copies the deprecated shader-code settings, with
+// a deprecation warning for each (ParaView's output window would show them every time).
+void nprCopyMapper(vtkMapper* from, vtkMapper* to)
+{
+  if (auto* polyDataMapper = vtkPolyDataMapper::SafeDownCast(to))
+  {
+    polyDataMapper->vtkPolyDataMapper::ShallowCopy(from);
+  }
+  else
+  {
+    to->ShallowCopy(from);
+  }
+}
+
 // The wireframe companion of one user actor, and what it was last copied from.
 struct nprEdgeCompanion
 {
@@ -35,9 +53,10 @@ struct nprEdgeCompanion
   vtkMTimeType MapperTime = 0;
   vtkMTimeType PropertyTime = 0;
 
-  // Brings the companion up to date with its actor; copies only what changed, so that an
-  // unchanged actor leaves the companion's shaders and buffers as they are.
-  void Update(vtkActor* source)
+  // Brings the companion up to date with its actor, drawn with `matrix` (the actor's own, or its
+  // assembly path's); copies only what changed, so that an unchanged actor leaves the
+  // companion's shaders and buffers as they are.
+  void Update(vtkActor* source, vtkMatrix4x4* matrix)
   {
     vtkMapper* mapper = source->GetMapper();
     if (!this->Actor || strcmp(this->Actor->GetMapper()->GetClassName(), mapper->GetClassName()))
@@ -48,7 +67,7 @@ struct nprEdgeCompanion
     }
     if (mapper->GetMTime() != this->MapperTime)
     {
-      this->Actor->GetMapper()->ShallowCopy(mapper);
+      nprCopyMapper(mapper, this->Actor->GetMapper());
       this->Actor->GetMapper()->ScalarVisibilityOff(); // the edge colour, as VTK draws edges
       this->MapperTime = mapper->GetMTime();
     }
@@ -64,7 +83,6 @@ struct nprEdgeCompanion
       to->SetLineWidth(from->GetLineWidth() + 1.0f);
       this->PropertyTime = from->GetMTime();
     }
-    vtkMatrix4x4* matrix = source->GetMatrix();
     vtkMatrix4x4* own = this->Actor->GetUserMatrix();
     if (!own ||
       !std::equal(&matrix->Element[0][0], &matrix->Element[0][0] + 16, &own->Element[0][0]))
@@ -79,7 +97,8 @@ struct nprEdgeCompanion
 
 struct vtkNPRMeshEdgesPass::Internals
 {
-  std::map<vtkActor*, nprEdgeCompanion> Companions;
+  // By top-level prop and part (the actor itself, or an assembly's part actor).
+  std::map<std::pair<vtkProp*, vtkActor*>, nprEdgeCompanion> Companions;
 };
 
 vtkNPRMeshEdgesPass::vtkNPRMeshEdgesPass()
@@ -117,15 +136,19 @@ void vtkNPRMeshEdgesPass::Render(const vtkRenderState* state)
   glDepthRange(range[0], range[0] + (range[1] - range[0]) * (1.0 - EdgeDepthPull));
   for (int i = 0; i < state->GetPropArrayCount(); ++i)
   {
-    auto* actor = vtkActor::SafeDownCast(state->GetPropArray()[i]);
-    if (!ShowsMeshEdges(actor))
+    vtkProp* prop = state->GetPropArray()[i];
+    for (const vtkNPRPropPart& part : vtkNPRPropParts(prop))
     {
-      continue;
+      auto* actor = vtkActor::SafeDownCast(part.Prop);
+      if (!ShowsMeshEdges(actor))
+      {
+        continue;
+      }
+      nprEdgeCompanion& companion = companions[{ prop, actor }];
+      companion.Source = actor;
+      companion.Update(actor, part.Matrix ? part.Matrix : actor->GetMatrix());
+      this->NumberOfRenderedProps += companion.Actor->RenderOpaqueGeometry(renderer);
     }
-    nprEdgeCompanion& companion = companions[actor];
-    companion.Source = actor;
-    companion.Update(actor);
-    this->NumberOfRenderedProps += companion.Actor->RenderOpaqueGeometry(renderer);
   }
   glDepthRange(range[0], range[1]);
 }

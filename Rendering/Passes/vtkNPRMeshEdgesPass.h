@@ -3,8 +3,9 @@
 // Draws the mesh edges of the actors that show them (vtkProperty::EdgeVisibilityOn, ParaView's
 // "Surface With Edges") as a wireframe in the edge colour and line width, depth-tested against
 // what the pass before it left (the drawing's depth sprite): the drawing paints faces in one
-// colour and would lose the edges VTK draws into them. Each such actor gets a companion actor of
-// its own mapper class (a shallow copy) in the wireframe representation, kept between frames, so
+// colour and would lose the edges VTK draws into them. Each such actor (an assembly's parts too,
+// with their path's matrix) gets a companion actor of its own mapper class (a shallow copy) in
+// the wireframe representation, kept between frames, so
 // that neither the user's actor nor its mapper is touched (their shaders and buffers stay as they
 // are). Private to the module: vtkNPRPass runs it after vtkNPRDrawingPass.
 #ifndef vtkNPRMeshEdgesPass_h

@@ -7,9 +7,11 @@
 // with the shader of a vtkAssembly"). Each case renders a sphere and a box once as plain actors
 // and then inside a flat assembly, nested assemblies, a prop assembly and an assembly with a user
 // transform around a nested one (against plain actors with that user transform), and checks that
-// every frame matches the plain one and that VTK printed no warning.
+// every frame matches the plain one and that VTK printed no warning. The STYLE-mesh-edges cases
+// show both actors' mesh edges (EdgeVisibilityOn, red): the drawing draws them through its own
+// wireframe companions (vtkNPRMeshEdgesPass), which once left out an assembly's parts.
 //
-// usage: TestAssemblyStyles edges|toon-edges|sketch|drawing|toon|inked
+// usage: TestAssemblyStyles edges|toon-edges|sketch|drawing|toon|inked|STYLE-mesh-edges
 // NPR_TEST_DUMP=prefix saves the frames as prefixSTYLE-GROUPING.png.
 #include "nprTesting.h"
 
@@ -70,7 +72,7 @@ vtkSmartPointer<vtkTransform> UserTransform()
 // grouped as asked, seen at an angle; the camera depends on nothing but the style.
 struct AssemblyScene : nprPassScene
 {
-  AssemblyScene(int style, Grouping grouping)
+  AssemblyScene(int style, Grouping grouping, bool meshEdges)
     : nprPassScene(240, 180)
   {
     this->Pass->SetStyle(style);
@@ -82,6 +84,11 @@ struct AssemblyScene : nprPassScene
     const double blue[3] = { 0.6, 0.7, 0.9 };
     auto sphere = NewActor(sphereSource->GetOutputPort(), nprGrey);
     auto box = NewActor(boxSource->GetOutputPort(), blue);
+    for (vtkActor* actor : { sphere.Get(), box.Get() })
+    {
+      actor->GetProperty()->SetEdgeVisibility(meshEdges);
+      actor->GetProperty()->SetEdgeColor(0.9, 0.1, 0.1);
+    }
     this->Add(grouping, sphere, box);
     nprLookAtOrigin(this->Camera(), Eye, 20.0);
     this->Renderer->ResetCameraClippingRange(-2, 2, -2, 2, -2, 2);
@@ -133,9 +140,10 @@ constexpr double AssemblyScene::Eye[3];
 
 // Two frames of the scene (the second one is compared: the first builds the shaders); VTK's
 // warnings counted.
-vtkSmartPointer<vtkImageData> RenderFrame(int style, Grouping grouping, const char* name)
+vtkSmartPointer<vtkImageData> RenderFrame(
+  int style, Grouping grouping, bool meshEdges, const std::string& name)
 {
-  AssemblyScene scene(style, grouping);
+  AssemblyScene scene(style, grouping, meshEdges);
   scene.Render();
   vtkSmartPointer<vtkImageData> image = scene.Render();
   if (const char* dump = std::getenv("NPR_TEST_DUMP")) // a look at the frame
@@ -148,19 +156,21 @@ vtkSmartPointer<vtkImageData> RenderFrame(int style, Grouping grouping, const ch
 // The frames of the groupings against those of the plain actors: at most 0.01 % of the pixels (4)
 // more than 16 apart in a channel. They come out identical on llvmpipe; parts drawn with one
 // object id between them (no object boundary) differed in 9 pixels of the edges' frame.
-int TestAssemblies(int style, const char* name)
+int TestAssemblies(int style, const char* styleName, bool meshEdges = false)
 {
+  const std::string name = std::string(styleName) + (meshEdges ? "-mesh-edges" : "");
   auto* output = nprCountingOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
   const int warningsBefore = output ? output->Warnings : 0;
-  vtkSmartPointer<vtkImageData> plain = RenderFrame(style, Plain, name);
-  vtkSmartPointer<vtkImageData> transformedPlain = RenderFrame(style, TransformedPlain, name);
+  vtkSmartPointer<vtkImageData> plain = RenderFrame(style, Plain, meshEdges, name);
+  vtkSmartPointer<vtkImageData> transformedPlain =
+    RenderFrame(style, TransformedPlain, meshEdges, name);
   nprImageTolerance tolerance;
   tolerance.MaxDifferingFraction = 0.0001;
   for (Grouping grouping : { Flat, Nested, Props, Transformed })
   {
     vtkImageData* reference = grouping == Transformed ? transformedPlain : plain;
     const nprImageDifference difference =
-      nprCompareImages(RenderFrame(style, grouping, name), reference, tolerance);
+      nprCompareImages(RenderFrame(style, grouping, meshEdges, name), reference, tolerance);
     std::cout << name << " " << GroupingNames[grouping] << ": " << difference.DifferingPixels
               << " pixels differ from the plain actors' frame (at most " << difference.MaxDifference
               << " in a channel)\n";
@@ -182,4 +192,8 @@ NPR_TEST_CASE("sketch", [] { return TestAssemblies(vtkNPRPass::SKETCH, "sketch")
 NPR_TEST_CASE("drawing", [] { return TestAssemblies(vtkNPRPass::DRAWING, "drawing"); });
 NPR_TEST_CASE("toon", [] { return TestAssemblies(vtkNPRPass::TOON, "toon"); });
 NPR_TEST_CASE("inked", [] { return TestAssemblies(vtkNPRPass::INKED, "inked"); });
+NPR_TEST_CASE(
+  "drawing-mesh-edges", [] { return TestAssemblies(vtkNPRPass::DRAWING, "drawing", true); });
+NPR_TEST_CASE("edges-mesh-edges", [] { return TestAssemblies(vtkNPRPass::EDGES, "edges", true); });
+NPR_TEST_CASE("inked-mesh-edges", [] { return TestAssemblies(vtkNPRPass::INKED, "inked", true); });
 }
