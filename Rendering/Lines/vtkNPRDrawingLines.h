@@ -37,7 +37,8 @@
  * narrower than SampleSpacing in the image, seen between them) can be missed; everything else is
  * exact to the bisection's 1/1000 pixel, OcclusionEpsilon and double rounding. Not included, as
  * in vtkNPRReferenceMask: intersection curves, translucent actors, props that are not vtkActors
- * with a vtkPolyDataMapper, mapper clipping planes, actors inside assemblies.
+ * with a vtkPolyDataMapper, mapper clipping planes. The actors inside assemblies and the drawn
+ * level of a vtkLODProp3D are included (vtkNPRPropParts).
  *
  * Cost: the adjacency of each mesh and the occlusion structure are built once and reused while
  * the meshes and actor matrices do not change, both reading the meshes' points and cells in

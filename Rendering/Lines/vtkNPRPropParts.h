@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The parts a prop is drawn as. VTK draws a vtkAssembly or a vtkPropAssembly through its
 // assembly paths: the prop at the end of each path, with the matrix composed along it poked in
-// for the draw. The passes style those parts (and NPR::Lines finds their meshes) as the same
-// props added directly.
+// for the draw. A vtkLODProp3D draws one of its levels: the actor of the level it drew last (its
+// first before it drew), with the LOD prop's matrix. The passes style those parts (and NPR::Lines
+// finds their meshes) as the same props added directly.
 #ifndef vtkNPRPropParts_h
 #define vtkNPRPropParts_h
 

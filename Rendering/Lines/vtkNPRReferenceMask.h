@@ -42,8 +42,9 @@
  * shorter than SampleSpacing between two samples can be missed, and a line crossing a pixel's
  * corner by less than that can be missed in that pixel. Not included: lines of translucent actors
  * (and translucent actors do not hide lines, as they do not in vtkNPREdgePass's G-buffer), props
- * that are not vtkActors with a vtkPolyDataMapper (volumes, images, glyph mappers), mapper
- * clipping planes, and parts of actors in assemblies. Polygons are split into triangle fans
+ * that are not vtkActors with a vtkPolyDataMapper (volumes, images, glyph mappers) and mapper
+ * clipping planes; the parts of assemblies and a vtkLODProp3D's drawn level are included
+ * (vtkNPRPropParts). Polygons are split into triangle fans
  * for the visibility test (exact for convex planar polygons).
  *
  * Smooth contours (SmoothContours, off by default; vtkNPRFeatureLines's SMOOTH_CONTOUR): such

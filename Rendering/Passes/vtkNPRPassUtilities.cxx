@@ -194,7 +194,8 @@ bool vtkNPRIsAnnotation(vtkProp* prop)
       return true;
     }
   }
-  return !(prop->IsA("vtkActor") || prop->IsA("vtkAssembly") || prop->IsA("vtkPropAssembly"));
+  return !(prop->IsA("vtkActor") || prop->IsA("vtkAssembly") || prop->IsA("vtkPropAssembly") ||
+    prop->IsA("vtkLODProp3D"));
 }
 
 bool vtkNPRDrawsSplats(vtkActor* actor)

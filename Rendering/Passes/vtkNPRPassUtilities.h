@@ -63,8 +63,9 @@ bool vtkNPRInsertAfterShaderTag(
 vtkProp* vtkNPRUserProp(vtkProp* prop);
 
 // Whether the top-level prop `prop` is an annotation rather than a surface: followers (3D text
-// labels), VTK's axes actors, image slices and any other prop that is neither a vtkActor nor an
-// assembly. Annotations keep their own look; actors, LOD actors, glyphs and assemblies get styled.
+// labels), VTK's axes actors, image slices and any other prop that is neither a vtkActor, an
+// assembly nor a vtkLODProp3D. Annotations keep their own look; actors, LOD actors, LOD props,
+// glyphs and assemblies get styled.
 bool vtkNPRIsAnnotation(vtkProp* prop);
 
 // Whether the actor draws point splats (a vtkPointGaussianMapper, ParaView's Point Gaussian): a

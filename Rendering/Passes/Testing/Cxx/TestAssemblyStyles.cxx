@@ -6,7 +6,8 @@
 // 36: the parts got no G-buffer, bands or ink, with a warning that the effect "does not compile
 // with the shader of a vtkAssembly"). Each case renders a sphere and a box once as plain actors
 // and then inside a flat assembly, nested assemblies, a prop assembly and an assembly with a user
-// transform around a nested one (against plain actors with that user transform), and checks that
+// transform around a nested one (against plain actors with that user transform), and the sphere
+// as the one level of a vtkLODProp3D (its drawn level: vtkNPRPropParts), and checks that
 // every frame matches the plain one and that VTK printed no warning. The STYLE-mesh-edges cases
 // show both actors' mesh edges (EdgeVisibilityOn, red): the drawing draws them through its own
 // wireframe companions (vtkNPRMeshEdgesPass), which once left out an assembly's parts.
@@ -20,6 +21,7 @@
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
 #include "vtkImageData.h"
+#include "vtkLODProp3D.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRToonPass.h"
@@ -38,15 +40,16 @@ namespace
 // How the two actors are added to the renderer.
 enum Grouping
 {
-  Plain,           // directly
-  Flat,            // as the parts of one vtkAssembly
-  Nested,          // the sphere in an assembly in an assembly, with the box
-  Props,           // as the parts of a vtkPropAssembly
-  Transformed,     // the sphere in an assembly in an assembly with a user transform, with the box
-  TransformedPlain // directly, each with that user transform (what Transformed is compared with)
+  Plain,            // directly
+  Flat,             // as the parts of one vtkAssembly
+  Nested,           // the sphere in an assembly in an assembly, with the box
+  Props,            // as the parts of a vtkPropAssembly
+  Transformed,      // the sphere in an assembly in an assembly with a user transform, with the box
+  TransformedPlain, // directly, each with that user transform (what Transformed is compared with)
+  LevelOfDetail     // the sphere as the one level of a vtkLODProp3D, the box directly
 };
 const char* const GroupingNames[] = { "plain", "assembly", "nested", "prop-assembly",
-  "transformed-assembly", "transformed-plain" };
+  "transformed-assembly", "transformed-plain", "lod-prop" };
 
 vtkSmartPointer<vtkActor> NewActor(vtkAlgorithmOutput* port, const double color[3])
 {
@@ -119,6 +122,14 @@ struct AssemblyScene : nprPassScene
         assembly->SetUserTransform(grouping == Transformed ? UserTransform() : nullptr);
         break;
       }
+      case LevelOfDetail:
+      {
+        vtkNew<vtkLODProp3D> levels;
+        levels->AddLOD(sphere->GetMapper(), sphere->GetProperty(), 0.0);
+        this->Renderer->AddViewProp(levels);
+        this->Renderer->AddActor(box);
+        return;
+      }
       case Props:
       {
         vtkNew<vtkPropAssembly> props;
@@ -166,7 +177,7 @@ int TestAssemblies(int style, const char* styleName, bool meshEdges = false)
     RenderFrame(style, TransformedPlain, meshEdges, name);
   nprImageTolerance tolerance;
   tolerance.MaxDifferingFraction = 0.0001;
-  for (Grouping grouping : { Flat, Nested, Props, Transformed })
+  for (Grouping grouping : { Flat, Nested, Props, Transformed, LevelOfDetail })
   {
     vtkImageData* reference = grouping == Transformed ? transformedPlain : plain;
     const nprImageDifference difference =
