@@ -52,7 +52,7 @@ set(NPR_SANITIZE_NO_LEAKS "ASAN_OPTIONS=${npr_asan_options}:detect_leaks=0")
 # llvmpipe threads and its dlopen'ed driver), died of signal 11 in about half the runs of the bunny
 # baseline on this machine ("Tracer caught signal 11: addr=0x1100"; CI failed it twice in a row)
 # and in none of 14 runs without that walk. Fewer roots can only add reports, never hide a leak:
-# the one it adds, glibc's loader's own, is suppressed in lsan.supp.
+# the ones it adds, glibc's loader's and dlerror's own, are suppressed in lsan.supp.
 set(NPR_SANITIZE_ENVIRONMENT
   "MESA_SHADER_CACHE_DISABLE=true"
   "ASAN_OPTIONS=${npr_asan_options}:detect_leaks=1"

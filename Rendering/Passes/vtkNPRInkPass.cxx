@@ -109,8 +109,11 @@ bool vtkNPRDrawsLinesOrPoints(vtkActor* actor)
   {
     return false; // nothing drawn, or drawn after the opaque props
   }
+  // A glyph mapper's input holds the glyphs' centres, not what it draws.
+  const bool glyphs = vtkGlyph3DMapper::SafeDownCast(mapper) != nullptr;
   return property->GetRepresentation() != VTK_SURFACE || vtkNPRDrawsSplats(actor) ||
-    !vtkNPRCallsInkHooks(mapper) || vtkNPRHasLinesOrVerts(mapper->GetInputDataObject(0, 0));
+    !vtkNPRCallsInkHooks(mapper) ||
+    (!glyphs && vtkNPRHasLinesOrVerts(mapper->GetInputDataObject(0, 0)));
 }
 
 // Whether a part of the top-level prop shows its mesh edges (vtkProperty::EdgeVisibilityOn on a
