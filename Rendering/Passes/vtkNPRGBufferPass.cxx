@@ -427,7 +427,6 @@ void vtkNPRGBufferPass::CopyBack(const vtkRenderState* state, int width, int hei
   vtkNPRViewportOrigin(state, origin);
   vtkNPRCompositeState compositeState(glState);
   compositeState.Apply(origin, width, height);
-  glState->vtkglScissor(origin[0], origin[1], width, height);
   // Replaces what is there, as the delegate drawing here would have: nobody cleared it.
   glState->vtkglDisable(GL_BLEND);
   glState->vtkglDepthFunc(GL_ALWAYS);

@@ -124,9 +124,37 @@ bool vtkNPRShowsMeshEdges(const std::vector<vtkNPRPropPart>& parts)
     [](const vtkNPRPropPart& part)
     { return vtkNPRDrawsMeshEdges(static_cast<vtkActor*>(part.Prop)->GetProperty()); });
 }
+
+// While it lives, filled faces are drawn pulled towards the viewer by `width` pixels of their
+// depth slope (and one unit): nothing with a width of 0.
+class nprPulledFaces
+{
+public:
+  explicit nprPulledFaces(double width)
+    : Pulled(width > 0.0)
+  {
+    if (this->Pulled)
+    {
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(-static_cast<float>(width), -1.0f);
+    }
+  }
+  ~nprPulledFaces()
+  {
+    if (this->Pulled)
+    {
+      glPolygonOffset(0.0f, 0.0f);
+      glDisable(GL_POLYGON_OFFSET_FILL);
+    }
+  }
+  nprPulledFaces(const nprPulledFaces&) = delete;
+  nprPulledFaces& operator=(const nprPulledFaces&) = delete;
+
+private:
+  bool Pulled;
+};
 }
 
-// The ink's code after texturing: the colour is final there.
 // The ink image of a frame that draws lines or points (DrawInkImage): its colour (alpha 1 where
 // the ink shows) and depth, and the program that puts it over the frame.
 struct vtkNPRInkPass::Internals
@@ -137,6 +165,7 @@ struct vtkNPRInkPass::Internals
   vtkNPRQuadProgram Composite;
 };
 
+// The ink's code after texturing: the colour is final there.
 vtkNPRInkPass::vtkNPRInkPass()
   : vtkNPRGeometryPass("Ink", "//VTK::TCoord::Impl", "the ink")
   , Internal(new Internals)
@@ -165,12 +194,13 @@ void vtkNPRInkPass::Render(const vtkRenderState* state)
     this->ClearMask(renderer);
   }
   this->PreRender(state); // the mappers now call this pass's shader hooks
-  std::vector<vtkProp*> inked = this->ListInkedProps(state);
+  bool linesOrPoints = false;
+  std::vector<vtkProp*> inked = this->ListInkedProps(state, linesOrPoints);
   if (inked.empty())
   {
     this->DrawFilledFaces(state, 0.0);
   }
-  else if (DrawsLinesOrPoints(state))
+  else if (linesOrPoints)
   {
     this->DrawInkImage(state, inked, drawnWidth, visibleWidth);
     this->DrawFilledFaces(state, 0.0);
@@ -223,21 +253,34 @@ void vtkNPRInkPass::ClearMask(vtkRenderer* renderer)
   glState->vtkglClear(GL_COLOR_BUFFER_BIT);
 }
 
-std::vector<vtkProp*> vtkNPRInkPass::ListInkedProps(const vtkRenderState* state)
+std::vector<vtkProp*> vtkNPRInkPass::ListInkedProps(
+  const vtkRenderState* state, bool& linesOrPoints)
 {
   // Ink only for the surfaces whose mapper calls this pass's shader hooks: any other prop would be
-  // drawn as a wireframe in its own colours.
+  // drawn as a wireframe in its own colours. Annotations are drawn as they are in every case.
   std::vector<vtkProp*> inked;
   this->InkWithoutMeshEdges = false;
+  linesOrPoints = false;
   for (int i = 0; i < state->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = state->GetPropArray()[i];
+    if (vtkNPRIsAnnotation(prop))
+    {
+      continue;
+    }
     const std::vector<vtkNPRPropPart> parts = vtkNPRPropParts(prop);
     if (vtkNPRIsInkable(prop, parts))
     {
       inked.push_back(prop);
       this->InkWithoutMeshEdges = this->InkWithoutMeshEdges || vtkNPRShowsMeshEdges(parts);
     }
+    linesOrPoints = linesOrPoints ||
+      std::any_of(parts.begin(), parts.end(),
+        [](const vtkNPRPropPart& part)
+        {
+          auto* actor = vtkActor::SafeDownCast(part.Prop);
+          return actor && vtkNPRDrawsLinesOrPoints(actor);
+        });
   }
   return inked;
 }
@@ -279,40 +322,12 @@ void vtkNPRInkPass::DrawFilledFaces(const vtkRenderState* state, double pullWidt
   // each line that lies over them. (Lines pushed back instead keep a selection highlight on the
   // faces visible, but the slivers of faces clipped at the tile borders of a tiled render then
   // show as ink lines across the image: npr.tiled_render.inked measured 958 pixels.)
-  if (pullWidth > 0.0)
   {
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(-static_cast<float>(pullWidth), -1.0f);
-  }
-  this->DelegatePass->Render(state);
-  if (pullWidth > 0.0)
-  {
-    glPolygonOffset(0.0f, 0.0f);
-    glDisable(GL_POLYGON_OFFSET_FILL);
+    nprPulledFaces pulled(pullWidth);
+    this->DelegatePass->Render(state);
   }
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   this->DrawMode = DrawShaded;
-}
-
-bool vtkNPRInkPass::DrawsLinesOrPoints(const vtkRenderState* state)
-{
-  for (int i = 0; i < state->GetPropArrayCount(); ++i)
-  {
-    vtkProp* prop = state->GetPropArray()[i];
-    if (vtkNPRIsAnnotation(prop))
-    {
-      continue; // drawn as it is, at its own depth, in every case
-    }
-    for (const vtkNPRPropPart& part : vtkNPRPropParts(prop))
-    {
-      auto* actor = vtkActor::SafeDownCast(part.Prop);
-      if (actor && vtkNPRDrawsLinesOrPoints(actor))
-      {
-        return true;
-      }
-    }
-  }
-  return false;
 }
 
 void vtkNPRInkPass::DrawInkImage(
@@ -341,11 +356,10 @@ void vtkNPRInkPass::DrawInkImage(
   this->DrawBackFaceInk(state, inked, lineWidth);
   this->DrawMode = DrawNoInk;
   this->SwitchMeshEdgesShader();
-  glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(-static_cast<float>(visibleWidth), -1.0f);
-  this->DrawProps(state, inked);
-  glPolygonOffset(0.0f, 0.0f);
-  glDisable(GL_POLYGON_OFFSET_FILL);
+  {
+    nprPulledFaces pulled(visibleWidth);
+    this->DrawProps(state, inked);
+  }
   this->DrawMode = DrawShaded;
 }
 
@@ -363,11 +377,9 @@ void vtkNPRInkPass::CompositeInkImage(const vtkRenderState* state)
   vtkNPRViewportOrigin(state, origin);
   vtkNPRCompositeState compositeState(window->GetState());
   compositeState.Apply(origin, internal.Ink->GetWidth(), internal.Ink->GetHeight());
-  window->GetState()->vtkglScissor(
-    origin[0], origin[1], internal.Ink->GetWidth(), internal.Ink->GetHeight());
-  // The ink where it showed against the pulled faces, unless a line or point is in front of it.
+  // The ink where it showed against the pulled faces (depth test LEQUAL), unless a line or point
+  // is in front of it; opaque.
   window->GetState()->vtkglDisable(GL_BLEND);
-  window->GetState()->vtkglDepthFunc(GL_LEQUAL);
   internal.Ink->Activate();
   internal.Depth->Activate();
   composite->SetUniformi("inkTexture", internal.Ink->GetTextureUnit());

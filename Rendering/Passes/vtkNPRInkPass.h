@@ -114,17 +114,16 @@ protected:
   // The steps of Render().
   double DrawableLineWidth(double width); // at most what this OpenGL draws (warns once)
   void ClearMask(vtkRenderer* renderer);  // CoverageOnly: the background black
-  // The top-level props drawn as inked surfaces (sets InkWithoutMeshEdges).
-  std::vector<vtkProp*> ListInkedProps(const vtkRenderState* state);
+  // The top-level props drawn as inked surfaces (sets InkWithoutMeshEdges), and whether the
+  // frame draws lines or points at the depth of a surface (a selection highlight, a wireframe,
+  // vertices, lines), which pulled faces would hide.
+  std::vector<vtkProp*> ListInkedProps(const vtkRenderState* state, bool& linesOrPoints);
   // The delegate's draw of `props` alone.
   void DrawProps(const vtkRenderState* state, std::vector<vtkProp*>& props);
   void DrawBackFaceInk(const vtkRenderState* state, std::vector<vtkProp*>& inked, double lineWidth);
   // All props, shaded; the faces pulled towards the viewer by `pullWidth` pixels of their depth
   // slope (0: at their own depth).
   void DrawFilledFaces(const vtkRenderState* state, double pullWidth);
-  // Whether the frame draws lines or points at the depth of a surface (a selection highlight, a
-  // wireframe, vertices, lines): pulled faces would hide them.
-  static bool DrawsLinesOrPoints(const vtkRenderState* state);
   // For such a frame: the ink as it shows against the pulled faces, found in an image of its own
   // (colour and depth) and put over the faces drawn at their own depth.
   void DrawInkImage(const vtkRenderState* state, std::vector<vtkProp*>& inked, double lineWidth,

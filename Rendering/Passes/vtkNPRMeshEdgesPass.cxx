@@ -146,7 +146,7 @@ void vtkNPRMeshEdgesPass::Render(const vtkRenderState* state)
       }
       nprEdgeCompanion& companion = companions[{ prop, actor }];
       companion.Source = actor;
-      companion.Update(actor, part.Matrix ? part.Matrix : actor->GetMatrix());
+      companion.Update(actor, part.Matrix); // an actor's part always has one
       this->NumberOfRenderedProps += companion.Actor->RenderOpaqueGeometry(renderer);
     }
   }

@@ -138,6 +138,7 @@ vtkNPRCompositeState::vtkNPRCompositeState(vtkOpenGLState* state)
 void vtkNPRCompositeState::Apply(const int origin[2], int width, int height)
 {
   this->State->vtkglViewport(origin[0], origin[1], width, height);
+  this->State->vtkglScissor(origin[0], origin[1], width, height);
   this->State->vtkglEnable(GL_SCISSOR_TEST);
   this->State->vtkglEnable(GL_DEPTH_TEST);
   this->State->vtkglDepthFunc(GL_LEQUAL);

@@ -87,7 +87,8 @@ bool vtkNPRKeepsOwnLook(vtkAbstractMapper* mapper, vtkProp* prop);
 // The state a full-screen depth-sprite composite changes, restored when this goes out of scope.
 // Apply() sets what the composites need: the viewport (callers such as ParaView's image-processing
 // slot call a pass with whatever viewport was last set), depth test LEQUAL with depth writes
-// (gl_FragDepth), alpha blending of colour over what is there, scissor test on.
+// (gl_FragDepth), alpha blending of colour over what is there, scissor test on, to the viewport
+// (a caller limits it further where it draws less).
 class vtkNPRCompositeState
 {
 public:
