@@ -28,6 +28,7 @@ void nprApplyPassSettings(vtkNPRPass* pass, const nprPassSettings& settings)
   edges->SetCreaseAngle(settings.CreaseAngle);
   edges->SetContourSide(settings.ContourSide);
   edges->SetLineWidth(settings.LineWidth);
+  edges->SetMaximumLineFraction(settings.MaximumLineFraction);
   edges->SetSilhouetteColor(settings.SilhouetteColor);
   edges->SetCreaseColor(settings.CreaseColor);
   edges->SetContourColor(settings.ContourColor);

@@ -71,27 +71,26 @@ vtkPVNPRViewForward(FaceCreases, bool, GetEdgePass(), SetFaceCreases) vtkPVNPRVi
   SetSuggestiveContourColor) vtkPVNPRViewForward(Silhouettes, bool, GetEdgePass(), SetSilhouettes)
   vtkPVNPRViewForward(SilhouetteThreshold, double, GetEdgePass(), SetSilhouetteThreshold)
     vtkPVNPRViewForwardColor(SilhouetteColor, GetEdgePass(), SetSilhouetteColor)
-      vtkPVNPRViewForward(Creases, bool, GetEdgePass(), SetCreases) vtkPVNPRViewForward(CreaseAngle,
-        double, GetEdgePass(),
-        SetCreaseAngle) vtkPVNPRViewForwardColor(CreaseColor, GetEdgePass(), SetCreaseColor)
-        vtkPVNPRViewForward(Contours, bool, GetEdgePass(), SetContours) vtkPVNPRViewForward(
-          ContourSide, int, GetEdgePass(), SetContourSide) vtkPVNPRViewForwardColor(ContourColor,
-          GetEdgePass(), SetContourColor) vtkPVNPRViewForward(LineWidth, double, GetEdgePass(),
-          SetLineWidth) vtkPVNPRViewForward(LineAntiAliasing, bool, GetEdgePass(), SetAntiAliasing)
-          vtkPVNPRViewForward(LineEncoding, int, GetEdgePass(), SetEncoding)
-            vtkPVNPRViewForward(PackedThreshold, double, GetEdgePass(), SetPackedThreshold)
-              vtkPVNPRViewForward(ToonBands, int, GetToonPass(), SetNumberOfBands)
-                vtkPVNPRViewForward(ToonSpecular, bool, GetToonPass(), SetSpecular)
-                  vtkPVNPRViewForward(SketchUncertainty, double, GetSketchPass(), SetUncertainty)
-                    vtkPVNPRViewForward(
-                      SketchNoiseFrequency, double, GetSketchPass(), SetNoiseFrequency)
-                      vtkPVNPRViewForward(SketchNoiseSpace, int, GetSketchPass(), SetNoiseSpace)
-                        vtkPVNPRViewForward(SketchPaper, bool, GetSketchPass(), SetPaper)
-                          vtkPVNPRViewForwardColor(SketchPaperColor, GetSketchPass(), SetPaperColor)
-                            vtkPVNPRViewForward(InkLineWidth, double, GetInkPass(), SetLineWidth)
-                              vtkPVNPRViewForwardColor(InkColor, GetInkPass(), SetInkColor)
+      vtkPVNPRViewForward(Creases, bool, GetEdgePass(), SetCreases) vtkPVNPRViewForward(
+        CreaseAngle, double, GetEdgePass(), SetCreaseAngle) vtkPVNPRViewForwardColor(CreaseColor,
+        GetEdgePass(), SetCreaseColor) vtkPVNPRViewForward(Contours, bool, GetEdgePass(),
+        SetContours) vtkPVNPRViewForward(ContourSide, int, GetEdgePass(), SetContourSide)
+        vtkPVNPRViewForwardColor(ContourColor, GetEdgePass(), SetContourColor) vtkPVNPRViewForward(
+          LineWidth, double, GetEdgePass(), SetLineWidth) vtkPVNPRViewForward(MaximumLineFraction,
+          double, GetEdgePass(), SetMaximumLineFraction) vtkPVNPRViewForward(LineAntiAliasing, bool,
+          GetEdgePass(), SetAntiAliasing) vtkPVNPRViewForward(LineEncoding, int, GetEdgePass(),
+          SetEncoding) vtkPVNPRViewForward(PackedThreshold, double, GetEdgePass(),
+          SetPackedThreshold) vtkPVNPRViewForward(ToonBands, int, GetToonPass(), SetNumberOfBands)
+          vtkPVNPRViewForward(ToonSpecular, bool, GetToonPass(), SetSpecular)
+            vtkPVNPRViewForward(SketchUncertainty, double, GetSketchPass(), SetUncertainty)
+              vtkPVNPRViewForward(SketchNoiseFrequency, double, GetSketchPass(), SetNoiseFrequency)
+                vtkPVNPRViewForward(SketchNoiseSpace, int, GetSketchPass(), SetNoiseSpace)
+                  vtkPVNPRViewForward(SketchPaper, bool, GetSketchPass(), SetPaper)
+                    vtkPVNPRViewForwardColor(SketchPaperColor, GetSketchPass(), SetPaperColor)
+                      vtkPVNPRViewForward(InkLineWidth, double, GetInkPass(), SetLineWidth)
+                        vtkPVNPRViewForwardColor(InkColor, GetInkPass(), SetInkColor)
 
-                                void vtkPVNPRView::SetSketchNoiseSeed(int seed)
+                          void vtkPVNPRView::SetSketchNoiseSeed(int seed)
 {
   this->NPRViewPass->GetNPRPass()->GetSketchPass()->SetNoiseSeed(
     static_cast<unsigned int>(seed < 0 ? 0 : seed));

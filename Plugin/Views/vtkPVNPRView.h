@@ -68,6 +68,7 @@ public:
   void SetContourSide(int side);
   void SetContourColor(double r, double g, double b);
   void SetLineWidth(double width);
+  void SetMaximumLineFraction(double fraction);
   void SetLineAntiAliasing(bool on);
   void SetLineEncoding(int encoding);
   void SetPackedThreshold(double threshold);

@@ -32,6 +32,20 @@
 
 namespace
 {
+// The standard deviation of the Gaussian that widens the one-pixel line image to a line width.
+double LineSigma(double width)
+{
+  return std::max(0.6, 0.3 * width);
+}
+
+// The slope of the coverage mapping in units of its level: one pixel of anti-aliasing, and none
+// where there is no line at all (0.5 - level / slope < 0).
+double CoverageSlopeOverLevel(double width)
+{
+  const double sigma = LineSigma(width);
+  return std::min(0.5 * width / (sigma * sigma), 1.95);
+}
+
 // Gaussian filter of the line image as bilinear taps, and the coverage mapping of its result.
 struct LineFilter
 {
@@ -48,7 +62,7 @@ struct LineFilter
       return;
     }
     this->Width = width;
-    const double sigma = std::max(0.6, 0.3 * width);
+    const double sigma = LineSigma(width);
     this->Radius = std::max(1, static_cast<int>(std::floor(0.5 * width + 0.5)));
     std::vector<double> g(this->Radius + 2, 0.0);
     double sum = 0.0;
@@ -94,10 +108,26 @@ struct LineFilter
     const double half = 0.5 * width;
     const double level = std::exp(-half * half / (2.0 * sigma * sigma)) / sum;
     this->CoverageLevel = static_cast<float>(level);
-    // No coverage where there is no line at all: 0.5 - level / slope < 0.
-    this->CoverageSlope = static_cast<float>(std::min(half / (sigma * sigma), 1.95) * level);
+    this->CoverageSlope = static_cast<float>(CoverageSlopeOverLevel(width) * level);
   }
 };
+
+// The width limit (vtkNPREdgePass::MaximumLineFraction): a line pixel's value s makes the composite
+// draw its line as wide as where s P(d) meets P's level at the full width, so a line of width
+// x < w takes s = exp(-(w^2 - x^2) / (8 sigma^2)). Below one pixel s falls linearly to the value
+// at which the anti-aliased line leaves no coverage at all.
+void SetWidthLimitUniforms(vtkShaderProgram* program, double width, double fraction)
+{
+  const double sigma = LineSigma(width);
+  const double exponent = 1.0 / (8.0 * sigma * sigma);
+  const double peakOverLevel = std::exp(width * width * exponent); // P(0) / P(w / 2)
+  const double vanishing = (1.0 - 0.5 * CoverageSlopeOverLevel(width)) / peakOverLevel;
+  program->SetUniformf("widthLimitWidth", static_cast<float>(width));
+  program->SetUniformf("widthLimitFraction", static_cast<float>(fraction));
+  program->SetUniformf("widthLimitExponent", static_cast<float>(exponent));
+  program->SetUniformf("widthLimitVanishing", static_cast<float>(std::max(0.0, vanishing)));
+  program->SetUniformi("widthLimitPixels", static_cast<int>(std::ceil(width / fraction)));
+}
 }
 
 struct vtkNPREdgePass::Internals
@@ -206,7 +236,8 @@ std::string vtkNPREdgePass::GetDetectDefines(int encoding) const
           << "\n#define NPR_HAVE_OBJECT_IDS " << (gbuffer->GetWritesObjectIds() ? 1 : 0)
           << "\n#define NPR_HAVE_FACE_NORMALS "
           << (this->FaceCreases && gbuffer->GetWritesFaceNormals() ? 1 : 0)
-          << "\n#define NPR_CONTOUR_SIDE " << this->ContourSide << "\n";
+          << "\n#define NPR_CONTOUR_SIDE " << this->ContourSide << "\n#define NPR_WIDTH_LIMIT "
+          << (this->MaximumLineFraction > 0.0 && !packed ? 1 : 0) << "\n";
   return defines.str();
 }
 
@@ -223,9 +254,13 @@ bool vtkNPREdgePass::UpdateLineImage(const vtkRenderState* state)
     internal.WarnedAboutEncoding = true;
   }
   const std::string defines = this->GetDetectDefines(encoding);
+  // The width limit thins the line image's values by the width the composite widens them to.
+  const double lineWidth = this->GetEffectiveLineWidth(state->GetRenderer());
   std::ostringstream settings;
+  settings.precision(17);
   settings << defines << this->SilhouetteThreshold << " " << this->CreaseAngle << " "
-           << this->PackedThreshold << " " << this->SuggestiveContourThreshold;
+           << this->PackedThreshold << " " << this->SuggestiveContourThreshold << " "
+           << this->MaximumLineFraction << " " << lineWidth;
   if (internal.LineImageValid && internal.LineImageVersion == gbuffer->GetContentVersion() &&
     internal.LineImageSettings == settings.str())
   {
@@ -249,7 +284,7 @@ bool vtkNPREdgePass::UpdateLineImage(const vtkRenderState* state)
   }
   internal.LineTexture->Resize(width, height);
   geometry->Activate();
-  this->SetDetectUniforms(program, encoding);
+  this->SetDetectUniforms(program, encoding, lineWidth);
   {
     vtkNPRRenderTarget::Scope target(
       internal.Target, window, { internal.LineTexture }, nullptr, width, height);
@@ -266,7 +301,7 @@ bool vtkNPREdgePass::UpdateLineImage(const vtkRenderState* state)
   return true;
 }
 
-void vtkNPREdgePass::SetDetectUniforms(vtkShaderProgram* program, int encoding)
+void vtkNPREdgePass::SetDetectUniforms(vtkShaderProgram* program, int encoding, double lineWidth)
 {
   vtkNPRGBufferPass* gbuffer = this->GBufferPass;
   program->SetUniformi("geometryTexture", gbuffer->GetGeometryTexture()->GetTextureUnit());
@@ -294,6 +329,10 @@ void vtkNPREdgePass::SetDetectUniforms(vtkShaderProgram* program, int encoding)
     gbuffer->GetViewPixelStep(pixelStepX, pixelStepY);
     program->SetUniform3f("viewPixelStepX", pixelStepX);
     program->SetUniform3f("viewPixelStepY", pixelStepY);
+  }
+  if (this->MaximumLineFraction > 0.0)
+  {
+    SetWidthLimitUniforms(program, lineWidth, this->MaximumLineFraction);
   }
 }
 
@@ -454,6 +493,7 @@ void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
      << this->ContourColor[0] << " " << this->ContourColor[1] << " " << this->ContourColor[2]
      << "\n";
   os << indent << "LineWidth: " << this->LineWidth << "\n";
+  os << indent << "MaximumLineFraction: " << this->MaximumLineFraction << "\n";
   os << indent << "Encoding: " << GetEncodingName(this->Encoding) << " packed threshold "
      << this->PackedThreshold << " blur " << this->PackedBlur << "\n";
   os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";

@@ -247,6 +247,23 @@ public:
 
   ///@{
   /**
+   * The largest share of an object's width that each of its lines may take, clamped to [0, 1]
+   * (default 0: no limit; 0.1 suits flow visualisations). On an object narrower than the line
+   * width divided by this fraction (15 pixels at 0.1 and the default width: a stream tube, a
+   * distant wire) the lines are drawn thinner and lighter, down to nothing on an object one pixel
+   * wide, and only its outline is drawn (silhouettes, or else contours; one line per pixel), so
+   * that the colours mapped onto it stay visible. The width is the object's shortest chord through
+   * the line pixel along the axes and diagonals, up to a depth step, another object or the
+   * background. Off by default because near the silhouettes of curved surfaces the depth turns as
+   * fast as at a step, which ends the chords early and thins some lines of CAD parts and scans.
+   * Not with the packed encodings.
+   */
+  vtkSetClampMacro(MaximumLineFraction, double, 0.0, 1.0);
+  vtkGetMacro(MaximumLineFraction, double);
+  ///@}
+
+  ///@{
+  /**
    * Anti-aliased lines (on by default). Off: every pixel is fully line or not.
    */
   vtkSetMacro(AntiAliasing, bool);
@@ -324,6 +341,7 @@ protected:
   int ContourSide = INSIDE;
   double ContourColor[3] = { 0.0, 0.0, 0.0 };
   double LineWidth = 1.5;
+  double MaximumLineFraction = 0.0;
   int Encoding = FLOAT;
   double PackedThreshold = 0.1;
   bool PackedBlur = false;
@@ -338,7 +356,7 @@ private:
   // The one-pixel line image, recomputed only when the G-buffer or the detection settings changed.
   std::string GetDetectDefines(int encoding) const;
   bool UpdateLineImage(const vtkRenderState* state);
-  void SetDetectUniforms(vtkShaderProgram* program, int encoding);
+  void SetDetectUniforms(vtkShaderProgram* program, int encoding, double lineWidth);
   // The composite of the lines (and colour and depth, or the mask, or the coverage).
   std::string GetCompositeDefines(vtkRenderer* renderer, int output);
   bool DrawLines(const vtkRenderState* state, const int origin[2], int output);

@@ -33,6 +33,8 @@ STYLES = ("shaded", "edges", "toon", "toon+edges", "sketch", "inked", "drawing")
 SETTINGS = {
     "line_width": "width of every line in pixels at 72 DPI (edges and ink)",
     "line_color": "colour of every line (silhouettes, creases, contours, ink)",
+    "max_line_fraction": "largest share of an object's width one of its lines may take, 0..1"
+                         " (0: no limit)",
     "silhouette_color": "colour of the silhouette lines",
     "crease_color": "colour of the crease lines",
     "contour_color": "colour of the object contour lines",
@@ -79,6 +81,7 @@ def _noise_space(value):
 # Each setting: how its value is read, and the (pass, setter) pairs it goes to.
 _SETTERS = {
     "line_width": (float, [("edges", "SetLineWidth"), ("ink", "SetLineWidth")]),
+    "max_line_fraction": (float, [("edges", "SetMaximumLineFraction")]),
     "line_color": (_color, [("edges", "SetSilhouetteColor"), ("edges", "SetCreaseColor"),
                             ("edges", "SetContourColor"), ("edges", "SetSuggestiveContourColor"),
                             ("ink", "SetInkColor")]),

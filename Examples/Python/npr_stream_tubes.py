@@ -1,0 +1,209 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+# SPDX-License-Identifier: BSD-3-Clause
+"""Stream tubes coloured by a scalar in the line styles: the lines keep the colours visible.
+
+    PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 \\
+        Examples/Python/npr_stream_tubes.py -o tubes.png
+
+Two scenes as flow visualisations build them: a few stream tubes a few pixels wide seeded along a
+line (as VTK's OfficeTube example), and a crowd of them seeded in a ball (as ParaView's
+disk_out_ref stream tubes), coloured by a pressure-like scalar. Each is drawn shaded, in the edges,
+toon+edges and sketch styles with vtkNPREdgePass's MaximumLineFraction at 0.1 (lines at most a
+tenth of a tube's width), and in the edges style without that limit (the default: lines as wide on
+a tube as on a large object): one row each.
+
+With --check the script exits 1 unless, with the limit, at most 10 % of the few tubes' pixels turn
+near-black (every channel under 64) that are not near-black in the shaded image in every line
+style, and in both scenes the edges style with the limit turns at most 0.6 times as many
+near-black as without it. It runs as a test on every VTK release.
+"""
+import argparse
+import math
+import sys
+
+import vtknpr  # noqa: F401  (first: it imports the VTK modules it needs by itself)
+from vtknpr import vtkNPRPass, vtkNPRRenderWindowFactory
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
+from vtkmodules.vtkFiltersCore import vtkArrayCalculator, vtkImageAppend, vtkTubeFilter
+from vtkmodules.vtkFiltersFlowPaths import vtkStreamTracer
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
+                                         vtkWindowToImageFilter)
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL object factory overrides)
+
+# (style, vtkNPREdgePass's MaximumLineFraction)
+LIMIT = 0.1
+RENDERINGS = [("shaded", 0.0), ("edges", LIMIT), ("toon+edges", LIMIT), ("sketch", LIMIT),
+              ("edges", 0.0)]
+NEAR_BLACK = 64  # every channel below this
+
+
+def parse_arguments():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("-o", "--output", required=True, help="PNG to write")
+    parser.add_argument("--size", default="640x480", help="size of one tile (default 640x480)")
+    parser.add_argument("--check", action="store_true", help="verify the result; exit 1 on failure")
+    return parser.parse_args()
+
+
+def swirl():
+    """A vortex on a 41^3 grid: vectors 'velocity' and a scalar 'pressure'."""
+    grid = vtkImageData()
+    grid.SetDimensions(41, 41, 41)
+    grid.SetOrigin(-1, -1, -1)
+    grid.SetSpacing(0.05, 0.05, 0.05)
+    output = grid
+    for name, function in [
+            ("velocity", "(-y + 0.3*x*z)*iHat + (x + 0.3*y*z)*jHat + (0.4 - 0.5*(x*x + y*y))*kHat"),
+            ("pressure", "x*x + y*y - z")]:
+        calculator = vtkArrayCalculator()
+        calculator.SetInputData(output)
+        for axis, variable in enumerate("xyz"):
+            calculator.AddCoordinateScalarVariable(variable, axis)
+        calculator.SetFunction(function)
+        calculator.SetResultArrayName(name)
+        calculator.Update()
+        output = calculator.GetOutput()
+    return output
+
+
+def stream_tubes(crowd):
+    """A renderer with the stream tubes: a few along a line, or a crowd from a ball of seeds."""
+    seeds = vtkPolyData()
+    seeds.SetPoints(vtkPoints())
+    if crowd:
+        # 80 points spread evenly through a ball (a golden-angle spiral, radii by cube root).
+        for i in range(80):
+            t = (i + 0.5) / 80.0
+            r = 0.7 * t ** (1.0 / 3.0)
+            z = 1.0 - 2.0 * ((i * 0.618034) % 1.0)
+            ring = math.sqrt(max(0.0, 1.0 - z * z))
+            angle = 2.399963 * i
+            seeds.GetPoints().InsertNextPoint(
+                r * ring * math.cos(angle), r * ring * math.sin(angle), -0.5 + r * z)
+        radius = 0.02
+    else:
+        for i in range(9):
+            t = i / 8.0
+            seeds.GetPoints().InsertNextPoint(0.1 + 0.7 * t, -0.8 + 0.9 * t, -0.6)
+        radius = 0.012
+    tracer = vtkStreamTracer()
+    tracer.SetInputData(swirl())
+    tracer.SetSourceData(seeds)
+    tracer.SetInputArrayToProcess(0, 0, 0, 0, "velocity")
+    tracer.SetMaximumPropagation(8)
+    tracer.SetIntegrationDirectionToBoth()
+    tubes = vtkTubeFilter()
+    tubes.SetInputConnection(tracer.GetOutputPort())
+    tubes.SetRadius(radius)
+    tubes.SetNumberOfSides(8)
+    tubes.Update()
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(tubes.GetOutputPort())
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray("pressure")
+    mapper.SetScalarRange(tubes.GetOutput().GetPointData().GetArray("pressure").GetRange())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    renderer = vtkRenderer()
+    renderer.SetBackground(1, 1, 1)
+    renderer.AddActor(actor)
+    renderer.ResetCamera()
+    renderer.GetActiveCamera().Elevation(-50)
+    renderer.ResetCamera()
+    return renderer
+
+
+def render(window, renderer, style, fraction):
+    """The renderer's image in a style (vtkImageData, RGB)."""
+    npr = vtkNPRPass()
+    npr.SetStyle(vtkNPRPass.GetStyleFromName(style))
+    npr.GetEdgePass().SetMaximumLineFraction(fraction)
+    renderer.SetPass(npr)
+    window.AddRenderer(renderer)
+    window.Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    window.RemoveRenderer(renderer)
+    renderer.SetPass(None)
+    npr.ReleaseGraphicsResources(window)
+    return grab.GetOutput()
+
+
+def newly_near_black(shaded, styled):
+    """(tube pixels, those near-black in styled but not in shaded): tube pixels are those not
+    white in the shaded image."""
+    before = bytes(memoryview(shaded.GetPointData().GetScalars()))
+    after = bytes(memoryview(styled.GetPointData().GetScalars()))
+    tube = turned = 0
+    for i in range(0, len(before), 3):
+        pixel = before[i:i + 3]
+        if pixel == b"\xff\xff\xff":
+            continue
+        tube += 1
+        if max(after[i:i + 3]) < NEAR_BLACK <= max(pixel):
+            turned += 1
+    return tube, turned
+
+
+def main():
+    args = parse_arguments()
+    width, height = (int(v) for v in args.size.split("x"))
+    window = vtkNPRRenderWindowFactory.CreateRenderWindow()
+    if window is None:
+        sys.exit("npr_stream_tubes: error: no headless render window")
+    window.SetSize(width, height)
+    window.SetMultiSamples(0)
+
+    rows = vtkImageAppend()
+    rows.SetAppendAxis(1)
+    shares = {}
+    scenes = {crowd: stream_tubes(crowd) for crowd in (False, True)}
+    for style, fraction in reversed(RENDERINGS):  # the image's rows run bottom up
+        row = vtkImageAppend()
+        row.SetAppendAxis(0)
+        for crowd in (False, True):
+            scene = "crowd" if crowd else "few"
+            image = render(window, scenes[crowd], style, fraction)
+            shaded = render(window, scenes[crowd], "shaded", 0.0)
+            tube, turned = newly_near_black(shaded, image)
+            shares[(style, fraction, scene)] = (turned / max(tube, 1), tube)
+            row.AddInputData(image)
+        row.Update()
+        rows.AddInputData(row.GetOutput())
+    rows.Update()
+    writer = vtkPNGWriter()
+    writer.SetFileName(args.output)
+    writer.SetInputData(rows.GetOutput())
+    writer.Write()
+    print("npr_stream_tubes: wrote %s (%d renderings x 2 scenes)" % (args.output, len(RENDERINGS)))
+
+    failures = []
+    for (style, fraction, scene), (share, tube) in sorted(shares.items(), key=str):
+        name = style + (" (limit %g)" % fraction if fraction else "")
+        print("%-22s %-5s tube pixels %7d, newly near-black %5.1f %%"
+              % (name, scene, tube, 100.0 * share))
+        if tube < 2000:
+            failures.append("%s %s: only %d tube pixels" % (name, scene, tube))
+        if style != "shaded" and fraction and scene == "few" and share > 0.10:
+            failures.append("%s %s: %.1f %% of the tube pixels turn near-black (at most 10 %%)"
+                            % (name, scene, 100.0 * share))
+    for scene in ("few", "crowd"):
+        limited = shares[("edges", LIMIT, scene)][0]
+        unlimited = shares[("edges", 0.0, scene)][0]
+        if limited > 0.6 * unlimited:
+            failures.append("%s: without the limit %.1f %% turn near-black, with it %.1f %%: the "
+                            "limit should keep at least 40 %% of them"
+                            % (scene, 100.0 * unlimited, 100.0 * limited))
+    if args.check and failures:
+        for failure in failures:
+            print("npr_stream_tubes: FAILED: " + failure)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
