@@ -32,6 +32,8 @@ Lines (--style edges, toon+edges, sketch and drawing):
   --line-width PX          line width in pixels, 0.5..16 (default 1.5)
   --max-line-fraction F    largest share of an object's width one of its lines may take,
                            0..1 (default 0; 0 is no limit, 0.1 suits stream tubes)
+  --surface-line-shade F   lines over a surface in its own colour times F, 0..1 (default 0;
+                           0 keeps the lines' own colours, 0.5 suits colour-mapped data)
   --line-color COLOR       colour of every line type: a name (red, navy, ...), r,g,b in
                            0..1 or #rrggbb (default black)
   --silhouette-color COLOR, --crease-color COLOR, --contour-color COLOR,
@@ -182,6 +184,10 @@ bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
   {
     pass.MaximumLineFraction = nprParseRange(arg, arguments.Value(), 0.0, 1.0);
   }
+  else if (arg == "--surface-line-shade")
+  {
+    pass.SurfaceLineShade = nprParseRange(arg, arguments.Value(), 0.0, 1.0);
+  }
   else if (arg == "--line-color")
   {
     nprParseColor(arg, arguments.Value(), pass.SilhouetteColor);
@@ -295,9 +301,9 @@ struct FlagScope
 const FlagScope FlagScopes[] = { { "--lines", Strokes }, { "--crease-angle", Strokes },
   { "--silhouette-threshold", ImageLines }, { "--smooth-silhouettes", ImageLines },
   { "--face-creases", ImageLines }, { "--max-line-fraction", ImageLines },
-  { "--suggestive-threshold", ImageLines }, { "--suggestive-color", ImageLines },
-  { "--contour-side", ImageLines }, { "--contour-color", ImageLines },
-  { "--no-antialias", ImageLines }, { "--encoding", ImageLines },
+  { "--surface-line-shade", ImageLines }, { "--suggestive-threshold", ImageLines },
+  { "--suggestive-color", ImageLines }, { "--contour-side", ImageLines },
+  { "--contour-color", ImageLines }, { "--no-antialias", ImageLines }, { "--encoding", ImageLines },
   { "--packed-threshold", ImageLines }, { "--packed-blur", ImageLines },
   { "--silhouette-color", Strokes }, { "--crease-color", Strokes },
   { "--line-width", Strokes | StyleBit(vtkNPRPass::INKED) },

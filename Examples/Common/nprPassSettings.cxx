@@ -29,6 +29,7 @@ void nprApplyPassSettings(vtkNPRPass* pass, const nprPassSettings& settings)
   edges->SetContourSide(settings.ContourSide);
   edges->SetLineWidth(settings.LineWidth);
   edges->SetMaximumLineFraction(settings.MaximumLineFraction);
+  edges->SetSurfaceLineShade(settings.SurfaceLineShade);
   edges->SetSilhouetteColor(settings.SilhouetteColor);
   edges->SetCreaseColor(settings.CreaseColor);
   edges->SetContourColor(settings.ContourColor);

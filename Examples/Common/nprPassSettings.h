@@ -30,6 +30,7 @@ struct nprPassSettings
   int ContourSide = vtkNPREdgePass::INSIDE;
   double LineWidth = 1.5;
   double MaximumLineFraction = 0.0;
+  double SurfaceLineShade = 0.0;
   double SilhouetteColor[3] = { 0.0, 0.0, 0.0 };
   double CreaseColor[3] = { 0.0, 0.0, 0.0 };
   double ContourColor[3] = { 0.0, 0.0, 0.0 };

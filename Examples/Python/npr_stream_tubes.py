@@ -7,15 +7,21 @@
 
 Two scenes as flow visualisations build them: a few stream tubes a few pixels wide seeded along a
 line (as VTK's OfficeTube example), and a crowd of them seeded in a ball (as ParaView's
-disk_out_ref stream tubes), coloured by a pressure-like scalar. Each is drawn shaded, in the edges,
-toon+edges and sketch styles with vtkNPREdgePass's MaximumLineFraction at 0.1 (lines at most a
-tenth of a tube's width), and in the edges style without that limit (the default: lines as wide on
-a tube as on a large object): one row each.
+disk_out_ref stream tubes), coloured by a pressure-like scalar. Each is drawn shaded; in the edges
+style with the default settings; with vtkNPREdgePass's MaximumLineFraction at 0.1 (each line at
+most a tenth of the width of the tube it lies on); with that and SurfaceLineShade at 0.5 (the
+lines in a darker shade of the tube's own colour); and in the toon+edges and sketch styles with
+both: one row each.
 
-With --check the script exits 1 unless, with the limit, at most 10 % of the few tubes' pixels turn
-near-black (every channel under 64) that are not near-black in the shaded image in every line
-style, and in both scenes the edges style with the limit turns at most 0.6 times as many
-near-black as without it. It runs as a test on every VTK release.
+With --check the script exits 1 unless:
+- with both settings, in every line style and both scenes, at most 10 % of the tubes' pixels turn
+  near-black (every channel under 64) that are not near-black in the shaded image;
+- with the width limit alone, less than 0.2 times as many of the few tubes' pixels do as with
+  the default settings, and less than 0.6 times as many in the crowd;
+- with the default settings more than 40 % of the few tubes' pixels do (what the settings mend);
+- the lines stay: with both settings, at least a third as many pixels are darkened by a tenth or
+  more as with the default settings.
+It runs as a test on every VTK release.
 """
 import argparse
 import math
@@ -32,10 +38,13 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRendere
                                          vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL object factory overrides)
 
-# (style, vtkNPREdgePass's MaximumLineFraction)
+# The settings that keep the data visible: vtkNPREdgePass's MaximumLineFraction and
+# SurfaceLineShade.
 LIMIT = 0.1
-RENDERINGS = [("shaded", 0.0), ("edges", LIMIT), ("toon+edges", LIMIT), ("sketch", LIMIT),
-              ("edges", 0.0)]
+SHADE = 0.5
+# (style, MaximumLineFraction, SurfaceLineShade), one row each
+RENDERINGS = [("shaded", 0.0, 0.0), ("edges", 0.0, 0.0), ("edges", LIMIT, 0.0),
+              ("edges", LIMIT, SHADE), ("toon+edges", LIMIT, SHADE), ("sketch", LIMIT, SHADE)]
 NEAR_BLACK = 64  # every channel below this
 
 
@@ -115,11 +124,12 @@ def stream_tubes(crowd):
     return renderer
 
 
-def render(window, renderer, style, fraction):
+def render(window, renderer, style, fraction=0.0, shade=0.0):
     """The renderer's image in a style (vtkImageData, RGB)."""
     npr = vtkNPRPass()
     npr.SetStyle(vtkNPRPass.GetStyleFromName(style))
     npr.GetEdgePass().SetMaximumLineFraction(fraction)
+    npr.GetEdgePass().SetSurfaceLineShade(shade)
     renderer.SetPass(npr)
     window.AddRenderer(renderer)
     window.Render()
@@ -133,20 +143,24 @@ def render(window, renderer, style, fraction):
     return grab.GetOutput()
 
 
-def newly_near_black(shaded, styled):
-    """(tube pixels, those near-black in styled but not in shaded): tube pixels are those not
-    white in the shaded image."""
+def line_pixels(shaded, styled):
+    """(tube pixels, those near-black in styled but not in shaded, those darker in styled by a
+    tenth or more of their brightest channel: the lines drawn over the tubes). Tube pixels are those
+    not white in the shaded image."""
     before = bytes(memoryview(shaded.GetPointData().GetScalars()))
     after = bytes(memoryview(styled.GetPointData().GetScalars()))
-    tube = turned = 0
+    tube = turned = darker = 0
     for i in range(0, len(before), 3):
         pixel = before[i:i + 3]
         if pixel == b"\xff\xff\xff":
             continue
         tube += 1
-        if max(after[i:i + 3]) < NEAR_BLACK <= max(pixel):
+        brightest, now = max(pixel), max(after[i:i + 3])
+        if now < NEAR_BLACK <= brightest:
             turned += 1
-    return tube, turned
+        if now < 0.9 * brightest:
+            darker += 1
+    return tube, turned, darker
 
 
 def main():
@@ -161,16 +175,14 @@ def main():
     rows = vtkImageAppend()
     rows.SetAppendAxis(1)
     shares = {}
-    scenes = {crowd: stream_tubes(crowd) for crowd in (False, True)}
-    for style, fraction in reversed(RENDERINGS):  # the image's rows run bottom up
+    scenes = {"few": stream_tubes(False), "crowd": stream_tubes(True)}
+    for setting in reversed(RENDERINGS):  # the image's rows run bottom up
         row = vtkImageAppend()
         row.SetAppendAxis(0)
-        for crowd in (False, True):
-            scene = "crowd" if crowd else "few"
-            image = render(window, scenes[crowd], style, fraction)
-            shaded = render(window, scenes[crowd], "shaded", 0.0)
-            tube, turned = newly_near_black(shaded, image)
-            shares[(style, fraction, scene)] = (turned / max(tube, 1), tube)
+        for scene, renderer in scenes.items():
+            image = render(window, renderer, *setting)
+            shaded = render(window, renderer, "shaded")
+            shares[setting + (scene,)] = line_pixels(shaded, image)
             row.AddInputData(image)
         row.Update()
         rows.AddInputData(row.GetOutput())
@@ -180,29 +192,45 @@ def main():
     writer.SetInputData(rows.GetOutput())
     writer.Write()
     print("npr_stream_tubes: wrote %s (%d renderings x 2 scenes)" % (args.output, len(RENDERINGS)))
+    return check(shares) if args.check else 0
+
+
+def check(shares):
+    """Exit status of --check: 0, or 1 with the failures printed."""
+    def share(style, fraction, shade, scene):
+        tube, turned, _ = shares[(style, fraction, shade, scene)]
+        return turned / max(tube, 1)
 
     failures = []
-    for (style, fraction, scene), (share, tube) in sorted(shares.items(), key=str):
-        name = style + (" (limit %g)" % fraction if fraction else "")
-        print("%-22s %-5s tube pixels %7d, newly near-black %5.1f %%"
-              % (name, scene, tube, 100.0 * share))
+    for (style, fraction, shade, scene), (tube, turned, darker) in shares.items():
+        name = "%s, limit %g, shade %g" % (style, fraction, shade)
+        print("%-30s %-5s tube pixels %7d, newly near-black %5.1f %%, darkened %6d"
+              % (name, scene, tube, 100.0 * turned / max(tube, 1), darker))
         if tube < 2000:
             failures.append("%s %s: only %d tube pixels" % (name, scene, tube))
-        if style != "shaded" and fraction and scene == "few" and share > 0.10:
+        if fraction and shade and turned > 0.10 * tube:
             failures.append("%s %s: %.1f %% of the tube pixels turn near-black (at most 10 %%)"
-                            % (name, scene, 100.0 * share))
-    for scene in ("few", "crowd"):
-        limited = shares[("edges", LIMIT, scene)][0]
-        unlimited = shares[("edges", 0.0, scene)][0]
-        if limited > 0.6 * unlimited:
-            failures.append("%s: without the limit %.1f %% turn near-black, with it %.1f %%: the "
-                            "limit should keep at least 40 %% of them"
-                            % (scene, 100.0 * unlimited, 100.0 * limited))
-    if args.check and failures:
-        for failure in failures:
-            print("npr_stream_tubes: FAILED: " + failure)
-        return 1
-    return 0
+                            % (name, scene, 100.0 * turned / tube))
+    for scene, ratio in (("few", 0.2), ("crowd", 0.6)):
+        if share("edges", LIMIT, 0.0, scene) >= ratio * share("edges", 0.0, 0.0, scene):
+            failures.append("%s: the width limit alone should leave less than %g times the "
+                            "near-black pixels of the default settings" % (scene, ratio))
+    if share("edges", 0.0, 0.0, "few") <= 0.40:
+        failures.append("few: the default settings leave only %.1f %% near-black: the scene no "
+                        "longer shows the problem" % (100.0 * share("edges", 0.0, 0.0, "few")))
+    for scene in scenes_of(shares):
+        kept = shares[("edges", LIMIT, SHADE, scene)][2]
+        before = shares[("edges", 0.0, 0.0, scene)][2]
+        if 3 * kept < before:
+            failures.append("%s: with both settings %d pixels show lines, with the defaults %d: "
+                            "the lines must stay" % (scene, kept, before))
+    for failure in failures:
+        print("npr_stream_tubes: FAILED: " + failure)
+    return 1 if failures else 0
+
+
+def scenes_of(shares):
+    return sorted(set(key[-1] for key in shares))
 
 
 if __name__ == "__main__":

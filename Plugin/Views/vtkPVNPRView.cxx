@@ -68,19 +68,20 @@ vtkPVNPRViewForward(FaceCreases, bool, GetEdgePass(), SetFaceCreases) vtkPVNPRVi
   SetSmoothSilhouettes) vtkPVNPRViewForward(SuggestiveContours, bool, GetEdgePass(),
   SetSuggestiveContours) vtkPVNPRViewForward(SuggestiveContourThreshold, double, GetEdgePass(),
   SetSuggestiveContourThreshold) vtkPVNPRViewForwardColor(SuggestiveContourColor, GetEdgePass(),
-  SetSuggestiveContourColor) vtkPVNPRViewForward(Silhouettes, bool, GetEdgePass(), SetSilhouettes)
-  vtkPVNPRViewForward(SilhouetteThreshold, double, GetEdgePass(), SetSilhouetteThreshold)
-    vtkPVNPRViewForwardColor(SilhouetteColor, GetEdgePass(), SetSilhouetteColor)
-      vtkPVNPRViewForward(Creases, bool, GetEdgePass(), SetCreases) vtkPVNPRViewForward(
-        CreaseAngle, double, GetEdgePass(), SetCreaseAngle) vtkPVNPRViewForwardColor(CreaseColor,
-        GetEdgePass(), SetCreaseColor) vtkPVNPRViewForward(Contours, bool, GetEdgePass(),
-        SetContours) vtkPVNPRViewForward(ContourSide, int, GetEdgePass(), SetContourSide)
-        vtkPVNPRViewForwardColor(ContourColor, GetEdgePass(), SetContourColor) vtkPVNPRViewForward(
-          LineWidth, double, GetEdgePass(), SetLineWidth) vtkPVNPRViewForward(MaximumLineFraction,
-          double, GetEdgePass(), SetMaximumLineFraction) vtkPVNPRViewForward(LineAntiAliasing, bool,
-          GetEdgePass(), SetAntiAliasing) vtkPVNPRViewForward(LineEncoding, int, GetEdgePass(),
-          SetEncoding) vtkPVNPRViewForward(PackedThreshold, double, GetEdgePass(),
-          SetPackedThreshold) vtkPVNPRViewForward(ToonBands, int, GetToonPass(), SetNumberOfBands)
+  SetSuggestiveContourColor) vtkPVNPRViewForward(Silhouettes, bool, GetEdgePass(),
+  SetSilhouettes) vtkPVNPRViewForward(SilhouetteThreshold, double, GetEdgePass(),
+  SetSilhouetteThreshold) vtkPVNPRViewForwardColor(SilhouetteColor, GetEdgePass(),
+  SetSilhouetteColor) vtkPVNPRViewForward(Creases, bool, GetEdgePass(), SetCreases)
+  vtkPVNPRViewForward(CreaseAngle, double, GetEdgePass(), SetCreaseAngle) vtkPVNPRViewForwardColor(
+    CreaseColor, GetEdgePass(), SetCreaseColor) vtkPVNPRViewForward(Contours, bool, GetEdgePass(),
+    SetContours) vtkPVNPRViewForward(ContourSide, int, GetEdgePass(), SetContourSide)
+    vtkPVNPRViewForwardColor(ContourColor, GetEdgePass(), SetContourColor) vtkPVNPRViewForward(
+      LineWidth, double, GetEdgePass(), SetLineWidth) vtkPVNPRViewForward(MaximumLineFraction,
+      double, GetEdgePass(), SetMaximumLineFraction) vtkPVNPRViewForward(SurfaceLineShade, double,
+      GetEdgePass(), SetSurfaceLineShade) vtkPVNPRViewForward(LineAntiAliasing, bool, GetEdgePass(),
+      SetAntiAliasing) vtkPVNPRViewForward(LineEncoding, int, GetEdgePass(), SetEncoding)
+      vtkPVNPRViewForward(PackedThreshold, double, GetEdgePass(), SetPackedThreshold)
+        vtkPVNPRViewForward(ToonBands, int, GetToonPass(), SetNumberOfBands)
           vtkPVNPRViewForward(ToonSpecular, bool, GetToonPass(), SetSpecular)
             vtkPVNPRViewForward(SketchUncertainty, double, GetSketchPass(), SetUncertainty)
               vtkPVNPRViewForward(SketchNoiseFrequency, double, GetSketchPass(), SetNoiseFrequency)

@@ -69,6 +69,7 @@ public:
   void SetContourColor(double r, double g, double b);
   void SetLineWidth(double width);
   void SetMaximumLineFraction(double fraction);
+  void SetSurfaceLineShade(double shade);
   void SetLineAntiAliasing(bool on);
   void SetLineEncoding(int encoding);
   void SetPackedThreshold(double threshold);

@@ -19,6 +19,7 @@
 
 #include "vtkNPREdgeCompositeFS.h"
 #include "vtkNPREdgeDetectFS.h"
+#include "vtkNPREdgeLimitFS.h"
 #include "vtkNPRLineColor.h"
 #include "vtkNPRNearestDepth.h"
 #include "vtkNPRWindowDepth.h"
@@ -112,10 +113,7 @@ struct LineFilter
   }
 };
 
-// The width limit (vtkNPREdgePass::MaximumLineFraction): a line pixel's value s makes the composite
-// draw its line as wide as where s P(d) meets P's level at the full width, so a line of width
-// x < w takes s = exp(-(w^2 - x^2) / (8 sigma^2)). Below one pixel s falls linearly to the value
-// at which the anti-aliased line leaves no coverage at all.
+// The width limit's constants (vtkNPREdgePass::MaximumLineFraction, glsl/vtkNPREdgeLimitFS.glsl).
 void SetWidthLimitUniforms(vtkShaderProgram* program, double width, double fraction)
 {
   const double sigma = LineSigma(width);
@@ -128,6 +126,33 @@ void SetWidthLimitUniforms(vtkShaderProgram* program, double width, double fract
   program->SetUniformf("widthLimitVanishing", static_cast<float>(std::max(0.0, vanishing)));
   program->SetUniformi("widthLimitPixels", static_cast<int>(std::ceil(width / fraction)));
 }
+
+// A line image of the G-buffer's size, allocated once and resized with it.
+void ReadyLineTexture(
+  vtkTextureObject*& texture, vtkOpenGLRenderWindow* window, vtkTextureObject* geometry)
+{
+  const unsigned int width = geometry->GetWidth();
+  const unsigned int height = geometry->GetHeight();
+  if (!texture)
+  {
+    texture = vtkNPRNewTexture(window, vtkTextureObject::Linear, vtkTextureObject::ClampToEdge);
+    texture->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+  }
+  texture->Resize(width, height);
+}
+
+void ReleaseLineTexture(vtkTextureObject*& texture, vtkWindow* window)
+{
+  if (texture)
+  {
+    if (window)
+    {
+      texture->ReleaseGraphicsResources(window);
+    }
+    texture->Delete();
+    texture = nullptr;
+  }
+}
 }
 
 struct vtkNPREdgePass::Internals
@@ -137,7 +162,16 @@ struct vtkNPREdgePass::Internals
   vtkNPRQuadProgram Coverage;  // each type's coverage and depth, for vtkNPRSketchPass
   std::string CompositeSource;
   vtkNPRRenderTarget Target;
+  vtkNPRQuadProgram Limit; // MaximumLineFraction
   vtkTextureObject* LineTexture = nullptr;
+  vtkTextureObject* LimitedLineTexture = nullptr; // the line image the limit drew
+  bool LinesLimited = false;
+
+  // The line image the composite draws.
+  vtkTextureObject* DrawnLines() const
+  {
+    return this->LinesLimited ? this->LimitedLineTexture : this->LineTexture;
+  }
   // What the line image was computed from: the G-buffer's content and the detection settings
   // (colours, width, anti-aliasing and CoverageOnly only change the composite).
   unsigned long LineImageVersion = 0;
@@ -158,10 +192,8 @@ vtkNPREdgePass::vtkNPREdgePass()
 vtkNPREdgePass::~vtkNPREdgePass()
 {
   this->SetGBufferPass(nullptr);
-  if (this->Internal->LineTexture)
-  {
-    this->Internal->LineTexture->Delete();
-  }
+  ReleaseLineTexture(this->Internal->LineTexture, nullptr);
+  ReleaseLineTexture(this->Internal->LimitedLineTexture, nullptr);
 }
 
 const char* vtkNPREdgePass::GetEncodingName(int encoding)
@@ -236,8 +268,7 @@ std::string vtkNPREdgePass::GetDetectDefines(int encoding) const
           << "\n#define NPR_HAVE_OBJECT_IDS " << (gbuffer->GetWritesObjectIds() ? 1 : 0)
           << "\n#define NPR_HAVE_FACE_NORMALS "
           << (this->FaceCreases && gbuffer->GetWritesFaceNormals() ? 1 : 0)
-          << "\n#define NPR_CONTOUR_SIDE " << this->ContourSide << "\n#define NPR_WIDTH_LIMIT "
-          << (this->MaximumLineFraction > 0.0 && !packed ? 1 : 0) << "\n";
+          << "\n#define NPR_CONTOUR_SIDE " << this->ContourSide << "\n";
   return defines.str();
 }
 
@@ -254,46 +285,27 @@ bool vtkNPREdgePass::UpdateLineImage(const vtkRenderState* state)
     internal.WarnedAboutEncoding = true;
   }
   const std::string defines = this->GetDetectDefines(encoding);
-  // The width limit thins the line image's values by the width the composite widens them to.
+  const bool limited =
+    this->MaximumLineFraction > 0.0 && encoding != PACKED8 && encoding != PACKED16;
+  // The width limit sets the line image's values by the width the composite widens them to.
   const double lineWidth = this->GetEffectiveLineWidth(state->GetRenderer());
   std::ostringstream settings;
   settings.precision(17);
   settings << defines << this->SilhouetteThreshold << " " << this->CreaseAngle << " "
            << this->PackedThreshold << " " << this->SuggestiveContourThreshold << " "
-           << this->MaximumLineFraction << " " << lineWidth;
+           << (limited ? this->MaximumLineFraction : 0.0) << " " << (limited ? lineWidth : 0.0);
   if (internal.LineImageValid && internal.LineImageVersion == gbuffer->GetContentVersion() &&
     internal.LineImageSettings == settings.str())
   {
     return true;
   }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow());
-  vtkShaderProgram* program = internal.Detect.Ready(window, vtkNPREdgeDetectFS, defines);
-  if (!program)
+  if (!this->DetectLines(window, encoding, defines) ||
+    (limited && !this->LimitLineWidths(window, encoding, lineWidth)))
   {
-    vtkErrorMacro("the line detection shader did not compile");
     return false;
   }
-  vtkTextureObject* geometry = gbuffer->GetGeometryTexture();
-  const int width = geometry->GetWidth();
-  const int height = geometry->GetHeight();
-  if (!internal.LineTexture)
-  {
-    internal.LineTexture =
-      vtkNPRNewTexture(window, vtkTextureObject::Linear, vtkTextureObject::ClampToEdge);
-    internal.LineTexture->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
-  }
-  internal.LineTexture->Resize(width, height);
-  geometry->Activate();
-  this->SetDetectUniforms(program, encoding, lineWidth);
-  {
-    vtkNPRRenderTarget::Scope target(
-      internal.Target, window, { internal.LineTexture }, nullptr, width, height);
-    target.Clear(0.0, 0.0, 0.0, 0.0);
-    // Only where the props can be: the rest of the line image stays clear.
-    target.ScissorTo(gbuffer->GetContentRectangle());
-    internal.Detect.Render();
-  }
-  geometry->Deactivate();
+  internal.LinesLimited = limited;
   internal.LineImageValid = true;
   internal.LineImageVersion = gbuffer->GetContentVersion();
   internal.LineImageSettings = settings.str();
@@ -301,7 +313,63 @@ bool vtkNPREdgePass::UpdateLineImage(const vtkRenderState* state)
   return true;
 }
 
-void vtkNPREdgePass::SetDetectUniforms(vtkShaderProgram* program, int encoding, double lineWidth)
+bool vtkNPREdgePass::DetectLines(
+  vtkOpenGLRenderWindow* window, int encoding, const std::string& defines)
+{
+  Internals& internal = *this->Internal;
+  vtkShaderProgram* program = internal.Detect.Ready(window, vtkNPREdgeDetectFS, defines);
+  if (!program)
+  {
+    vtkErrorMacro("the line detection shader did not compile");
+    return false;
+  }
+  vtkTextureObject* geometry = this->GBufferPass->GetGeometryTexture();
+  ReadyLineTexture(internal.LineTexture, window, geometry);
+  geometry->Activate();
+  this->SetDetectUniforms(program, encoding);
+  this->DrawLineImage(window, internal.LineTexture, internal.Detect);
+  geometry->Deactivate();
+  return true;
+}
+
+bool vtkNPREdgePass::LimitLineWidths(vtkOpenGLRenderWindow* window, int encoding, double lineWidth)
+{
+  Internals& internal = *this->Internal;
+  vtkNPRGBufferPass* gbuffer = this->GBufferPass;
+  std::ostringstream defines;
+  defines << "#define NPR_HAVE_OBJECT_IDS " << (gbuffer->GetWritesObjectIds() ? 1 : 0)
+          << "\n#define NPR_ID_CHANNEL " << (encoding == HALF ? 3 : 2) << "\n";
+  vtkShaderProgram* program = internal.Limit.Ready(window, vtkNPREdgeLimitFS, defines.str());
+  if (!program)
+  {
+    vtkErrorMacro("the line width limit's shader did not compile");
+    return false;
+  }
+  vtkTextureObject* geometry = gbuffer->GetGeometryTexture();
+  ReadyLineTexture(internal.LimitedLineTexture, window, geometry);
+  geometry->Activate();
+  internal.LineTexture->Activate();
+  program->SetUniformi("geometryTexture", geometry->GetTextureUnit());
+  program->SetUniformi("lineTexture", internal.LineTexture->GetTextureUnit());
+  SetWidthLimitUniforms(program, lineWidth, this->MaximumLineFraction);
+  this->DrawLineImage(window, internal.LimitedLineTexture, internal.Limit);
+  internal.LineTexture->Deactivate();
+  geometry->Deactivate();
+  return true;
+}
+
+void vtkNPREdgePass::DrawLineImage(
+  vtkOpenGLRenderWindow* window, vtkTextureObject* image, vtkNPRQuadProgram& program)
+{
+  vtkNPRRenderTarget::Scope target(this->Internal->Target, window, { image }, nullptr,
+    static_cast<int>(image->GetWidth()), static_cast<int>(image->GetHeight()));
+  target.Clear(0.0, 0.0, 0.0, 0.0);
+  // Only where the props can be: the rest of the line image stays clear.
+  target.ScissorTo(this->GBufferPass->GetContentRectangle());
+  program.Render();
+}
+
+void vtkNPREdgePass::SetDetectUniforms(vtkShaderProgram* program, int encoding)
 {
   vtkNPRGBufferPass* gbuffer = this->GBufferPass;
   program->SetUniformi("geometryTexture", gbuffer->GetGeometryTexture()->GetTextureUnit());
@@ -330,10 +398,6 @@ void vtkNPREdgePass::SetDetectUniforms(vtkShaderProgram* program, int encoding, 
     program->SetUniform3f("viewPixelStepX", pixelStepX);
     program->SetUniform3f("viewPixelStepY", pixelStepY);
   }
-  if (this->MaximumLineFraction > 0.0)
-  {
-    SetWidthLimitUniforms(program, lineWidth, this->MaximumLineFraction);
-  }
 }
 
 std::string vtkNPREdgePass::GetCompositeDefines(vtkRenderer* renderer, int output)
@@ -346,7 +410,8 @@ std::string vtkNPREdgePass::GetCompositeDefines(vtkRenderer* renderer, int outpu
           << internal.Filter.Radius + 1 << "\n#define NPR_ANTIALIAS "
           << (this->AntiAliasing ? 1 : 0) << "\n#define NPR_OUTPUT " << output
           << "\n#define NPR_REMAPPED_DEPTH " << (this->GBufferPass->GetDepthRemapped() ? 1 : 0)
-          << "\n";
+          << "\n"
+          << this->GetLineColorDefines();
   return defines.str();
 }
 
@@ -377,6 +442,7 @@ std::string vtkNPREdgePass::GetCompositeKey(vtkRenderer* renderer)
   {
     key << " " << colorValue[0] << " " << colorValue[1] << " " << colorValue[2];
   }
+  key << " " << this->SurfaceLineShade;
   return key.str();
 }
 
@@ -415,7 +481,7 @@ bool vtkNPREdgePass::DrawLines(const vtkRenderState* state, const int origin[2],
   depth->Activate();
   if (lines)
   {
-    internal.LineTexture->Activate();
+    internal.DrawnLines()->Activate();
   }
   this->SetCompositeUniforms(program, origin);
   composite.Render();
@@ -423,7 +489,7 @@ bool vtkNPREdgePass::DrawLines(const vtkRenderState* state, const int origin[2],
   depth->Deactivate();
   if (lines)
   {
-    internal.LineTexture->Deactivate();
+    internal.DrawnLines()->Deactivate();
   }
   return true;
 }
@@ -444,18 +510,33 @@ void vtkNPREdgePass::SetCompositeUniforms(vtkShaderProgram* program, const int o
     return;
   }
   const LineFilter& filter = internal.Filter;
-  program->SetUniformi("lineTexture", internal.LineTexture->GetTextureUnit());
+  program->SetUniformi("lineTexture", internal.DrawnLines()->GetTextureUnit());
   program->SetUniform3fv("taps", static_cast<int>(filter.Taps.size() / 3),
     reinterpret_cast<const float(*)[3]>(filter.Taps.data()));
-  const float texelSize[2] = { 1.0f / internal.LineTexture->GetWidth(),
-    1.0f / internal.LineTexture->GetHeight() };
+  const float texelSize[2] = { 1.0f / internal.DrawnLines()->GetWidth(),
+    1.0f / internal.DrawnLines()->GetHeight() };
   program->SetUniform2f("texelSize", texelSize);
   program->SetUniformf("coverageLevel", filter.CoverageLevel);
   program->SetUniformf("coverageSlope", filter.CoverageSlope);
+  this->SetLineColorUniforms(program);
+}
+
+std::string vtkNPREdgePass::GetLineColorDefines() const
+{
+  return std::string("#define NPR_SURFACE_SHADE ") + (this->SurfaceLineShade > 0.0 ? "1" : "0") +
+    "\n";
+}
+
+void vtkNPREdgePass::SetLineColorUniforms(vtkShaderProgram* program) const
+{
   program->SetUniform3f("silhouetteColor", this->SilhouetteColor);
   program->SetUniform3f("creaseColor", this->CreaseColor);
   program->SetUniform3f("contourColor", this->ContourColor);
   program->SetUniform3f("suggestiveColor", this->SuggestiveContourColor);
+  if (this->SurfaceLineShade > 0.0)
+  {
+    program->SetUniformf("surfaceLineShade", static_cast<float>(this->SurfaceLineShade));
+  }
 }
 
 void vtkNPREdgePass::ReleaseGraphicsResources(vtkWindow* window)
@@ -465,12 +546,9 @@ void vtkNPREdgePass::ReleaseGraphicsResources(vtkWindow* window)
   internal.Detect.Release(window);
   internal.Composite.Release(window);
   internal.Coverage.Release(window);
-  if (internal.LineTexture)
-  {
-    internal.LineTexture->ReleaseGraphicsResources(window);
-    internal.LineTexture->Delete();
-    internal.LineTexture = nullptr;
-  }
+  internal.Limit.Release(window);
+  ReleaseLineTexture(internal.LineTexture, window);
+  ReleaseLineTexture(internal.LimitedLineTexture, window);
   internal.Target.ReleaseGraphicsResources(window);
   internal.LineImageValid = false;
 }
@@ -494,6 +572,7 @@ void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "LineWidth: " << this->LineWidth << "\n";
   os << indent << "MaximumLineFraction: " << this->MaximumLineFraction << "\n";
+  os << indent << "SurfaceLineShade: " << this->SurfaceLineShade << "\n";
   os << indent << "Encoding: " << GetEncodingName(this->Encoding) << " packed threshold "
      << this->PackedThreshold << " blur " << this->PackedBlur << "\n";
   os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";

@@ -60,6 +60,7 @@
  * the width gives each pixel's coverage. The cost is one pass of 5 texel fetches per pixel to find
  * line pixels (skipped while the G-buffer and settings are unchanged) and one composite pass of
  * (taps + 2) fetches, taps = 4 for widths up to 2.5 pixels, 9 up to 4.5, 25 up to 8.5.
+ * MaximumLineFraction adds a pass over the line image between the two.
  *
  * @sa vtkNPRGBufferPass vtkNPRPass
  */
@@ -73,8 +74,11 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
+class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkShaderProgram;
+class vtkTextureObject;
+struct vtkNPRQuadProgram;
 
 class VTKNPRPASSES_EXPORT vtkNPREdgePass : public vtkNPRImageEffectPass
 {
@@ -247,16 +251,29 @@ public:
 
   ///@{
   /**
+   * Draw the lines over a surface in a darker shade of the surface's own colour: its colour times
+   * this factor, clamped to [0, 1] (default 0: the lines take their own colours, SilhouetteColor
+   * and the others). With colour-mapped data (stream tubes, isosurfaces coloured by a scalar) the
+   * lines then keep the data's hue where they cover it; 0.5 is a good start. Line parts reaching
+   * past a surface take the nearest surface's colour; in the sketch style, the lines on the paper
+   * keep their own colours.
+   */
+  vtkSetClampMacro(SurfaceLineShade, double, 0.0, 1.0);
+  vtkGetMacro(SurfaceLineShade, double);
+  ///@}
+
+  ///@{
+  /**
    * The largest share of an object's width that each of its lines may take, clamped to [0, 1]
    * (default 0: no limit; 0.1 suits flow visualisations). On an object narrower than the line
    * width divided by this fraction (15 pixels at 0.1 and the default width: a stream tube, a
    * distant wire) the lines are drawn thinner and lighter, down to nothing on an object one pixel
    * wide, and only its outline is drawn (silhouettes, or else contours; one line per pixel), so
-   * that the colours mapped onto it stay visible. The width is the object's shortest chord through
-   * the line pixel along the axes and diagonals, up to a depth step, another object or the
-   * background. Off by default because near the silhouettes of curved surfaces the depth turns as
-   * fast as at a step, which ends the chords early and thins some lines of CAD parts and scans.
-   * Not with the packed encodings.
+   * that the colours mapped onto it stay visible. The object's width at a line pixel is the second
+   * shortest of its chords along the axes and diagonals, each up to the next outline, another
+   * object or the background; creases do not end a chord. It costs a pass over the line image.
+   * Off by default: near the tip of an acute corner every chord is short, so corners of CAD parts
+   * get lighter. Not with the packed encodings. See SurfaceLineShade.
    */
   vtkSetClampMacro(MaximumLineFraction, double, 0.0, 1.0);
   vtkGetMacro(MaximumLineFraction, double);
@@ -279,6 +296,15 @@ public:
   vtkSetMacro(CoverageOnly, bool);
   vtkGetMacro(CoverageOnly, bool);
   vtkBooleanMacro(CoverageOnly, bool);
+  ///@}
+
+  ///@{
+  /**
+   * For passes built on this one (vtkNPRSketchPass), whose shaders include vtkNPRLineColor.glsl:
+   * its defines, and the line colours' uniforms.
+   */
+  std::string GetLineColorDefines() const;
+  void SetLineColorUniforms(vtkShaderProgram* program) const;
   ///@}
 
   /**
@@ -342,6 +368,7 @@ protected:
   double ContourColor[3] = { 0.0, 0.0, 0.0 };
   double LineWidth = 1.5;
   double MaximumLineFraction = 0.0;
+  double SurfaceLineShade = 0.0;
   int Encoding = FLOAT;
   double PackedThreshold = 0.1;
   bool PackedBlur = false;
@@ -356,7 +383,12 @@ private:
   // The one-pixel line image, recomputed only when the G-buffer or the detection settings changed.
   std::string GetDetectDefines(int encoding) const;
   bool UpdateLineImage(const vtkRenderState* state);
-  void SetDetectUniforms(vtkShaderProgram* program, int encoding, double lineWidth);
+  bool DetectLines(vtkOpenGLRenderWindow* window, int encoding, const std::string& defines);
+  void SetDetectUniforms(vtkShaderProgram* program, int encoding);
+  // MaximumLineFraction: the detected lines thinned on narrow objects, into a second line image.
+  bool LimitLineWidths(vtkOpenGLRenderWindow* window, int encoding, double lineWidth);
+  void DrawLineImage(
+    vtkOpenGLRenderWindow* window, vtkTextureObject* image, vtkNPRQuadProgram& program);
   // The composite of the lines (and colour and depth, or the mask, or the coverage).
   std::string GetCompositeDefines(vtkRenderer* renderer, int output);
   bool DrawLines(const vtkRenderState* state, const int origin[2], int output);

@@ -220,7 +220,8 @@ std::string vtkNPRSketchPass::GetSketchDefines() const
   std::ostringstream defines;
   defines << "#define NPR_PAPER " << (this->Paper ? 1 : 0) << "\n#define NPR_REMAPPED_DEPTH "
           << (this->EdgePass->GetGBufferPass()->GetDepthRemapped() ? 1 : 0)
-          << "\n#define NPR_SURFACE_NOISE " << (this->NoiseSpace == SURFACE ? 1 : 0) << "\n";
+          << "\n#define NPR_SURFACE_NOISE " << (this->NoiseSpace == SURFACE ? 1 : 0) << "\n"
+          << this->EdgePass->GetLineColorDefines();
   return defines.str();
 }
 
@@ -328,9 +329,7 @@ void vtkNPRSketchPass::SetSketchUniforms(
     program->SetUniform4f(which == 0 ? "edgeDisplacement" : "surfaceDisplacement", displacement);
   }
   program->SetUniform3f("paperColor", this->PaperColor);
-  program->SetUniform3f("silhouetteColor", this->EdgePass->GetSilhouetteColor());
-  program->SetUniform3f("creaseColor", this->EdgePass->GetCreaseColor());
-  program->SetUniform3f("contourColor", this->EdgePass->GetContourColor());
+  this->EdgePass->SetLineColorUniforms(program);
   program->SetUniform2i("viewportOrigin", origin);
   if (gbuffer->GetDepthRemapped())
   {

@@ -124,93 +124,6 @@ vec3 nprUnpackNormal(float code)
   return nprUnpackOctahedral(vec2(floor(code / 4096.0), mod(code, 4096.0)) / 4095.0 * 2.0 - 1.0);
 }
 
-#if NPR_WIDTH_LIMIT
-// vtkNPREdgePass::MaximumLineFraction: lines no wider than a fraction of the object they lie on.
-uniform float widthLimitWidth;     // the line width the composite draws, pixels
-uniform float widthLimitFraction;  // the largest share of the object's width one line may take
-uniform float widthLimitExponent;  // 1 / (8 sigma^2) of the composite's Gaussian
-uniform float widthLimitVanishing; // the value at which a line leaves no coverage
-uniform int widthLimitPixels;      // objects this wide or wider keep the full width
-
-// How many pixels on from p along dir the object of p continues (at most limit): covered, of the
-// same id, up to a depth step, taken as a change of the affine depth's slope by more than twice
-// the silhouette threshold (from no slope at the first pixel: p may lie at the object's far border).
-int nprObjectRun(ivec2 p, ivec2 dir, ivec2 size, vec4 g0, int limit)
-{
-  float aPrevious = nprAffineDepth(g0.x, g0.x);
-  float stepPrevious = 0.0;
-  int run = 0;
-  for (int i = 1; i <= limit; ++i)
-  {
-    ivec2 q = p + i * dir;
-    if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size)))
-    {
-      break;
-    }
-    vec4 g = texelFetch(geometryTexture, q, 0);
-#if NPR_HAVE_OBJECT_IDS
-    bool sameObject = g.x > 0.0 && NPR_ID(g) == NPR_ID(g0);
-#else
-    bool sameObject = g.x > 0.0;
-#endif
-    float a = nprAffineDepth(g.x, g0.x);
-    float step = a - aPrevious;
-    if (!sameObject || abs(step - stepPrevious) > 2.0 * silhouetteThreshold * abs(aPrevious))
-    {
-      break;
-    }
-    aPrevious = a;
-    stepPrevious = step;
-    run = i;
-  }
-  return run;
-}
-
-// The object's width through p in pixels, as far as widthLimitPixels: its shortest chord through p
-// along the two axes and the two diagonals (1 to 1.08 times the width of a band at any angle).
-float nprObjectWidth(ivec2 p, ivec2 size, vec4 g0)
-{
-  const ivec2 directions[4] = ivec2[4](ivec2(1, 0), ivec2(0, 1), ivec2(1, 1), ivec2(1, -1));
-  const float lengths[4] = float[4](1.0, 1.0, 1.41421356, 1.41421356);
-  float width = float(widthLimitPixels);
-  for (int k = 0; k < 4; ++k)
-  {
-    int limit = int(ceil(width / lengths[k])) - 1;
-    int forward = nprObjectRun(p, directions[k], size, g0, limit);
-    int backward = nprObjectRun(p, -directions[k], size, g0, limit - forward);
-    width = min(width, float(forward + backward + 1) * lengths[k]);
-  }
-  return width;
-}
-
-// Where an object is too narrow for full-width lines, only its outline, one line per pixel: lines
-// of several types on one pixel darken it together far more than each one's width allows, and
-// creases and suggestive contours inside a thin object crowd its outline (on a stream tube a few
-// pixels wide the shading normals turn by more than the crease angle from one pixel to the next).
-vec4 nprOutlineOnly(vec4 lines)
-{
-  return lines.r > 0.0 ? vec4(lines.r, 0.0, 0.0, 0.0) : vec4(0.0, 0.0, lines.b, 0.0);
-}
-
-// The factor on a line pixel's value that makes the composite draw its line
-// min(widthLimitWidth, widthLimitFraction x object width) wide.
-float nprWidthLimit(ivec2 p, ivec2 size, vec4 g0)
-{
-  float objectWidth = nprObjectWidth(p, size, g0);
-  float width = min(widthLimitWidth, widthLimitFraction * objectWidth);
-  if (width >= widthLimitWidth)
-  {
-    return 1.0;
-  }
-  float w2 = widthLimitWidth * widthLimitWidth;
-  // Down to one pixel the line narrows; below, its value falls to nothing as its width does.
-  float onePixel = min(1.0, widthLimitWidth);
-  float atOnePixel = exp(-(w2 - onePixel * onePixel) * widthLimitExponent);
-  return width >= onePixel ? exp(-(w2 - width * width) * widthLimitExponent)
-                           : mix(widthLimitVanishing, atOnePixel, width / onePixel);
-}
-#endif
-
 #if NPR_CREASES
 // Whether a crease runs between pixel p and its neighbour p + d that lies farther by more than a
 // step's margin, so that the neighbour leaves the line out as a step's far side (main, below).
@@ -456,17 +369,6 @@ void main()
     }
   }
 #endif
-  vec4 lines = vec4(silhouette, crease, contour, suggestive);
-#if NPR_WIDTH_LIMIT
-  if (covered0 && any(greaterThan(lines, vec4(0.0))))
-  {
-    float limit = nprWidthLimit(p, size, g0);
-    if (limit < 1.0)
-    {
-      lines = nprOutlineOnly(lines) * limit;
-    }
-  }
-#endif
-  gl_FragData[0] = lines;
+  gl_FragData[0] = vec4(silhouette, crease, contour, suggestive);
 }
 #endif

@@ -119,7 +119,8 @@ void main()
   else
   {
 #if NPR_PAPER
-    gl_FragData[0] = vec4(nprLinesOver(paperColor, coverage), 1.0);
+    // On the paper the lines keep their own colours.
+    gl_FragData[0] = vec4(nprLinesOver(paperColor, vec4(coverage, 0.0), nprSetLineColors()), 1.0);
 #else
     if (onLine)
     {

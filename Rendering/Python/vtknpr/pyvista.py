@@ -35,6 +35,8 @@ SETTINGS = {
     "line_color": "colour of every line (silhouettes, creases, contours, ink)",
     "max_line_fraction": "largest share of an object's width one of its lines may take, 0..1"
                          " (0: no limit)",
+    "surface_line_shade": "lines over a surface in its own colour times this, 0..1 (0: the lines'"
+                          " own colours)",
     "silhouette_color": "colour of the silhouette lines",
     "crease_color": "colour of the crease lines",
     "contour_color": "colour of the object contour lines",
@@ -82,6 +84,7 @@ def _noise_space(value):
 _SETTERS = {
     "line_width": (float, [("edges", "SetLineWidth"), ("ink", "SetLineWidth")]),
     "max_line_fraction": (float, [("edges", "SetMaximumLineFraction")]),
+    "surface_line_shade": (float, [("edges", "SetSurfaceLineShade")]),
     "line_color": (_color, [("edges", "SetSilhouetteColor"), ("edges", "SetCreaseColor"),
                             ("edges", "SetContourColor"), ("edges", "SetSuggestiveContourColor"),
                             ("ink", "SetInkColor")]),
