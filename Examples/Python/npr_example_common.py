@@ -1,13 +1,15 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
 # SPDX-License-Identifier: BSD-3-Clause
-"""What the single-model Python examples (npr_edges.py, npr_toon_sketch.py) share: their argument
-types, the model with npr-render's normals and its renderer, and the rendered frame read back."""
+"""What the Python examples share: the single-model ones' (npr_edges.py, npr_toon_sketch.py)
+argument types, the model with npr-render's normals and its renderer; and for all, the rendered
+frame read back, and one frame of a scene in a pass (npr_scientific_scene.py, npr_stream_tubes.py)."""
 import sys
 
 import vtknpr  # noqa: F401  (first: it imports the VTK modules it needs by itself)
-from vtknpr import vtkNPRModelReader
+from vtknpr import vtkNPRModelReader, vtkNPRRenderWindowFactory
 from vtkmodules.vtkCommonCore import vtkObject
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+from vtkmodules.vtkFiltersCore import vtkImageAppend, vtkPolyDataNormals
+from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
                                          vtkWindowToImageFilter)
 
@@ -73,6 +75,49 @@ def grab(window):
     grabber.ShouldRerenderOff()  # the frame as rendered: no extra render
     grabber.Update()
     return grabber.GetOutput()  # a new output per grabber: no copy needed
+
+
+def headless_window(width, height, program):
+    """A headless render window of that size, multisampling off; exits with an error after the
+    program's name when there is none."""
+    window = vtkNPRRenderWindowFactory.CreateRenderWindow()
+    if window is None:
+        sys.exit(program + ": error: no headless render window")
+    window.SetSize(width, height)
+    window.SetMultiSamples(0)
+    return window
+
+
+def write_rows(rows, file_name):
+    """Stacks the rows (lists of images of one height, the first row at the top) into one PNG."""
+    stacked = vtkImageAppend()
+    stacked.SetAppendAxis(1)
+    for images in reversed(rows):  # an image's rows run bottom up
+        row = vtkImageAppend()
+        row.SetAppendAxis(0)
+        for image in images:
+            row.AddInputData(image)
+        row.Update()
+        stacked.AddInputData(row.GetOutput())
+    stacked.Update()
+    writer = vtkPNGWriter()
+    writer.SetFileName(file_name)
+    writer.SetInputData(stacked.GetOutput())
+    writer.Write()
+
+
+def render_in_pass(window, renderer, npr):
+    """The renderer's image (RGB) in one frame drawn by the pass npr: the renderer is in the
+    window for that frame only, and the pass lets go of its resources after it, so that a scene
+    can be drawn again in another pass."""
+    renderer.SetPass(npr)
+    window.AddRenderer(renderer)
+    window.Render()
+    image = grab(window)
+    window.RemoveRenderer(renderer)
+    renderer.SetPass(None)
+    npr.ReleaseGraphicsResources(window)
+    return image
 
 
 def view_from(renderer, azimuth, elevation):

@@ -20,19 +20,19 @@ import argparse
 import sys
 
 import vtknpr  # noqa: F401  (first: it imports the VTK modules it needs by itself)
-from vtknpr import vtkNPRPass, vtkNPRRenderWindowFactory
+from vtknpr import vtkNPRPass
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
 from vtkmodules.vtkCommonCore import vtkLookupTable
-from vtkmodules.vtkFiltersCore import vtkContourFilter, vtkImageAppend
+from vtkmodules.vtkFiltersCore import vtkContourFilter
 from vtkmodules.vtkFiltersGeometry import vtkImageDataGeometryFilter
 from vtkmodules.vtkFiltersSources import vtkSuperquadricSource
 from vtkmodules.vtkImagingCore import vtkExtractVOI, vtkRTAnalyticSource
-from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingAnnotation import vtkCubeAxesActor, vtkScalarBarActor
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkTextActor
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 import vtkmodules.vtkRenderingFreeType  # noqa: F401  (the axes' label text)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL object factory overrides)
+
+from npr_example_common import headless_window, render_in_pass, write_rows
 
 try:  # VTK 9.1 to 9.3 keep it in FiltersModeling; later releases in FiltersCore
     from vtkmodules.vtkFiltersModeling import vtkOutlineFilter
@@ -170,17 +170,7 @@ def render(window, renderer, style):
     """The renderer's image in a style (vtkImageData, RGB)."""
     npr = vtkNPRPass()
     npr.SetStyle(vtkNPRPass.GetStyleFromName(style))
-    renderer.SetPass(npr)
-    window.AddRenderer(renderer)
-    window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    window.RemoveRenderer(renderer)
-    renderer.SetPass(None)
-    npr.ReleaseGraphicsResources(window)
-    return grab.GetOutput()
+    return render_in_pass(window, renderer, npr)
 
 
 def count(image, test):
@@ -193,31 +183,18 @@ def main():
     args = parse_arguments()
     messages = vtkStringOutputWindow()
     vtkOutputWindow.SetInstance(messages)
-    window = vtkNPRRenderWindowFactory.CreateRenderWindow()
-    if window is None:
-        sys.exit("npr_scientific_scene: error: no headless render window")
-    window.SetSize(args.tile, args.tile * 3 // 4)
+    window = headless_window(args.tile, args.tile * 3 // 4, "npr_scientific_scene")
 
-    rows = vtkImageAppend()
-    rows.SetAppendAxis(1)
+    rows = []
     black, bright = {}, {}
-    for style in reversed(STYLES):  # the image's rows run bottom up
-        row = vtkImageAppend()
-        row.SetAppendAxis(0)
+    for style in STYLES:
         iso = render(window, isosurface_scene(), style)
         axes = render(window, axes_scene(), style)
         # The outline alone, for its width: every style must draw it as VTK does.
         black[style] = count(render(window, isosurface_scene(False), style), lambda p: max(p) < 100)
         bright[style] = count(axes, lambda p: min(p) > 200)
-        row.AddInputData(iso)
-        row.AddInputData(axes)
-        row.Update()
-        rows.AddInputData(row.GetOutput())
-    rows.Update()
-    writer = vtkPNGWriter()
-    writer.SetFileName(args.output)
-    writer.SetInputData(rows.GetOutput())
-    writer.Write()
+        rows.append([iso, axes])
+    write_rows(rows, args.output)
     vtkOutputWindow.SetInstance(None)
     print("npr_scientific_scene: wrote %s (%d styles x 2 scenes)" % (args.output, len(STYLES)))
 

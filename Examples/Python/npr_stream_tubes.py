@@ -28,15 +28,15 @@ import math
 import sys
 
 import vtknpr  # noqa: F401  (first: it imports the VTK modules it needs by itself)
-from vtknpr import vtkNPRPass, vtkNPRRenderWindowFactory
+from vtknpr import vtkNPRPass
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
-from vtkmodules.vtkFiltersCore import vtkArrayCalculator, vtkImageAppend, vtkTubeFilter
+from vtkmodules.vtkFiltersCore import vtkArrayCalculator, vtkTubeFilter
 from vtkmodules.vtkFiltersFlowPaths import vtkStreamTracer
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL object factory overrides)
+
+from npr_example_common import headless_window, render_in_pass, write_rows
 
 # The settings that keep the data visible: vtkNPREdgePass's MaximumLineFraction and
 # SurfaceLineShade.
@@ -130,17 +130,7 @@ def render(window, renderer, style, fraction=0.0, shade=0.0):
     npr.SetStyle(vtkNPRPass.GetStyleFromName(style))
     npr.GetEdgePass().SetMaximumLineFraction(fraction)
     npr.GetEdgePass().SetSurfaceLineShade(shade)
-    renderer.SetPass(npr)
-    window.AddRenderer(renderer)
-    window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    window.RemoveRenderer(renderer)
-    renderer.SetPass(None)
-    npr.ReleaseGraphicsResources(window)
-    return grab.GetOutput()
+    return render_in_pass(window, renderer, npr)
 
 
 def line_pixels(shaded, styled):
@@ -166,31 +156,18 @@ def line_pixels(shaded, styled):
 def main():
     args = parse_arguments()
     width, height = (int(v) for v in args.size.split("x"))
-    window = vtkNPRRenderWindowFactory.CreateRenderWindow()
-    if window is None:
-        sys.exit("npr_stream_tubes: error: no headless render window")
-    window.SetSize(width, height)
-    window.SetMultiSamples(0)
-
-    rows = vtkImageAppend()
-    rows.SetAppendAxis(1)
+    window = headless_window(width, height, "npr_stream_tubes")
     shares = {}
     scenes = {"few": stream_tubes(False), "crowd": stream_tubes(True)}
-    for setting in reversed(RENDERINGS):  # the image's rows run bottom up
-        row = vtkImageAppend()
-        row.SetAppendAxis(0)
+    rows = []
+    for setting in RENDERINGS:
+        rows.append([])
         for scene, renderer in scenes.items():
             image = render(window, renderer, *setting)
             shaded = render(window, renderer, "shaded")
             shares[setting + (scene,)] = line_pixels(shaded, image)
-            row.AddInputData(image)
-        row.Update()
-        rows.AddInputData(row.GetOutput())
-    rows.Update()
-    writer = vtkPNGWriter()
-    writer.SetFileName(args.output)
-    writer.SetInputData(rows.GetOutput())
-    writer.Write()
+            rows[-1].append(image)
+    write_rows(rows, args.output)
     print("npr_stream_tubes: wrote %s (%d renderings x 2 scenes)" % (args.output, len(RENDERINGS)))
     return check(shares) if args.check else 0
 
