@@ -38,3 +38,8 @@ render colors.png Testing/Data/bunny.ply Testing/Data/rotor.ply --style edges --
 
 # Suggestive contours, red, with silhouettes and creases.
 render suggestive.png Testing/Data/bunny.ply --style edges --size 480x360 --lines silhouettes,creases,suggestive --suggestive-color 0.85,0,0
+
+# Stream tubes coloured by a scalar (Lines on thin objects): a Python example, with the wrapped
+# modules of the same build.
+PYTHONPATH="$(dirname "$npr_render")/../lib/python3/dist-packages" /usr/bin/python3 \
+  Examples/Python/npr_stream_tubes.py --size 320x240 -o "$out/stream_tubes.png"
