@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cctype>
 #include <iterator>
+#include <utility>
 #include <vector>
 
 const char* const nprPassOptionsHelp = R"(Style:
@@ -30,6 +31,13 @@ Lines (--style edges, toon+edges, sketch and drawing):
   --suggestive-threshold X strength of a suggestive contour, 0.0001..1 (default 0.01)
   --contour-side SIDE      inside, outside or both (default inside)
   --line-width PX          line width in pixels, 0.5..16 (default 1.5)
+  --silhouette-width PX    width of the silhouettes (and the drawing's boundaries), 0..16
+                           (default 0; 0 is --line-width)
+  --crease-width PX        width of the creases (and the drawing's non-manifold edges), 0..16
+                           (default 0; 0 is --line-width)
+  --contour-width PX       width of the object contours, 0..16 (default 0; 0 is --line-width)
+  --suggestive-width PX    width of the suggestive contours, 0..16 (default 0; 0 is
+                           --line-width)
   --max-line-fraction F    largest share of an object's width one of its lines may take,
                            0..1 (default 0; 0 is no limit, 0.1 suits stream tubes)
   --surface-line-shade F   lines over a surface in its own colour times F, 0..1 (default 0;
@@ -104,9 +112,25 @@ std::string nprStyleNames()
   return names;
 }
 
+// The flags of each line kind's width and the setting each sets.
+const std::pair<const char*, double nprPassSettings::*> KindWidthFlags[] = {
+  { "--silhouette-width", &nprPassSettings::SilhouetteLineWidth },
+  { "--crease-width", &nprPassSettings::CreaseLineWidth },
+  { "--contour-width", &nprPassSettings::ContourLineWidth },
+  { "--suggestive-width", &nprPassSettings::SuggestiveContourLineWidth },
+};
+
 bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
 {
   const std::string& arg = arguments.Current();
+  for (const auto& flag : KindWidthFlags)
+  {
+    if (arg == flag.first)
+    {
+      pass.*flag.second = nprParseRange(arg, arguments.Value(), 0.0, 16.0);
+      return true;
+    }
+  }
   if (arg == "--style")
   {
     pass.Style = nprStyleFromText(arg, arguments.Value());
@@ -306,6 +330,8 @@ const FlagScope FlagScopes[] = { { "--lines", Strokes }, { "--crease-angle", Str
   { "--contour-color", ImageLines }, { "--no-antialias", ImageLines }, { "--encoding", ImageLines },
   { "--packed-threshold", ImageLines }, { "--packed-blur", ImageLines },
   { "--silhouette-color", Strokes }, { "--crease-color", Strokes },
+  { "--silhouette-width", Strokes }, { "--crease-width", Strokes },
+  { "--contour-width", ImageLines }, { "--suggestive-width", ImageLines },
   { "--line-width", Strokes | StyleBit(vtkNPRPass::INKED) },
   { "--line-color", Strokes | StyleBit(vtkNPRPass::INKED) }, { "--toon-bands", Toon },
   { "--toon-per-vertex", Toon }, { "--sketch-toon", StyleBit(vtkNPRPass::SKETCH) },

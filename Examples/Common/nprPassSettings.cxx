@@ -28,6 +28,10 @@ void nprApplyPassSettings(vtkNPRPass* pass, const nprPassSettings& settings)
   edges->SetCreaseAngle(settings.CreaseAngle);
   edges->SetContourSide(settings.ContourSide);
   edges->SetLineWidth(settings.LineWidth);
+  edges->SetSilhouetteLineWidth(settings.SilhouetteLineWidth);
+  edges->SetCreaseLineWidth(settings.CreaseLineWidth);
+  edges->SetContourLineWidth(settings.ContourLineWidth);
+  edges->SetSuggestiveContourLineWidth(settings.SuggestiveContourLineWidth);
   edges->SetMaximumLineFraction(settings.MaximumLineFraction);
   edges->SetSurfaceLineShade(settings.SurfaceLineShade);
   edges->SetSilhouetteColor(settings.SilhouetteColor);

@@ -29,6 +29,11 @@ struct nprPassSettings
   double CreaseAngle = 30.0;
   int ContourSide = vtkNPREdgePass::INSIDE;
   double LineWidth = 1.5;
+  // Each kind's width (0: LineWidth).
+  double SilhouetteLineWidth = 0.0;
+  double CreaseLineWidth = 0.0;
+  double ContourLineWidth = 0.0;
+  double SuggestiveContourLineWidth = 0.0;
   double MaximumLineFraction = 0.0;
   double SurfaceLineShade = 0.0;
   double SilhouetteColor[3] = { 0.0, 0.0, 0.0 };

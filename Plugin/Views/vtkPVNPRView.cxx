@@ -76,8 +76,12 @@ vtkPVNPRViewForward(FaceCreases, bool, GetEdgePass(), SetFaceCreases) vtkPVNPRVi
     CreaseColor, GetEdgePass(), SetCreaseColor) vtkPVNPRViewForward(Contours, bool, GetEdgePass(),
     SetContours) vtkPVNPRViewForward(ContourSide, int, GetEdgePass(), SetContourSide)
     vtkPVNPRViewForwardColor(ContourColor, GetEdgePass(), SetContourColor) vtkPVNPRViewForward(
-      LineWidth, double, GetEdgePass(), SetLineWidth) vtkPVNPRViewForward(MaximumLineFraction,
-      double, GetEdgePass(), SetMaximumLineFraction) vtkPVNPRViewForward(SurfaceLineShade, double,
+      LineWidth, double, GetEdgePass(), SetLineWidth) vtkPVNPRViewForward(SilhouetteLineWidth,
+      double, GetEdgePass(), SetSilhouetteLineWidth) vtkPVNPRViewForward(CreaseLineWidth, double,
+      GetEdgePass(), SetCreaseLineWidth) vtkPVNPRViewForward(ContourLineWidth, double,
+      GetEdgePass(), SetContourLineWidth) vtkPVNPRViewForward(SuggestiveContourLineWidth, double,
+      GetEdgePass(), SetSuggestiveContourLineWidth) vtkPVNPRViewForward(MaximumLineFraction, double,
+      GetEdgePass(), SetMaximumLineFraction) vtkPVNPRViewForward(SurfaceLineShade, double,
       GetEdgePass(), SetSurfaceLineShade) vtkPVNPRViewForward(LineAntiAliasing, bool, GetEdgePass(),
       SetAntiAliasing) vtkPVNPRViewForward(LineEncoding, int, GetEdgePass(), SetEncoding)
       vtkPVNPRViewForward(PackedThreshold, double, GetEdgePass(), SetPackedThreshold)

@@ -68,6 +68,10 @@ public:
   void SetContourSide(int side);
   void SetContourColor(double r, double g, double b);
   void SetLineWidth(double width);
+  void SetSilhouetteLineWidth(double width);
+  void SetCreaseLineWidth(double width);
+  void SetContourLineWidth(double width);
+  void SetSuggestiveContourLineWidth(double width);
   void SetMaximumLineFraction(double fraction);
   void SetSurfaceLineShade(double shade);
   void SetLineAntiAliasing(bool on);

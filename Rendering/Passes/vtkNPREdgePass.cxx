@@ -39,11 +39,11 @@ double LineSigma(double width)
   return std::max(0.6, 0.3 * width);
 }
 
-// The slope of the coverage mapping in units of its level: one pixel of anti-aliasing, and none
-// where there is no line at all (0.5 - level / slope < 0).
-double CoverageSlopeOverLevel(double width)
+// The slope of the coverage mapping of a line of this width, filtered with the Gaussian of
+// standard deviation sigma, in units of its level: one pixel of anti-aliasing, and none where
+// there is no line at all (0.5 - level / slope < 0).
+double CoverageSlopeOverLevel(double width, double sigma)
 {
-  const double sigma = LineSigma(width);
   return std::min(0.5 * width / (sigma * sigma), 1.95);
 }
 
@@ -52,17 +52,20 @@ struct LineFilter
 {
   std::vector<float> Taps; // x, y, weight
   int Radius = 1;          // texels
-  float CoverageLevel = 0.5f;
-  float CoverageSlope = 1.0f;
-  double Width = -1.0; // the width the taps were computed for
+  // Each kind's (silhouettes, creases, contours, suggestive contours) coverage mapping.
+  float CoverageLevel[4] = { 0.5f, 0.5f, 0.5f, 0.5f };
+  float CoverageSlope[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
+  double Widths[4] = { -1.0, -1.0, -1.0, -1.0 }; // the widths the filter was computed for
 
-  void Compute(double width)
+  // The taps for the widest line, and each kind's level set of their result at its own width.
+  void Compute(const double widths[4])
   {
-    if (width == this->Width)
+    if (std::equal(widths, widths + 4, this->Widths))
     {
       return;
     }
-    this->Width = width;
+    std::copy_n(widths, 4, this->Widths);
+    const double width = *std::max_element(widths, widths + 4);
     const double sigma = LineSigma(width);
     this->Radius = std::max(1, static_cast<int>(std::floor(0.5 * width + 0.5)));
     std::vector<double> g(this->Radius + 2, 0.0);
@@ -105,26 +108,48 @@ struct LineFilter
       }
     }
     // Across a one-pixel line the filtered value is P(d) = g(d): coverage is P's level set at d =
-    // width / 2, with the slope there giving one pixel of anti-aliasing.
-    const double half = 0.5 * width;
-    const double level = std::exp(-half * half / (2.0 * sigma * sigma)) / sum;
-    this->CoverageLevel = static_cast<float>(level);
-    this->CoverageSlope = static_cast<float>(CoverageSlopeOverLevel(width) * level);
+    // width / 2, with the slope there giving one pixel of anti-aliasing. A kind narrower than the
+    // filter's width meets a gentler slope of P there, which would leave its core grey: its slope
+    // is steepened so that the line's centre is covered as much as a line of its width covers a
+    // pixel (fully from one pixel up).
+    const double peak = 1.0 / sum; // P(0)
+    for (int kind = 0; kind < 4; ++kind)
+    {
+      const double half = 0.5 * widths[kind];
+      const double level = std::exp(-half * half / (2.0 * sigma * sigma)) / sum;
+      double slope = CoverageSlopeOverLevel(widths[kind], sigma) * level;
+      const double centre = std::min(1.0, widths[kind]); // the coverage wanted at d = 0
+      if (widths[kind] < width && centre > 0.5)
+      {
+        slope = std::min(slope, (peak - level) / (centre - 0.5));
+      }
+      this->CoverageLevel[kind] = static_cast<float>(level);
+      this->CoverageSlope[kind] = static_cast<float>(slope);
+    }
   }
 };
 
-// The width limit's constants (vtkNPREdgePass::MaximumLineFraction, glsl/vtkNPREdgeLimitFS.glsl).
-void SetWidthLimitUniforms(vtkShaderProgram* program, double width, double fraction)
+// The width limit's constants (vtkNPREdgePass::MaximumLineFraction, glsl/vtkNPREdgeLimitFS.glsl)
+// for the kinds' widths, filtered with the widest one's Gaussian.
+void SetWidthLimitUniforms(vtkShaderProgram* program, const double widths[4], double fraction)
 {
-  const double sigma = LineSigma(width);
+  const double widest = *std::max_element(widths, widths + 4);
+  const double sigma = LineSigma(widest);
   const double exponent = 1.0 / (8.0 * sigma * sigma);
-  const double peakOverLevel = std::exp(width * width * exponent); // P(0) / P(w / 2)
-  const double vanishing = (1.0 - 0.5 * CoverageSlopeOverLevel(width)) / peakOverLevel;
-  program->SetUniformf("widthLimitWidth", static_cast<float>(width));
+  float kindWidths[4], vanishing[4];
+  for (int kind = 0; kind < 4; ++kind)
+  {
+    const double width = widths[kind];
+    const double peakOverLevel = std::exp(width * width * exponent); // P(0) / P(w / 2)
+    kindWidths[kind] = static_cast<float>(width);
+    vanishing[kind] = static_cast<float>(
+      std::max(0.0, (1.0 - 0.5 * CoverageSlopeOverLevel(width, sigma)) / peakOverLevel));
+  }
+  program->SetUniform4f("widthLimitWidths", kindWidths);
   program->SetUniformf("widthLimitFraction", static_cast<float>(fraction));
   program->SetUniformf("widthLimitExponent", static_cast<float>(exponent));
-  program->SetUniformf("widthLimitVanishing", static_cast<float>(std::max(0.0, vanishing)));
-  program->SetUniformi("widthLimitPixels", static_cast<int>(std::ceil(width / fraction)));
+  program->SetUniform4f("widthLimitVanishing", vanishing);
+  program->SetUniformi("widthLimitPixels", static_cast<int>(std::ceil(widest / fraction)));
 }
 
 // A line image of the G-buffer's size, allocated once and resized with it.
@@ -206,9 +231,40 @@ int vtkNPREdgePass::GetEncodingFromName(const char* name)
   return vtkNPRGBufferPass::GetEncodingFromName(name);
 }
 
+void vtkNPREdgePass::GetDrawnLineWidths(vtkRenderer* renderer, double widths[4]) const
+{
+  this->GetEffectiveLineWidths(renderer, widths);
+  const double widest = this->GetEffectiveLineWidth(renderer);
+  for (int kind = 0; kind < 4; ++kind)
+  {
+    widths[kind] = std::min(widths[kind], widest); // a kind not drawn widens nothing
+  }
+}
+
+void vtkNPREdgePass::GetEffectiveLineWidths(vtkRenderer* renderer, double widths[4]) const
+{
+  const double kinds[4] = { this->SilhouetteLineWidth, this->CreaseLineWidth,
+    this->ContourLineWidth, this->SuggestiveContourLineWidth };
+  for (int kind = 0; kind < 4; ++kind)
+  {
+    widths[kind] =
+      vtkNPREffectiveLineWidth(renderer, kinds[kind] > 0.0 ? kinds[kind] : this->LineWidth);
+  }
+}
+
 double vtkNPREdgePass::GetEffectiveLineWidth(vtkRenderer* renderer) const
 {
-  return vtkNPREffectiveLineWidth(renderer, this->LineWidth);
+  double widths[4];
+  this->GetEffectiveLineWidths(renderer, widths);
+  // The kinds drawn (the packed encodings draw every line as a silhouette); with none, LineWidth.
+  const bool drawn[4] = { this->Silhouettes, this->Creases, this->Contours,
+    this->SuggestiveContours };
+  double widest = 0.0;
+  for (int kind = 0; kind < 4; ++kind)
+  {
+    widest = drawn[kind] ? std::max(widest, widths[kind]) : widest;
+  }
+  return widest > 0.0 ? widest : vtkNPREffectiveLineWidth(renderer, this->LineWidth);
 }
 
 vtkNPRGBufferPass* vtkNPREdgePass::GetGBuffer()
@@ -287,13 +343,18 @@ bool vtkNPREdgePass::UpdateLineImage(const vtkRenderState* state)
   const std::string defines = this->GetDetectDefines(encoding);
   const bool limited =
     this->MaximumLineFraction > 0.0 && encoding != PACKED8 && encoding != PACKED16;
-  // The width limit sets the line image's values by the width the composite widens them to.
-  const double lineWidth = this->GetEffectiveLineWidth(state->GetRenderer());
   std::ostringstream settings;
   settings.precision(17);
   settings << defines << this->SilhouetteThreshold << " " << this->CreaseAngle << " "
-           << this->PackedThreshold << " " << this->SuggestiveContourThreshold << " "
-           << (limited ? this->MaximumLineFraction : 0.0) << " " << (limited ? lineWidth : 0.0);
+           << this->PackedThreshold << " " << this->SuggestiveContourThreshold;
+  if (limited)
+  {
+    // The width limit sets the line image's values by the widths the composite draws.
+    double widths[4];
+    this->GetDrawnLineWidths(state->GetRenderer(), widths);
+    settings << " " << this->MaximumLineFraction << " " << widths[0] << " " << widths[1] << " "
+             << widths[2] << " " << widths[3];
+  }
   if (internal.LineImageValid && internal.LineImageVersion == gbuffer->GetContentVersion() &&
     internal.LineImageSettings == settings.str())
   {
@@ -301,7 +362,7 @@ bool vtkNPREdgePass::UpdateLineImage(const vtkRenderState* state)
   }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow());
   if (!this->DetectLines(window, encoding, defines) ||
-    (limited && !this->LimitLineWidths(window, encoding, lineWidth)))
+    (limited && !this->LimitLineWidths(window, encoding, state->GetRenderer())))
   {
     return false;
   }
@@ -332,7 +393,8 @@ bool vtkNPREdgePass::DetectLines(
   return true;
 }
 
-bool vtkNPREdgePass::LimitLineWidths(vtkOpenGLRenderWindow* window, int encoding, double lineWidth)
+bool vtkNPREdgePass::LimitLineWidths(
+  vtkOpenGLRenderWindow* window, int encoding, vtkRenderer* renderer)
 {
   Internals& internal = *this->Internal;
   vtkNPRGBufferPass* gbuffer = this->GBufferPass;
@@ -351,7 +413,9 @@ bool vtkNPREdgePass::LimitLineWidths(vtkOpenGLRenderWindow* window, int encoding
   internal.LineTexture->Activate();
   program->SetUniformi("geometryTexture", geometry->GetTextureUnit());
   program->SetUniformi("lineTexture", internal.LineTexture->GetTextureUnit());
-  SetWidthLimitUniforms(program, lineWidth, this->MaximumLineFraction);
+  double widths[4];
+  this->GetDrawnLineWidths(renderer, widths);
+  SetWidthLimitUniforms(program, widths, this->MaximumLineFraction);
   this->DrawLineImage(window, internal.LimitedLineTexture, internal.Limit);
   internal.LineTexture->Deactivate();
   geometry->Deactivate();
@@ -403,7 +467,9 @@ void vtkNPREdgePass::SetDetectUniforms(vtkShaderProgram* program, int encoding)
 std::string vtkNPREdgePass::GetCompositeDefines(vtkRenderer* renderer, int output)
 {
   Internals& internal = *this->Internal;
-  internal.Filter.Compute(this->GetEffectiveLineWidth(renderer));
+  double widths[4];
+  this->GetDrawnLineWidths(renderer, widths);
+  internal.Filter.Compute(widths);
   std::ostringstream defines;
   defines << "#define NPR_LINES " << (this->GetDrawsLines() ? 1 : 0) << "\n#define NPR_TAPS "
           << internal.Filter.Taps.size() / 3 << "\n#define NPR_RADIUS "
@@ -435,8 +501,10 @@ std::string vtkNPREdgePass::GetCompositeKey(vtkRenderer* renderer)
   std::ostringstream key;
   key.precision(17);
   // The line image's settings and content change its update count.
+  double widths[4];
+  this->GetDrawnLineWidths(renderer, widths);
   key << this->GetCompositeDefines(renderer, OutputComposite) << this->NumberOfLineImageUpdates
-      << " " << this->GetEffectiveLineWidth(renderer);
+      << " " << widths[0] << " " << widths[1] << " " << widths[2] << " " << widths[3];
   for (const double* colorValue :
     { this->SilhouetteColor, this->CreaseColor, this->ContourColor, this->SuggestiveContourColor })
   {
@@ -516,8 +584,8 @@ void vtkNPREdgePass::SetCompositeUniforms(vtkShaderProgram* program, const int o
   const float texelSize[2] = { 1.0f / internal.DrawnLines()->GetWidth(),
     1.0f / internal.DrawnLines()->GetHeight() };
   program->SetUniform2f("texelSize", texelSize);
-  program->SetUniformf("coverageLevel", filter.CoverageLevel);
-  program->SetUniformf("coverageSlope", filter.CoverageSlope);
+  program->SetUniform4f("coverageLevel", filter.CoverageLevel);
+  program->SetUniform4f("coverageSlope", filter.CoverageSlope);
   this->SetLineColorUniforms(program);
 }
 
@@ -570,7 +638,9 @@ void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Contours: " << this->Contours << " side " << this->ContourSide << " color "
      << this->ContourColor[0] << " " << this->ContourColor[1] << " " << this->ContourColor[2]
      << "\n";
-  os << indent << "LineWidth: " << this->LineWidth << "\n";
+  os << indent << "LineWidth: " << this->LineWidth << " (silhouettes " << this->SilhouetteLineWidth
+     << ", creases " << this->CreaseLineWidth << ", contours " << this->ContourLineWidth
+     << ", suggestive contours " << this->SuggestiveContourLineWidth << ": 0 is LineWidth)\n";
   os << indent << "MaximumLineFraction: " << this->MaximumLineFraction << "\n";
   os << indent << "SurfaceLineShade: " << this->SurfaceLineShade << "\n";
   os << indent << "Encoding: " << GetEncodingName(this->Encoding) << " packed threshold "

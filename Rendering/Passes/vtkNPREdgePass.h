@@ -244,10 +244,39 @@ public:
   vtkGetMacro(LineWidth, double);
   ///@}
 
+  ///@{
   /**
-   * The width in pixels actually drawn for this renderer: LineWidth x DPI / 72 x tile scale.
+   * The width of one kind of line in pixels at 72 DPI, clamped to [0, 16] (default 0: LineWidth):
+   * silhouettes (in the drawing style also boundaries), creases (in the drawing also non-manifold
+   * edges), object contours and suggestive contours. Line roles of their own weight: heavy
+   * outlines over light creases, as technical illustrations draw them. The drawing's strokes take
+   * the widths exactly. The image-space styles filter every kind with the widest kind's Gaussian
+   * and draw a narrower kind as a level set of it nearer the line, so a kind much narrower than
+   * the widest (under about half its width) has a softer edge and lighter core than the same
+   * width drawn alone.
+   */
+  vtkSetClampMacro(SilhouetteLineWidth, double, 0.0, 16.0);
+  vtkGetMacro(SilhouetteLineWidth, double);
+  vtkSetClampMacro(CreaseLineWidth, double, 0.0, 16.0);
+  vtkGetMacro(CreaseLineWidth, double);
+  vtkSetClampMacro(ContourLineWidth, double, 0.0, 16.0);
+  vtkGetMacro(ContourLineWidth, double);
+  vtkSetClampMacro(SuggestiveContourLineWidth, double, 0.0, 16.0);
+  vtkGetMacro(SuggestiveContourLineWidth, double);
+  ///@}
+
+  /**
+   * The width in pixels of the widest line drawn for this renderer: the largest of the widths of
+   * the kinds drawn (each LineWidth where it is 0; LineWidth when none is drawn) x DPI / 72 x tile
+   * scale.
    */
   double GetEffectiveLineWidth(vtkRenderer* renderer) const;
+
+  /**
+   * Each kind's width in pixels for this renderer, in the line image's order: silhouettes,
+   * creases, contours, suggestive contours.
+   */
+  void GetEffectiveLineWidths(vtkRenderer* renderer, double widths[4]) const;
 
   ///@{
   /**
@@ -367,6 +396,10 @@ protected:
   int ContourSide = INSIDE;
   double ContourColor[3] = { 0.0, 0.0, 0.0 };
   double LineWidth = 1.5;
+  double SilhouetteLineWidth = 0.0;
+  double CreaseLineWidth = 0.0;
+  double ContourLineWidth = 0.0;
+  double SuggestiveContourLineWidth = 0.0;
   double MaximumLineFraction = 0.0;
   double SurfaceLineShade = 0.0;
   int Encoding = FLOAT;
@@ -383,10 +416,12 @@ private:
   // The one-pixel line image, recomputed only when the G-buffer or the detection settings changed.
   std::string GetDetectDefines(int encoding) const;
   bool UpdateLineImage(const vtkRenderState* state);
+  // GetEffectiveLineWidths, with a kind not drawn no wider than the widest drawn.
+  void GetDrawnLineWidths(vtkRenderer* renderer, double widths[4]) const;
   bool DetectLines(vtkOpenGLRenderWindow* window, int encoding, const std::string& defines);
   void SetDetectUniforms(vtkShaderProgram* program, int encoding);
   // MaximumLineFraction: the detected lines thinned on narrow objects, into a second line image.
-  bool LimitLineWidths(vtkOpenGLRenderWindow* window, int encoding, double lineWidth);
+  bool LimitLineWidths(vtkOpenGLRenderWindow* window, int encoding, vtkRenderer* renderer);
   void DrawLineImage(
     vtkOpenGLRenderWindow* window, vtkTextureObject* image, vtkNPRQuadProgram& program);
   // The composite of the lines (and colour and depth, or the mask, or the coverage).

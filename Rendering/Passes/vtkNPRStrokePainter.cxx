@@ -88,7 +88,10 @@ vtkNPRStrokeStyle vtkNPRMakeStrokeStyle(
   const double scale = vtkNPRWindowScale(renderer);
   if (edges)
   {
-    style.LineWidth = edges->GetEffectiveLineWidth(renderer);
+    double widths[4]; // silhouettes, creases, contours, suggestive contours
+    edges->GetEffectiveLineWidths(renderer, widths);
+    style.LineWidth = widths[0];
+    style.CreaseLineWidth = widths[1];
     edges->GetSilhouetteColor(style.SilhouetteColor);
     edges->GetCreaseColor(style.CreaseColor);
     style.Silhouettes = edges->GetSilhouettes();
@@ -97,6 +100,7 @@ vtkNPRStrokeStyle vtkNPRMakeStrokeStyle(
   else
   {
     style.LineWidth = vtkNPREffectiveLineWidth(renderer, 1.5); // the edge pass's default
+    style.CreaseLineWidth = style.LineWidth;
   }
   double hiddenWidth = 0.6; // the drawing pass's defaults
   double dash = 6.0, gap = 4.0;
@@ -177,6 +181,7 @@ void SetPen(cairo_t* cr, const vtkNPRStrokeStyle& style, int strokeClass)
     if (strokeClass == NPR_STROKES_CREASE || strokeClass == NPR_STROKES_NON_MANIFOLD)
     {
       color = style.CreaseColor;
+      width = style.CreaseLineWidth;
     }
   }
   cairo_set_source_rgb(cr, color[0], color[1], color[2]);

@@ -24,9 +24,10 @@ struct vtkNPRStrokeStyle
 {
   double SilhouetteColor[3] = { 0.0, 0.0, 0.0 }; // silhouettes and boundaries
   double CreaseColor[3] = { 0.0, 0.0, 0.0 };     // creases and non-manifold edges
-  double LineWidth = 1.5;
-  bool Silhouettes = true; // silhouettes and boundaries
-  bool Creases = true;     // creases and non-manifold edges
+  double LineWidth = 1.5;                        // silhouettes and boundaries, pixels
+  double CreaseLineWidth = 1.5;                  // creases and non-manifold edges, pixels
+  bool Silhouettes = true;                       // silhouettes and boundaries
+  bool Creases = true;                           // creases and non-manifold edges
   bool HiddenLines = false;
   double HiddenLineColor[3] = { 0.45, 0.45, 0.45 };
   double HiddenLineWidth = 0.9; // pixels

@@ -28,6 +28,10 @@ render line_width_1.png Testing/Data/cad_part.vtp --style edges --size 480x360 -
 render line_width_3.png Testing/Data/cad_part.vtp --style edges --size 480x360 --azimuth 30 --elevation 30 --line-width 3
 render line_width_6.png Testing/Data/cad_part.vtp --style edges --size 480x360 --azimuth 30 --elevation 30 --line-width 6
 
+# Line weights: heavy silhouettes over light creases, in the edges and the drawing style.
+render line_weights.png Testing/Data/cad_part.vtp --style edges --size 480x360 --azimuth 30 --elevation 30 --silhouette-width 3 --crease-width 0.75
+render line_weights_drawing.png Testing/Data/cad_part.vtp --style drawing --hidden-lines --size 480x360 --azimuth 30 --elevation 30 --silhouette-width 2 --crease-width 0.75
+
 # Contour side, on two models: the rotor stands in front of the bunny and cuts into it.
 render contour_side_inside.png Testing/Data/bunny.ply Testing/Data/rotor.ply --style edges --size 480x360 --azimuth -20 --zoom 1.3 --lines contours --contour-side inside --contour-color 0.85,0,0 --line-width 4
 render contour_side_outside.png Testing/Data/bunny.ply Testing/Data/rotor.ply --style edges --size 480x360 --azimuth -20 --zoom 1.3 --lines contours --contour-side outside --contour-color 0.85,0,0 --line-width 4

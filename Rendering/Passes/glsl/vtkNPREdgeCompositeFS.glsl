@@ -21,8 +21,8 @@ uniform sampler2D depthTexture;
 uniform vec3 taps[NPR_TAPS];    // offset in texels (x, y), weight
 uniform vec2 texelSize;
 uniform ivec2 viewportOrigin; // of the renderer in the window
-uniform float coverageLevel;    // P(w/2)
-uniform float coverageSlope;    // |P'(w/2)|
+uniform vec4 coverageLevel;     // P(w/2) of each type's width w
+uniform vec4 coverageSlope;     // |P'(w/2)|
 //NPR::LineColor
 //NPR::WindowDepth
 //NPR::NearestDepth
@@ -72,7 +72,7 @@ void main()
 #if NPR_ANTIALIAS
   coverage = clamp(0.5 + (lines - coverageLevel) / coverageSlope, 0.0, 1.0);
 #else
-  coverage = step(vec4(coverageLevel), lines);
+  coverage = step(coverageLevel, lines);
 #endif
 #endif
   ivec2 p = ivec2(gl_FragCoord.xy) - viewportOrigin;

@@ -16,10 +16,10 @@
 in vec2 texCoord;
 uniform sampler2D lineTexture;     // the detection's one-pixel lines (r, g, b, a: the types)
 uniform sampler2D geometryTexture; // view depth (> 0 where covered) and the object ids
-uniform float widthLimitWidth;     // the line width the composite draws, pixels
+uniform vec4 widthLimitWidths;     // each type's width the composite draws, pixels
 uniform float widthLimitFraction;  // the largest share of the object's width one line may take
 uniform float widthLimitExponent;  // 1 / (8 sigma^2) of the composite's Gaussian
-uniform float widthLimitVanishing; // the value at which a line leaves no coverage
+uniform vec4 widthLimitVanishing;  // each type's value at which its line leaves no coverage
 uniform int widthLimitPixels;      // objects this wide or wider keep the full width
 //VTK::Output::Dec
 
@@ -89,20 +89,17 @@ float nprObjectWidth(ivec2 p, ivec2 size, vec4 g0, int offLine)
   return second;
 }
 
-// The factor on a line pixel's value that makes the composite draw its line
-// min(widthLimitWidth, widthLimitFraction x object width) wide.
-float nprWidthFactor(float objectWidth)
+// The factors on a line pixel's values (r, g, b, a: the types) that make the composite draw each
+// type's line min(its width, widthLimitFraction x object width) wide.
+vec4 nprWidthFactors(float objectWidth)
 {
-  float width = min(widthLimitWidth, widthLimitFraction * objectWidth);
-  if (width >= widthLimitWidth)
-  {
-    return 1.0;
-  }
-  float w2 = widthLimitWidth * widthLimitWidth;
-  float onePixel = min(1.0, widthLimitWidth);
-  float atOnePixel = exp(-(w2 - onePixel * onePixel) * widthLimitExponent);
-  return width >= onePixel ? exp(-(w2 - width * width) * widthLimitExponent)
-                           : mix(widthLimitVanishing, atOnePixel, width / onePixel);
+  vec4 width = min(widthLimitWidths, vec4(widthLimitFraction * objectWidth));
+  vec4 full = widthLimitWidths * widthLimitWidths;
+  vec4 onePixel = min(vec4(1.0), widthLimitWidths);
+  vec4 narrower = exp(-(full - width * width) * widthLimitExponent);
+  vec4 atOnePixel = exp(-(full - onePixel * onePixel) * widthLimitExponent);
+  vec4 belowOnePixel = mix(widthLimitVanishing, atOnePixel, width / onePixel);
+  return mix(belowOnePixel, narrower, greaterThanEqual(width, onePixel));
 }
 
 void main()
@@ -113,14 +110,14 @@ void main()
   vec4 g0 = texelFetch(geometryTexture, p, 0);
   if (g0.x > 0.0 && any(greaterThan(lines, vec4(0.0))))
   {
-    float factor = nprWidthFactor(nprObjectWidth(p, size, g0, nprOutline(lines) ? 0 : 2));
-    if (factor < 1.0)
+    vec4 factors = nprWidthFactors(nprObjectWidth(p, size, g0, nprOutline(lines) ? 0 : 2));
+    if (any(lessThan(factors, vec4(1.0))))
     {
       // Too narrow for full-width lines: its outline only, one line per pixel. Lines of several
       // types on one pixel darken it together far more than each one's width allows, and creases
       // inside a thin object crowd its outline (on a stream tube a few pixels wide the shading
       // normals turn by more than the crease angle from one pixel to the next).
-      lines = factor * (lines.r > 0.0 ? vec4(lines.r, 0.0, 0.0, 0.0) : vec4(0.0, 0.0, lines.b, 0.0));
+      lines = factors * (lines.r > 0.0 ? vec4(lines.r, 0.0, 0.0, 0.0) : vec4(0.0, 0.0, lines.b, 0.0));
     }
   }
   gl_FragData[0] = lines;

@@ -3,7 +3,8 @@
 // The Cairo stroke painter (vtkNPRStrokePainter, private to NPR::Passes) on a hand-made
 // stroke set: a visible horizontal silhouette, a dashed hidden line and a closed square (crease).
 //   raster  coverage where the strokes are and nowhere else, rows bottom-up, premultiplied
-//           colours, the dash period and gaps, hidden lines left out when the style says so
+//           colours, the dash period and gaps, hidden lines left out when the style says so,
+//           each kind's width (silhouettes 4 px and creases 1 px)
 //   style   vtkNPRMakeStrokeStyle from an edge pass and a drawing pass, scaled by DPI / 72
 //           (TestStrokePainterStyle.cxx)
 //   svg     the same painting into Cairo's SVG: one <path> a stroke, the loop closed (Z)
@@ -21,6 +22,7 @@
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -73,6 +75,7 @@ vtkNPRStrokeStyle nprStrokePainter::TestStyle()
 {
   vtkNPRStrokeStyle style;
   style.LineWidth = 2.0;
+  style.CreaseLineWidth = 2.0;
   style.CreaseColor[0] = style.CreaseColor[1] = 0.0;
   style.CreaseColor[2] = 1.0; // blue
   style.HiddenLines = true;
@@ -234,6 +237,31 @@ vtkNPRStrokeStyle CheckSwitches(std::vector<unsigned char>& rgba)
   return style;
 }
 
+// Each kind's width: silhouettes 4 px, creases 1 px. Summed down a column across the line, the
+// coverage is the line's width (within 0.1 px).
+void CheckKindWidths(std::vector<unsigned char>& rgba)
+{
+  std::string error;
+  vtkNPRStrokeStyle style = TestStyle();
+  style.LineWidth = 4.0;
+  style.CreaseLineWidth = 1.0;
+  NPR_CHECK(vtkNPRRasterizeStrokes(MakeStrokes(), style, Width, Height, rgba, error), error);
+  auto across = [&](int x, int from, int to)
+  {
+    double sum = 0.0;
+    for (int y = from; y <= to; ++y)
+    {
+      sum += At(rgba, x, y)[3] / 255.0;
+    }
+    return sum;
+  };
+  const double silhouette = across(100, 12, 27); // the visible line about y = 20
+  const double crease = across(150, 25, 34);     // the square's side about y = 30
+  std::cout << "kind widths: silhouette " << silhouette << " px, crease " << crease << " px\n";
+  NPR_CHECK(std::abs(silhouette - 4.0) < 0.1, "silhouette " << silhouette << " px wide, not 4");
+  NPR_CHECK(std::abs(crease - 1.0) < 0.1, "crease " << crease << " px wide, not 1");
+}
+
 // An empty stroke set gives a transparent image; arrays missing give an error.
 void CheckEmptyAndBare(const vtkNPRStrokeStyle& style, std::vector<unsigned char>& rgba)
 {
@@ -268,6 +296,7 @@ int Raster()
   CheckVisibleLine(rgba);
   CheckDashes(HiddenLineColumns(rgba));
   CheckSquare(rgba);
+  CheckKindWidths(rgba);
   CheckEmptyAndBare(CheckSwitches(rgba), rgba);
   return nprTestResult();
 }

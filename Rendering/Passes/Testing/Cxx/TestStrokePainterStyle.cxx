@@ -52,9 +52,20 @@ int Style()
       style.GapLength == 4.0,
     "at 144 DPI: " << style.LineWidth << " " << style.HiddenLineWidth << " " << style.DashLength
                    << " " << style.GapLength);
+  // A width of their own for silhouettes and creases (at 144 DPI); hidden lines follow the
+  // silhouettes' width; a kind's width of 0 is LineWidth.
+  edges->SetSilhouetteLineWidth(3.0);
+  edges->SetCreaseLineWidth(0.75);
+  style = vtkNPRMakeStrokeStyle(drawing, edges, renderer);
+  NPR_CHECK(style.LineWidth == 6.0 && style.CreaseLineWidth == 1.5 && style.HiddenLineWidth == 3.0,
+    "kind widths at 144 DPI: " << style.LineWidth << " " << style.CreaseLineWidth << " "
+                               << style.HiddenLineWidth);
+  edges->SetCreaseLineWidth(0.0);
+  style = vtkNPRMakeStrokeStyle(drawing, edges, renderer);
+  NPR_CHECK(style.CreaseLineWidth == 4.0, "a crease width of 0: " << style.CreaseLineWidth);
   // Without passes: the defaults (1.5 px lines, hidden lines off, 0.6 of the width, 6/4 dashes).
   style = vtkNPRMakeStrokeStyle(nullptr, nullptr, nullptr);
-  NPR_CHECK(style.LineWidth == 1.5 && !style.HiddenLines &&
+  NPR_CHECK(style.LineWidth == 1.5 && style.CreaseLineWidth == 1.5 && !style.HiddenLines &&
       std::abs(style.HiddenLineWidth - 0.9) < 1e-12 && style.DashLength == 6.0,
     "defaults");
   return nprTestResult();
