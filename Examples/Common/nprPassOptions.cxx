@@ -112,105 +112,141 @@ std::string nprStyleNames()
   return names;
 }
 
-// The flags of each line kind's width and the setting each sets.
-const std::pair<const char*, double nprPassSettings::*> KindWidthFlags[] = {
-  { "--silhouette-width", &nprPassSettings::SilhouetteLineWidth },
-  { "--crease-width", &nprPassSettings::CreaseLineWidth },
-  { "--contour-width", &nprPassSettings::ContourLineWidth },
-  { "--suggestive-width", &nprPassSettings::SuggestiveContourLineWidth },
+namespace
+{
+// The flags that set a number in a range, a switch, or one line type's colour, and the setting each
+// sets.
+struct RangeFlag
+{
+  const char* Flag;
+  double nprPassSettings::*Setting;
+  double Minimum, Maximum;
+};
+const RangeFlag RangeFlags[] = {
+  { "--silhouette-threshold", &nprPassSettings::SilhouetteThreshold, 1e-5, 1.0 },
+  { "--crease-angle", &nprPassSettings::CreaseAngle, 1.0, 179.0 },
+  { "--suggestive-threshold", &nprPassSettings::SuggestiveContourThreshold, 1e-4, 1.0 },
+  { "--line-width", &nprPassSettings::LineWidth, 0.5, 16.0 },
+  { "--silhouette-width", &nprPassSettings::SilhouetteLineWidth, 0.0, 16.0 },
+  { "--crease-width", &nprPassSettings::CreaseLineWidth, 0.0, 16.0 },
+  { "--contour-width", &nprPassSettings::ContourLineWidth, 0.0, 16.0 },
+  { "--suggestive-width", &nprPassSettings::SuggestiveContourLineWidth, 0.0, 16.0 },
+  { "--max-line-fraction", &nprPassSettings::MaximumLineFraction, 0.0, 1.0 },
+  { "--surface-line-shade", &nprPassSettings::SurfaceLineShade, 0.0, 1.0 },
+  { "--packed-threshold", &nprPassSettings::PackedThreshold, 0.001, 4.0 },
+  { "--uncertainty", &nprPassSettings::Uncertainty, 0.0, 32.0 },
+  { "--noise-frequency", &nprPassSettings::NoiseFrequency, 0.05, 25.0 },
+};
+struct SwitchFlag
+{
+  const char* Flag;
+  bool nprPassSettings::*Setting;
+  bool Value;
+};
+const SwitchFlag SwitchFlags[] = {
+  { "--smooth-silhouettes", &nprPassSettings::SmoothSilhouettes, true },
+  { "--face-creases", &nprPassSettings::FaceCreases, true },
+  { "--no-antialias", &nprPassSettings::AntiAliasing, false },
+  { "--packed-blur", &nprPassSettings::PackedBlur, true },
+  { "--toon-per-vertex", &nprPassSettings::ToonPerVertex, true },
+  { "--hidden-lines", &nprPassSettings::HiddenLines, true },
+  { "--sketch-toon", &nprPassSettings::SketchToon, true },
+};
+const std::pair<const char*, double (nprPassSettings::*)[3]> ColorFlags[] = {
+  { "--silhouette-color", &nprPassSettings::SilhouetteColor },
+  { "--crease-color", &nprPassSettings::CreaseColor },
+  { "--contour-color", &nprPassSettings::ContourColor },
+  { "--suggestive-color", &nprPassSettings::SuggestiveContourColor },
 };
 
-bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
+// A flag of the tables above; false for any other.
+bool ParseTableFlag(const std::string& arg, nprArgumentReader& arguments, nprPassSettings& pass)
 {
-  const std::string& arg = arguments.Current();
-  for (const auto& flag : KindWidthFlags)
+  for (const RangeFlag& flag : RangeFlags)
   {
-    if (arg == flag.first)
+    if (arg == flag.Flag)
     {
-      pass.*flag.second = nprParseRange(arg, arguments.Value(), 0.0, 16.0);
+      pass.*flag.Setting = nprParseRange(arg, arguments.Value(), flag.Minimum, flag.Maximum);
       return true;
     }
   }
+  for (const SwitchFlag& flag : SwitchFlags)
+  {
+    if (arg == flag.Flag)
+    {
+      pass.*flag.Setting = flag.Value;
+      return true;
+    }
+  }
+  for (const auto& flag : ColorFlags)
+  {
+    if (arg == flag.first)
+    {
+      nprParseColor(arg, arguments.Value(), pass.*flag.second);
+      return true;
+    }
+  }
+  return false;
+}
+
+// --lines: the line types drawn.
+void ParseLineTypes(const std::string& list, nprPassSettings& pass)
+{
+  pass.Silhouettes = pass.Creases = pass.Contours = pass.SuggestiveContours = false;
+  for (const std::string& part : nprSplitList(list))
+  {
+    if (part == "silhouettes" || part == "silhouette")
+    {
+      pass.Silhouettes = true;
+    }
+    else if (part == "creases" || part == "crease")
+    {
+      pass.Creases = true;
+    }
+    else if (part == "contours" || part == "contour")
+    {
+      pass.Contours = true;
+    }
+    else if (part == "suggestive")
+    {
+      pass.SuggestiveContours = true;
+    }
+    else if (part != "none")
+    {
+      throw nprUsageError("--lines expects silhouettes, creases, contours, suggestive or none, "
+                          "got '" +
+        part + "'");
+    }
+  }
+}
+
+// The flags of one of several names: an index into names, or a usage error listing them.
+int ParseChoice(const std::string& arg, const std::string& value,
+  const std::vector<std::string>& names, const char* expected)
+{
+  const auto found = std::find(names.begin(), names.end(), value);
+  if (found == names.end())
+  {
+    throw nprUsageError(arg + " expects " + expected + ", got '" + value + "'");
+  }
+  return static_cast<int>(found - names.begin());
+}
+
+// The flags the tables leave out; false for a flag that is none of the pass's.
+bool ParseOtherFlag(const std::string& arg, nprArgumentReader& arguments, nprPassSettings& pass)
+{
   if (arg == "--style")
   {
     pass.Style = nprStyleFromText(arg, arguments.Value());
   }
   else if (arg == "--lines")
   {
-    const std::vector<std::string> parts = nprSplitList(arguments.Value());
-    pass.Silhouettes = pass.Creases = pass.Contours = pass.SuggestiveContours = false;
-    for (const std::string& part : parts)
-    {
-      if (part == "silhouettes" || part == "silhouette")
-      {
-        pass.Silhouettes = true;
-      }
-      else if (part == "creases" || part == "crease")
-      {
-        pass.Creases = true;
-      }
-      else if (part == "contours" || part == "contour")
-      {
-        pass.Contours = true;
-      }
-      else if (part == "suggestive")
-      {
-        pass.SuggestiveContours = true;
-      }
-      else if (part != "none")
-      {
-        throw nprUsageError("--lines expects silhouettes, creases, contours, suggestive or none, "
-                            "got '" +
-          part + "'");
-      }
-    }
-  }
-  else if (arg == "--silhouette-threshold")
-  {
-    pass.SilhouetteThreshold = nprParseRange(arg, arguments.Value(), 1e-5, 1.0);
-  }
-  else if (arg == "--crease-angle")
-  {
-    pass.CreaseAngle = nprParseRange(arg, arguments.Value(), 1.0, 179.0);
-  }
-  else if (arg == "--smooth-silhouettes")
-  {
-    pass.SmoothSilhouettes = true;
-  }
-  else if (arg == "--face-creases")
-  {
-    pass.FaceCreases = true;
-  }
-  else if (arg == "--suggestive-threshold")
-  {
-    pass.SuggestiveContourThreshold = nprParseRange(arg, arguments.Value(), 1e-4, 1.0);
-  }
-  else if (arg == "--suggestive-color")
-  {
-    nprParseColor(arg, arguments.Value(), pass.SuggestiveContourColor);
+    ParseLineTypes(arguments.Value(), pass);
   }
   else if (arg == "--contour-side")
   {
-    const std::string side = arguments.Value();
-    const char* const sides[] = { "inside", "outside", "both" };
-    const auto found = std::find(std::begin(sides), std::end(sides), side);
-    if (found == std::end(sides))
-    {
-      throw nprUsageError("--contour-side expects inside, outside or both, got '" + side + "'");
-    }
-    pass.ContourSide = static_cast<int>(found - std::begin(sides));
-  }
-  else if (arg == "--line-width")
-  {
-    pass.LineWidth = nprParseRange(arg, arguments.Value(), 0.5, 16.0);
-  }
-  else if (arg == "--max-line-fraction")
-  {
-    pass.MaximumLineFraction = nprParseRange(arg, arguments.Value(), 0.0, 1.0);
-  }
-  else if (arg == "--surface-line-shade")
-  {
-    pass.SurfaceLineShade = nprParseRange(arg, arguments.Value(), 0.0, 1.0);
+    pass.ContourSide = ParseChoice(
+      arg, arguments.Value(), { "inside", "outside", "both" }, "inside, outside or both");
   }
   else if (arg == "--line-color")
   {
@@ -218,22 +254,6 @@ bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
     std::copy_n(pass.SilhouetteColor, 3, pass.CreaseColor);
     std::copy_n(pass.SilhouetteColor, 3, pass.ContourColor);
     std::copy_n(pass.SilhouetteColor, 3, pass.SuggestiveContourColor);
-  }
-  else if (arg == "--silhouette-color")
-  {
-    nprParseColor(arg, arguments.Value(), pass.SilhouetteColor);
-  }
-  else if (arg == "--crease-color")
-  {
-    nprParseColor(arg, arguments.Value(), pass.CreaseColor);
-  }
-  else if (arg == "--contour-color")
-  {
-    nprParseColor(arg, arguments.Value(), pass.ContourColor);
-  }
-  else if (arg == "--no-antialias")
-  {
-    pass.AntiAliasing = false;
   }
   else if (arg == "--encoding")
   {
@@ -245,57 +265,38 @@ bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
         "--encoding expects float, half, packed8 or packed16, got '" + encoding + "'");
     }
   }
-  else if (arg == "--packed-threshold")
-  {
-    pass.PackedThreshold = nprParseRange(arg, arguments.Value(), 0.001, 4.0);
-  }
-  else if (arg == "--packed-blur")
-  {
-    pass.PackedBlur = true;
-  }
   else if (arg == "--toon-bands")
   {
     pass.ToonBands = nprParseInteger(arg, arguments.Value(), 1, 64);
-  }
-  else if (arg == "--toon-per-vertex")
-  {
-    pass.ToonPerVertex = true;
-  }
-  else if (arg == "--uncertainty")
-  {
-    pass.Uncertainty = nprParseRange(arg, arguments.Value(), 0.0, 32.0);
   }
   else if (arg == "--noise-seed")
   {
     pass.NoiseSeed = nprParseInteger(arg, arguments.Value(), 0, 2147483647);
   }
-  else if (arg == "--hidden-lines")
-  {
-    pass.HiddenLines = true;
-  }
   else if (arg == "--noise-space")
   {
-    const std::string space = arguments.Value();
-    if (space != "surface" && space != "screen")
-    {
-      throw nprUsageError("--noise-space expects surface or screen, got '" + space + "'");
-    }
-    pass.NoiseSpace = space == "screen" ? vtkNPRSketchPass::SCREEN : vtkNPRSketchPass::SURFACE;
-  }
-  else if (arg == "--noise-frequency")
-  {
-    pass.NoiseFrequency = nprParseRange(arg, arguments.Value(), 0.05, 25.0);
+    pass.NoiseSpace =
+      ParseChoice(arg, arguments.Value(), { "surface", "screen" }, "surface or screen") == 1
+      ? vtkNPRSketchPass::SCREEN
+      : vtkNPRSketchPass::SURFACE;
   }
   else if (arg == "--paper-color")
   {
     nprParseColor(arg, arguments.Value(), pass.PaperColor);
     pass.Paper = true;
   }
-  else if (arg == "--sketch-toon")
-  {
-    pass.SketchToon = true;
-  }
   else
+  {
+    return false;
+  }
+  return true;
+}
+}
+
+bool nprParsePassOption(nprArgumentReader& arguments, nprPassSettings& pass)
+{
+  const std::string& arg = arguments.Current();
+  if (!ParseTableFlag(arg, arguments, pass) && !ParseOtherFlag(arg, arguments, pass))
   {
     return false;
   }

@@ -116,7 +116,7 @@ int vtkNPREdgePass::GetEncodingFromName(const char* name)
 void vtkNPREdgePass::GetDrawnLineWidths(vtkRenderer* renderer, double widths[4]) const
 {
   this->GetEffectiveLineWidths(renderer, widths);
-  const double widest = this->GetEffectiveLineWidth(renderer);
+  const double widest = this->GetWidestDrawn(renderer, widths);
   for (int kind = 0; kind < 4; ++kind)
   {
     widths[kind] = std::min(widths[kind], widest); // a kind not drawn widens nothing
@@ -138,6 +138,11 @@ double vtkNPREdgePass::GetEffectiveLineWidth(vtkRenderer* renderer) const
 {
   double widths[4];
   this->GetEffectiveLineWidths(renderer, widths);
+  return this->GetWidestDrawn(renderer, widths);
+}
+
+double vtkNPREdgePass::GetWidestDrawn(vtkRenderer* renderer, const double widths[4]) const
+{
   // The kinds drawn (the packed encodings draw every line as a silhouette); with none, LineWidth.
   const bool drawn[4] = { this->Silhouettes, this->Creases, this->Contours,
     this->SuggestiveContours };
@@ -383,10 +388,11 @@ std::string vtkNPREdgePass::GetCompositeKey(vtkRenderer* renderer)
   std::ostringstream key;
   key.precision(17);
   // The line image's settings and content change its update count.
-  double widths[4];
-  this->GetDrawnLineWidths(renderer, widths);
-  key << this->GetCompositeDefines(renderer, OutputComposite) << this->NumberOfLineImageUpdates
-      << " " << widths[0] << " " << widths[1] << " " << widths[2] << " " << widths[3];
+  key << this->GetCompositeDefines(renderer, OutputComposite) << this->NumberOfLineImageUpdates;
+  for (const double width : this->Internal->Filter.Widths) // as GetCompositeDefines computed them
+  {
+    key << " " << width;
+  }
   for (const double* colorValue :
     { this->SilhouetteColor, this->CreaseColor, this->ContourColor, this->SuggestiveContourColor })
   {

@@ -418,6 +418,8 @@ private:
   bool UpdateLineImage(const vtkRenderState* state);
   // GetEffectiveLineWidths, with a kind not drawn no wider than the widest drawn.
   void GetDrawnLineWidths(vtkRenderer* renderer, double widths[4]) const;
+  // The widest of the kinds' widths that are drawn; the effective LineWidth when none is.
+  double GetWidestDrawn(vtkRenderer* renderer, const double widths[4]) const;
   bool DetectLines(vtkOpenGLRenderWindow* window, int encoding, const std::string& defines);
   void SetDetectUniforms(vtkShaderProgram* program, int encoding);
   // MaximumLineFraction: the detected lines thinned on narrow objects, into a second line image.

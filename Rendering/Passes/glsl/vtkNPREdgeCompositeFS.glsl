@@ -28,32 +28,6 @@ uniform vec4 coverageSlope;     // |P'(w/2)|
 //NPR::NearestDepth
 //VTK::Output::Dec
 
-#if NPR_SURFACE_SHADE && NPR_LINES
-// The colour of the surface a line pixel off the surfaces belongs to: the nearest within
-// NPR_RADIUS pixels along the axes, as nprNearestDepth finds its depth.
-vec3 nprNearestSurfaceColor(ivec2 p)
-{
-  ivec2 size = textureSize(depthTexture, 0);
-  float nearest = 1.0;
-  vec3 color = vec3(0.0);
-  const ivec2 axes[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
-  for (int r = 1; r <= NPR_RADIUS; ++r)
-  {
-    for (int k = 0; k < 4; ++k)
-    {
-      ivec2 q = clamp(p + r * axes[k], ivec2(0), size - 1);
-      float depth = texelFetch(depthTexture, q, 0).r;
-      if (depth < nearest)
-      {
-        nearest = depth;
-        color = texelFetch(colorTexture, q, 0).rgb;
-      }
-    }
-  }
-  return color;
-}
-#endif
-
 void main()
 {
   vec4 coverage = vec4(0.0);
@@ -111,12 +85,14 @@ void main()
     {
       discard;
     }
+    ivec2 surface = nprNearestSurface(p);
 #if NPR_SURFACE_SHADE
-    gl_FragData[0] = nprLinesAlone(coverage, nprLineColors(nprNearestSurfaceColor(p)));
+    gl_FragData[0] =
+      nprLinesAlone(coverage, nprLineColors(texelFetch(colorTexture, surface, 0).rgb));
 #else
     gl_FragData[0] = nprLinesAlone(coverage);
 #endif
-    gl_FragDepth = nprWindowDepth(nprNearestDepth(p));
+    gl_FragDepth = nprWindowDepth(texelFetch(depthTexture, surface, 0).r);
   }
 #endif
 #endif
