@@ -324,7 +324,7 @@ struct FlagScope
   unsigned Styles;
 };
 const FlagScope FlagScopes[] = { { "--lines", Strokes }, { "--crease-angle", Strokes },
-  { "--silhouette-threshold", ImageLines }, { "--smooth-silhouettes", ImageLines },
+  { "--silhouette-threshold", ImageLines }, { "--smooth-silhouettes", Strokes },
   { "--face-creases", ImageLines }, { "--max-line-fraction", ImageLines },
   { "--surface-line-shade", ImageLines }, { "--suggestive-threshold", ImageLines },
   { "--suggestive-color", ImageLines }, { "--contour-side", ImageLines },

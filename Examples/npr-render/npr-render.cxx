@@ -35,8 +35,9 @@
 namespace
 {
 // The visible object-space lines of what --lines asks for, as a white-on-black 8-bit grey PNG:
-// silhouettes and creases as named; contours (object outlines) are silhouettes and boundaries;
-// non-manifold edges, where surfaces meet at an angle, go with creases.
+// silhouettes and creases as named (with --smooth-silhouettes, silhouettes as smooth contours);
+// contours (object outlines) are silhouettes and boundaries; non-manifold edges, where surfaces
+// meet at an angle, go with creases.
 void WriteReferenceMask(
   vtkRenderer* renderer, const nprRenderOptions& options, int width, int height)
 {
@@ -49,6 +50,7 @@ void WriteReferenceMask(
   reference->SetCreases(lines.Creases);
   reference->SetNonManifoldEdges(lines.Creases);
   reference->SetCreaseAngle(lines.CreaseAngle);
+  reference->SetSmoothContours(lines.SmoothSilhouettes);
   if (!reference->Update())
   {
     throw std::runtime_error("cannot compute the reference mask");

@@ -52,6 +52,10 @@ unsigned char StrokeType(unsigned char bits)
   {
     return vtkNPRFeatureLines::BOUNDARY;
   }
+  if (bits & vtkNPRFeatureLines::INTERSECTION)
+  {
+    return vtkNPRFeatureLines::INTERSECTION;
+  }
   if (bits & vtkNPRFeatureLines::CREASE)
   {
     return vtkNPRFeatureLines::CREASE;
@@ -152,13 +156,15 @@ void FindSpans(const vtkNPRSceneLines::Segment& segment, const vtkNPRSceneView& 
   }
   const double length = view.ImageLength(segment.A, segment.B, clipped.T0, clipped.T1);
   clipped.Length = length;
+  // A smooth contour's own triangle and its neighbours do not hide it (vtkNPRReferenceMask).
+  const bool smooth = (segment.Type & vtkNPRFeatureLines::SMOOTH_CONTOUR) != 0;
   auto hiddenAt = [&](double s)
   {
     double p[3], from[3], to[3];
     PointAt(view, segment, clipped, s, p);
     view.Ray(p, epsilon, from, to);
     ++rays;
-    return occluders.Hidden(from, to);
+    return occluders.Hidden(from, to, smooth ? segment.Triangle : nullptr, smooth ? 3 : 0);
   };
   const vtkIdType steps =
     std::max<vtkIdType>(1, static_cast<vtkIdType>(std::ceil(length / spacing)));
@@ -457,7 +463,7 @@ bool vtkNPRDrawingLines::Update()
     return false;
   }
 
-  this->UpdateScene(false, false, 16384);
+  this->UpdateScene(16384);
   const vtkNPRSceneLines& scene = this->GetScene();
   const std::vector<vtkNPRSceneLines::Segment>& segments = scene.GetSegments();
 

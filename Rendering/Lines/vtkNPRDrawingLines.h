@@ -10,6 +10,11 @@
  * size, Update() computes on the CPU, in double precision:
  * - the silhouette, crease, boundary and non-manifold edges of every actor (vtkNPRFeatureLines,
  *   one per actor, kept between updates), in world coordinates, clipped to the view frustum;
+ *   with SmoothContours on, the silhouettes of a mesh with point normals are its smooth contour
+ *   (pieces inside its triangles, which chain through the edges they cross into one stroke: a
+ *   sphere's outline is one smooth loop, a saddle's does not zigzag), and with
+ *   IntersectionCurves on (the default) the curves where surfaces cross are lines too, their
+ *   pieces chained through the ends they share (vtkNPRRendererLines);
  * - where each one passes behind a surface of any actor: each edge is sampled at most
  *   SampleSpacing pixels apart in the image (at least its two ends), each sample tested by the
  *   reference mask's ray cast (vtkNPROccluders: from the near plane to the sample, short of it by
@@ -27,18 +32,22 @@
  *   (window coordinates: pixel (i, j) covers [i, i+1) x [j, j+1), row 0 at the bottom, as
  *   vtkNPRReferenceMask and vtkWindowToImageFilter have it) and z the depth as the depth buffer
  *   holds it ([0, 1], from the camera's projection);
- * - cell data "FeatureType" (vtkUnsignedCharArray): the stroke's one line type, a single bit of
- *   vtkNPRFeatureLines::FeatureTypes; an edge that is both silhouette and crease is a silhouette;
+ * - cell data "FeatureType" (vtkUnsignedCharArray): the stroke's kind, a single bit of
+ *   vtkNPRFeatureLines::FeatureTypes: SILHOUETTE (also a smooth contour), BOUNDARY, INTERSECTION,
+ *   CREASE or NON_MANIFOLD, the first of these an edge carries (an edge that is both silhouette
+ *   and crease is a silhouette);
  * - cell data "Hidden" (vtkUnsignedCharArray): 1 for a hidden stroke, 0 for a visible one;
  * - field data "ImageSize" (vtkIntArray, 2 components): the image's width and height.
  * Hidden pieces are output only with HiddenLines on.
  *
  * Accuracy: a piece of an edge hidden or uncovered between two samples (an occluder or a gap
  * narrower than SampleSpacing in the image, seen between them) can be missed; everything else is
- * exact to the bisection's 1/1000 pixel, OcclusionEpsilon and double rounding. Not included, as
- * in vtkNPRReferenceMask: intersection curves, translucent actors, props that are not vtkActors
- * with a vtkPolyDataMapper, mapper clipping planes. The actors inside assemblies and the drawn
- * level of a vtkLODProp3D are included (vtkNPRPropParts).
+ * exact to the bisection's 1/1000 pixel, OcclusionEpsilon and double rounding; a smooth contour's
+ * samples ignore the faces about its triangle, so a fold of the mesh within an edge length of
+ * it does not hide it (vtkNPRReferenceMask). Not included, as in vtkNPRReferenceMask:
+ * translucent actors, props that are not vtkActors with a vtkPolyDataMapper, mapper clipping
+ * planes. The actors inside assemblies and the drawn level of a vtkLODProp3D are included
+ * (vtkNPRPropParts).
  *
  * Cost: the adjacency of each mesh and the occlusion structure are built once and reused while
  * the meshes and actor matrices do not change, both reading the meshes' points and cells in

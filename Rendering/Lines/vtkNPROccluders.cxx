@@ -485,6 +485,18 @@ bool vtkNPROccluders::Hidden(const double fromWorld[3], const double toWorld[3],
       }
     }
   }
+  const glm::dvec3 from = ToFrame(fromWorld, this->FrameCenter, this->FrameScale);
+  const glm::dvec3 to = ToFrame(toWorld, this->FrameCenter, this->FrameScale);
+  // Also the triangles with a corner within the ignored triangle's longest edge of the ray's
+  // end: a grazing ray enters the surface that far from a contour (it lies about a sagitta
+  // inside the smooth surface), often beyond the triangles next to its own.
+  double reach = 0.0;
+  for (int i = 0; i < ignoring; ++i)
+  {
+    reach = std::max(reach,
+      glm::distance(
+        vtkNPRVector(ignoredPoints[i]), vtkNPRVector(ignoredPoints[(i + 1) % ignoring])));
+  }
   auto isIgnored = [&](const double* corner)
   {
     for (int i = 0; i < ignoring; ++i)
@@ -494,10 +506,8 @@ bool vtkNPROccluders::Hidden(const double fromWorld[3], const double toWorld[3],
         return true;
       }
     }
-    return false;
+    return glm::distance(vtkNPRVector(corner), to) < reach;
   };
-  const glm::dvec3 from = ToFrame(fromWorld, this->FrameCenter, this->FrameScale);
-  const glm::dvec3 to = ToFrame(toWorld, this->FrameCenter, this->FrameScale);
   const glm::dvec3 direction = to - from;
   return Traverse(
     this->Nodes,

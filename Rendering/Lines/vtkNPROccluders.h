@@ -56,10 +56,11 @@ public:
   void Build(const std::vector<vtkNPRMeshInstance>& actors, int trianglesPerGroup);
 
   // Whether a triangle crosses the segment between two world points, ends and edges included.
-  // The triangles with a corner at the coordinates of one of the `ignoredCount` scene points
-  // `ignored` do not count (a smooth contour's own triangle and its neighbours); a scene
-  // point's id is its mesh's id plus the points of the meshes before it in Build's list. Safe
-  // to call from several threads.
+  // With the `ignoredCount` scene points `ignored` (a smooth contour's triangle), the triangles
+  // with a corner at the coordinates of one of them, or closer to `to` than the longest edge
+  // between them, do not count (the contour's own surface about it); a scene point's id is its
+  // mesh's id plus the points of the meshes before it in Build's list. Safe to call from
+  // several threads.
   bool Hidden(const double from[3], const double to[3], const vtkIdType* ignored = nullptr,
     int ignoredCount = 0) const;
 

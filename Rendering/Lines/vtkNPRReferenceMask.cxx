@@ -258,7 +258,7 @@ bool vtkNPRReferenceMask::Update()
     return false;
   }
   unsigned char* pixels = internal.ClearMask(width, height);
-  this->UpdateScene(this->SmoothContours, this->IntersectionCurves, this->TrianglesPerLocator);
+  this->UpdateScene(this->TrianglesPerLocator);
   const vtkNPRSceneLines& scene = this->GetScene();
 
   // Visibility: samples along each segment's image, a ray for each.
@@ -280,8 +280,6 @@ bool vtkNPRReferenceMask::Update()
 void vtkNPRReferenceMask::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "IntersectionCurves: " << this->IntersectionCurves << "\n";
-  os << indent << "SmoothContours: " << this->SmoothContours << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "GenerateVisibleLines: " << this->GenerateVisibleLines << "\n";
   os << indent << "TrianglesPerLocator: " << this->TrianglesPerLocator << "\n";

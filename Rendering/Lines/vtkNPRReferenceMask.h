@@ -50,15 +50,21 @@
  * Smooth contours (SmoothContours, off by default; vtkNPRFeatureLines's SMOOTH_CONTOUR): such
  * a line lies inside a triangle, and on a coarse mesh often on a back-facing triangle just
  * behind the front-facing triangles next to the mesh's silhouette edge, so the ray above would
- * hide it along much of an outline. Its samples use the exact rule instead: the triangles that
- * share a point with the contour's triangle (by id or by equal coordinates, so also across
- * points split by vtkPolyDataNormals) do not count as occluders, as if the ray went on past
- * them; every other triangle, of the same mesh or another actor, hides as before. Chosen over
- * a ray stopped short by twice the triangle's longest edge: that bound would also let through
- * real occluders within that distance of the line (a fold of the mesh, a touching object),
- * while ignoring the neighbours costs nothing more per ray (three exact point comparisons per
- * triangle hit, and a copy of the scene's points, 24 bytes a point). A fold of the mesh within
- * one ring of the contour's triangle is the accuracy limit: it does not hide the contour.
+ * hide it along much of an outline. Its samples use another rule: the triangles that share a
+ * point with the contour's triangle (by id or by equal coordinates, so also across points split
+ * by vtkPolyDataNormals), and those with a corner closer to the sample than that triangle's
+ * longest edge, do not count as occluders, as if the ray went on past them; every other
+ * triangle, of the same mesh or another actor, hides as before. The contour lies about a
+ * sagitta inside the smooth surface, so a grazing ray enters the surface up to about an edge
+ * length from it, often beyond the triangles next to its own (with those alone, the drawing of
+ * drawing.md's isosurfaces had 278 strokes, 149 hidden, many of them short pieces that broke
+ * visible outlines; with the corners within reach too, 139 and 78, the outlines whole). Chosen
+ * over a ray stopped short by twice the triangle's
+ * longest edge, which would also let through large occluders crossing the ray there (a face of
+ * a touching object); the cost is three exact point comparisons and three distances per
+ * triangle hit, and a copy of the scene's points, 24 bytes a point. The accuracy limit: a fold
+ * of the mesh, or another object's corner, within one edge length of the contour does not hide
+ * it.
  *
  * The occlusion structure is rebuilt only when an actor's geometry, its matrix or the set of
  * actors changed (GetNumberOfLocatorBuilds()). Cost, measured on a 2-core machine (see
@@ -87,32 +93,6 @@ public:
   static vtkNPRReferenceMask* New();
   vtkTypeMacro(vtkNPRReferenceMask, vtkNPRRendererLines);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * With creases on, also the curves where two surfaces cross at more than CreaseAngle (on by
-   * default): parts of one mesh that pass through each other (a boss through a housing, a
-   * cylinder through a plate) or two actors. They are edges of no mesh, but the image shows a
-   * crease there and the edge pass draws one. Found once per occlusion structure: every pair of
-   * triangles that share no corner and whose boxes overlap is intersected (the crossings' cost is
-   * part of GetLocatorTime()); in the mask's FeatureType they are CREASE | INTERSECTION.
-   */
-  vtkSetMacro(IntersectionCurves, bool);
-  vtkGetMacro(IntersectionCurves, bool);
-  vtkBooleanMacro(IntersectionCurves, bool);
-  ///@}
-
-  ///@{
-  /**
-   * Silhouettes as smooth contours (off by default): passed to each actor's
-   * vtkNPRFeatureLines, so a mesh with point normals gets the contour of its interpolated
-   * normals (the outline its shading shows), one without keeps its mesh silhouettes. Their
-   * samples ignore the faces that share a point with the contour's triangle (see above).
-   */
-  vtkSetMacro(SmoothContours, bool);
-  vtkGetMacro(SmoothContours, bool);
-  vtkBooleanMacro(SmoothContours, bool);
-  ///@}
 
   ///@{
   /**
@@ -181,8 +161,6 @@ protected:
   vtkNPRReferenceMask();
   ~vtkNPRReferenceMask() override;
 
-  bool IntersectionCurves = true;
-  bool SmoothContours = false;
   double SampleSpacing = 0.25;
   bool GenerateVisibleLines = false;
   int TrianglesPerLocator = 16384;

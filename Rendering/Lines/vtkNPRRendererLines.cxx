@@ -40,8 +40,7 @@ bool vtkNPRRendererLines::StartUpdate(int& width, int& height)
   return true;
 }
 
-void vtkNPRRendererLines::UpdateScene(
-  bool smoothContours, bool intersections, int trianglesPerLocator)
+void vtkNPRRendererLines::UpdateScene(int trianglesPerLocator)
 {
   vtkNPRSceneLines::Settings settings;
   settings.Silhouettes = this->LineSettings->GetSilhouettes();
@@ -49,8 +48,8 @@ void vtkNPRRendererLines::UpdateScene(
   settings.Boundaries = this->LineSettings->GetBoundaries();
   settings.NonManifoldEdges = this->LineSettings->GetNonManifoldEdges();
   settings.CreaseAngle = this->LineSettings->GetCreaseAngle();
-  settings.SmoothContours = smoothContours;
-  settings.Intersections = settings.Creases && intersections;
+  settings.SmoothContours = this->SmoothContours;
+  settings.Intersections = settings.Creases && this->IntersectionCurves;
   this->Scene->Update(this->Renderer, settings, trianglesPerLocator);
   this->FeatureEdges = static_cast<vtkIdType>(this->Scene->GetSegments().size());
   this->LinesTime = this->Scene->GetLinesTime();
@@ -64,5 +63,7 @@ void vtkNPRRendererLines::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
   this->LineSettings->PrintSettings(os, indent, "CreaseAngle");
   os << indent << "OcclusionEpsilon: " << this->OcclusionEpsilon << "\n";
+  os << indent << "IntersectionCurves: " << this->IntersectionCurves << "\n";
+  os << indent << "SmoothContours: " << this->SmoothContours << "\n";
   os << indent << "NumberOfLocatorBuilds: " << this->GetNumberOfLocatorBuilds() << "\n";
 }

@@ -60,6 +60,34 @@ public:
 
   ///@{
   /**
+   * With creases on, also the curves where two surfaces cross at more than CreaseAngle (on by
+   * default): parts of one mesh that pass through each other (a boss through a housing, a pin
+   * through a block) or two actors. They are edges of no mesh, but the image shows a crease
+   * there and the edge pass draws one. Found once per occlusion structure: every pair of
+   * triangles that share no corner and whose boxes overlap is intersected (the crossings' cost is
+   * part of GetLocatorTime()); their FeatureType is CREASE | INTERSECTION.
+   */
+  vtkSetMacro(IntersectionCurves, bool);
+  vtkGetMacro(IntersectionCurves, bool);
+  vtkBooleanMacro(IntersectionCurves, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Silhouettes as smooth contours (off by default): passed to each actor's
+   * vtkNPRFeatureLines, so a mesh with point normals gets the contour of its interpolated
+   * normals (the outline its shading shows; where the normals are split, the mesh edges that
+   * are silhouettes), one without keeps its mesh silhouettes. A smooth contour lies inside a
+   * triangle, often a back-facing one just behind the front faces next to it: its visibility
+   * tests ignore the faces about its triangle (vtkNPRReferenceMask has the rule).
+   */
+  vtkSetMacro(SmoothContours, bool);
+  vtkGetMacro(SmoothContours, bool);
+  vtkBooleanMacro(SmoothContours, bool);
+  ///@}
+
+  ///@{
+  /**
    * How much of the segment from the near plane to a sample is left untested at the sample's
    * end, relative to its length, so that the faces that contain the line do not hide it
    * (default 1e-6, clamped to [0, 0.01]).
@@ -100,13 +128,15 @@ protected:
   bool StartUpdate(int& width, int& height);
   // The actors' feature lines for the camera and the occlusion structure, with smooth contours
   // and intersection curves as asked; FeatureEdges, LinesTime and LocatorTime set.
-  void UpdateScene(bool smoothContours, bool intersections, int trianglesPerLocator);
+  void UpdateScene(int trianglesPerLocator);
   vtkNPRSceneLines& GetScene() const { return *this->Scene; }
 
   vtkRenderer* Renderer = nullptr;
   int Size[2] = { 0, 0 };
   vtkNew<vtkNPRLineSettings> LineSettings;
   double OcclusionEpsilon = 1e-6;
+  bool IntersectionCurves = true;
+  bool SmoothContours = false;
 
   vtkIdType FeatureEdges = 0;
   vtkIdType RayCasts = 0;

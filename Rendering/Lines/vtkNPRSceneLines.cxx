@@ -28,6 +28,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <numeric>
 
 namespace
 {
@@ -36,6 +38,60 @@ using Clock = std::chrono::steady_clock;
 double Seconds(Clock::time_point start)
 {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The ends of the crossings (2 i: A of crossing i, 2 i + 1: its B) numbered as nodes: ends within
+// a billionth of the scene's size of each other are one node, since two neighbouring pairs of
+// triangles compute the end they share each with its own rounding; so the curves chain.
+std::vector<vtkIdType> NumberCrossingEnds(const std::vector<const vtkNPROccluders::Crossing*>& kept)
+{
+  const size_t count = 2 * kept.size();
+  auto end = [&](size_t i) { return vtkNPRVector(i % 2 ? kept[i / 2]->B : kept[i / 2]->A); };
+  double size = 0.0; // the largest coordinate or extent, which bounds the rounding
+  glm::dvec3 low(std::numeric_limits<double>::max()), high(-low);
+  for (size_t i = 0; i < count; ++i)
+  {
+    low = glm::min(low, end(i));
+    high = glm::max(high, end(i));
+  }
+  for (int k = 0; count > 0 && k < 3; ++k)
+  {
+    size = std::max({ size, high[k] - low[k], std::abs(low[k]), std::abs(high[k]) });
+  }
+  const double tolerance = 1e-9 * size;
+  // The ends sorted by x; those within the tolerance joined (union-find).
+  std::vector<size_t> order(count), root(count);
+  std::iota(order.begin(), order.end(), size_t{ 0 });
+  std::iota(root.begin(), root.end(), size_t{ 0 });
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return end(a).x < end(b).x; });
+  auto find = [&](size_t i)
+  {
+    while (root[i] != i)
+    {
+      i = root[i] = root[root[i]];
+    }
+    return i;
+  };
+  for (size_t a = 0; a < count; ++a)
+  {
+    for (size_t b = a + 1; b < count && end(order[b]).x - end(order[a]).x <= tolerance; ++b)
+    {
+      if (glm::distance(end(order[a]), end(order[b])) <= tolerance)
+      {
+        const size_t ra = find(order[a]), rb = find(order[b]);
+        root[std::max(ra, rb)] = std::min(ra, rb);
+      }
+    }
+  }
+  // Nodes numbered in the order of their first end.
+  std::vector<vtkIdType> nodes(count, -1);
+  vtkIdType next = 0;
+  for (size_t i = 0; i < count; ++i)
+  {
+    const size_t r = find(i);
+    nodes[i] = nodes[r] >= 0 ? nodes[r] : (nodes[r] = next++);
+  }
+  return nodes;
 }
 
 // Whether the actor shows surfaces: not a point cloud or a wireframe (the Points and Wireframe
@@ -353,19 +409,34 @@ void vtkNPRSceneLines::UpdateOccluders(const std::vector<vtkNPRMeshInstance>& ac
   // Where surfaces cross (parts of one mesh, or two actors), a crease of no mesh.
   if (settings.Intersections)
   {
-    for (const vtkNPROccluders::Crossing& crossing : this->Occluders.GetCrossings())
+    this->AppendCrossings(settings.CreaseAngle, nodeOffset);
+  }
+}
+
+void vtkNPRSceneLines::AppendCrossings(double creaseAngle, vtkIdType nodeOffset)
+{
+  std::vector<const vtkNPROccluders::Crossing*> kept;
+  for (const vtkNPROccluders::Crossing& crossing : this->Occluders.GetCrossings())
+  {
+    if (crossing.Angle > creaseAngle)
     {
-      if (crossing.Angle > settings.CreaseAngle)
-      {
-        Segment segment;
-        std::copy_n(crossing.A, 3, segment.A);
-        std::copy_n(crossing.B, 3, segment.B);
-        segment.Type = vtkNPRFeatureLines::CREASE | vtkNPRFeatureLines::INTERSECTION;
-        segment.NodeA = nodeOffset++;
-        segment.NodeB = nodeOffset++;
-        std::fill_n(segment.Triangle, 3, -1);
-        this->Segments.push_back(segment);
-      }
+      kept.push_back(&crossing);
     }
+  }
+  const std::vector<vtkIdType> nodes = NumberCrossingEnds(kept);
+  for (size_t i = 0; i < kept.size(); ++i)
+  {
+    if (nodes[2 * i] == nodes[2 * i + 1])
+    {
+      continue; // a crossing that touches at a point: no line
+    }
+    Segment segment;
+    std::copy_n(kept[i]->A, 3, segment.A);
+    std::copy_n(kept[i]->B, 3, segment.B);
+    segment.Type = vtkNPRFeatureLines::CREASE | vtkNPRFeatureLines::INTERSECTION;
+    segment.NodeA = nodeOffset + nodes[2 * i];
+    segment.NodeB = nodeOffset + nodes[2 * i + 1];
+    std::fill_n(segment.Triangle, 3, -1);
+    this->Segments.push_back(segment);
   }
 }

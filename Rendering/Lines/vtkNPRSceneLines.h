@@ -106,6 +106,9 @@ private:
     vtkIdType pointOffset);
   void UpdateOccluders(const std::vector<vtkNPRMeshInstance>& actors, const Settings& settings,
     int trianglesPerLocator, vtkIdType nodeOffset);
+  // The crossings at more than the crease angle as segments, their ends chained (nodes from
+  // nodeOffset on).
+  void AppendCrossings(double creaseAngle, vtkIdType nodeOffset);
 
   // Each mesh of each actor (a composite input has several) keeps its feature lines.
   using MeshKey = std::pair<vtkActor*, vtkPolyData*>;

@@ -23,9 +23,10 @@
  *   not "drawing" (or it has no vtkNPRPass), the window's image (rendered again) is embedded as a
  *   raster under the lines (EmbedImage: -1, the default, decides so; 0 never; 1 always).
  * - Order and structure: background, raster, hidden strokes, then the visible silhouettes,
- *   boundaries, creases and non-manifold edges. In an SVG file each of these classes of strokes
- *   is a `<g class="npr-hidden">`, `npr-silhouette`, `npr-boundary`, `npr-crease`,
- *   `npr-non-manifold` group of `<path>` elements, one per stroke (hidden ones with a
+ *   boundaries, creases, non-manifold edges and intersection curves. In an SVG file each of
+ *   these classes of strokes is a `<g class="npr-hidden">`, `npr-silhouette`, `npr-boundary`,
+ *   `npr-crease`, `npr-non-manifold`, `npr-intersection` group of `<path>` elements, one per
+ *   stroke (hidden ones with a
  *   `stroke-dasharray`), so a style sheet or an editor can restyle a class. Cairo writes no
  *   classes itself: the groups are added to its output afterwards (if its output has not the
  *   expected form, the file is written without them and a warning says so). PDF and PostScript
@@ -149,8 +150,9 @@ public:
   ///@{
   /**
    * What the last Write() painted: the strokes of a class (0 hidden, 1 silhouette, 2 boundary,
-   * 3 crease, 4 non-manifold) and in all; whether the SVG's groups were labelled; whether a
-   * raster was embedded; the seconds computing the strokes and painting and writing the file.
+   * 3 crease, 4 non-manifold, 5 intersection) and in all; whether the SVG's groups were
+   * labelled; whether a raster was embedded; the seconds computing the strokes and painting and
+   * writing the file.
    */
   vtkIdType GetNumberOfStrokes(int strokeClass) const;
   vtkIdType GetNumberOfStrokes() const;

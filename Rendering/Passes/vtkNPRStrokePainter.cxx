@@ -25,7 +25,8 @@
 namespace
 {
 // The vtkNPRFeatureLines::FeatureTypes bits (Lines's header is not needed for four values).
-constexpr unsigned char SilhouetteBit = 1, CreaseBit = 2, BoundaryBit = 4, NonManifoldBit = 8;
+constexpr unsigned char SilhouetteBit = 1, CreaseBit = 2, BoundaryBit = 4, NonManifoldBit = 8,
+                        IntersectionBit = 32;
 
 // The class of a visible stroke of this line type; -1 for an unknown type.
 int VisibleClass(unsigned char type)
@@ -40,20 +41,22 @@ int VisibleClass(unsigned char type)
       return NPR_STROKES_BOUNDARY;
     case NonManifoldBit:
       return NPR_STROKES_NON_MANIFOLD;
+    case IntersectionBit:
+      return NPR_STROKES_INTERSECTION;
     default:
       return -1;
   }
 }
 
 // Whether the style draws this line type (Silhouettes: silhouettes and boundaries; Creases:
-// creases and non-manifold edges).
+// creases, non-manifold edges and intersection curves).
 bool Drawn(const vtkNPRStrokeStyle& style, unsigned char type)
 {
   if (type == SilhouetteBit || type == BoundaryBit)
   {
     return style.Silhouettes;
   }
-  if (type == CreaseBit || type == NonManifoldBit)
+  if (type == CreaseBit || type == NonManifoldBit || type == IntersectionBit)
   {
     return style.Creases;
   }
@@ -75,6 +78,8 @@ const char* vtkNPRStrokeClassName(int strokeClass)
       return "npr-crease";
     case NPR_STROKES_NON_MANIFOLD:
       return "npr-non-manifold";
+    case NPR_STROKES_INTERSECTION:
+      return "npr-intersection";
     default:
       return "";
   }
@@ -129,6 +134,7 @@ void vtkNPRSelectStrokeLines(
   if (edges)
   {
     settings->SetCreaseAngle(edges->GetCreaseAngle());
+    lines->SetSmoothContours(edges->GetSmoothSilhouettes());
   }
   lines->SetHiddenLines(style.HiddenLines);
 }
@@ -178,7 +184,8 @@ void SetPen(cairo_t* cr, const vtkNPRStrokeStyle& style, int strokeClass)
   else
   {
     cairo_set_dash(cr, nullptr, 0, 0.0);
-    if (strokeClass == NPR_STROKES_CREASE || strokeClass == NPR_STROKES_NON_MANIFOLD)
+    if (strokeClass == NPR_STROKES_CREASE || strokeClass == NPR_STROKES_NON_MANIFOLD ||
+      strokeClass == NPR_STROKES_INTERSECTION)
     {
       color = style.CreaseColor;
       width = style.CreaseLineWidth;

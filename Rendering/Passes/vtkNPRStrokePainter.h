@@ -23,11 +23,11 @@ class vtkRenderer;
 struct vtkNPRStrokeStyle
 {
   double SilhouetteColor[3] = { 0.0, 0.0, 0.0 }; // silhouettes and boundaries
-  double CreaseColor[3] = { 0.0, 0.0, 0.0 };     // creases and non-manifold edges
+  double CreaseColor[3] = { 0.0, 0.0, 0.0 };     // creases, non-manifold edges, intersections
   double LineWidth = 1.5;                        // silhouettes and boundaries, pixels
-  double CreaseLineWidth = 1.5;                  // creases and non-manifold edges, pixels
+  double CreaseLineWidth = 1.5;                  // creases, non-manifold edges, intersections
   bool Silhouettes = true;                       // silhouettes and boundaries
-  bool Creases = true;                           // creases and non-manifold edges
+  bool Creases = true;                           // creases, non-manifold edges, intersections
   bool HiddenLines = false;
   double HiddenLineColor[3] = { 0.45, 0.45, 0.45 };
   double HiddenLineWidth = 0.9; // pixels
@@ -41,7 +41,8 @@ vtkNPRStrokeStyle vtkNPRMakeStrokeStyle(
   vtkNPRDrawingPass* drawing, vtkNPREdgePass* edges, vtkRenderer* renderer);
 
 // Asks `lines` for the strokes `style` draws: its Silhouettes as silhouettes and boundaries, its
-// Creases as creases and non-manifold edges, its HiddenLines; with an edge pass, its crease angle.
+// Creases as creases, non-manifold edges and intersection curves, its HiddenLines; with an edge
+// pass, its crease angle and, with its SmoothSilhouettes, silhouettes as smooth contours.
 void vtkNPRSelectStrokeLines(
   vtkNPRDrawingLines* lines, const vtkNPRStrokeStyle& style, vtkNPREdgePass* edges);
 
@@ -60,9 +61,11 @@ enum vtkNPRStrokeClass
   NPR_STROKES_BOUNDARY,     // visible boundary edges
   NPR_STROKES_CREASE,       // visible creases
   NPR_STROKES_NON_MANIFOLD, // visible non-manifold edges
+  NPR_STROKES_INTERSECTION, // visible curves where surfaces cross
   NPR_STROKE_CLASSES
 };
-// "npr-hidden", "npr-silhouette", "npr-boundary", "npr-crease", "npr-non-manifold".
+// "npr-hidden", "npr-silhouette", "npr-boundary", "npr-crease", "npr-non-manifold",
+// "npr-intersection".
 const char* vtkNPRStrokeClassName(int strokeClass);
 
 // How many strokes of each class were painted.

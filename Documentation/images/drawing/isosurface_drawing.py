@@ -4,11 +4,13 @@
 
     PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 \
         Documentation/images/drawing/isosurface_drawing.py -o isosurface.svg [--hidden-lines]
+        [--smooth-silhouettes]
 
 The field is the density of three Gaussian sources (vtkGaussianSplatter, 130^3 samples), shown by
 two isosurfaces (vtkContourFilter): the outer one, at 0.15, cut open by the plane z = 0.3
 (vtkClipPolyData), and the inner one, at 0.6, one lobe around each source. The renderer draws
-them through vtkNPRPass in the drawing style (hidden lines on request) and vtkNPRDrawingExporter
+them through vtkNPRPass in the drawing style (hidden lines and smooth silhouettes on request) and
+vtkNPRDrawingExporter
 writes the renderer's lines; the format comes from the extension (.svg, .pdf, .ps, .eps).
 make_images.sh in this folder runs it for drawing.md's pictures.
 """
@@ -30,6 +32,8 @@ def parse_arguments():
     parser.add_argument("-o", "--output", required=True, help="drawing to write (.svg, .pdf, .ps, .eps)")
     parser.add_argument("--size", default="640x480", help="image size WxH in pixels (= points)")
     parser.add_argument("--hidden-lines", action="store_true", help="also draw the hidden lines, dashed")
+    parser.add_argument("--smooth-silhouettes", action="store_true",
+                        help="silhouettes as the smooth contours of the isosurfaces' normals")
     parser.add_argument("--azimuth", type=float, default=20.0)
     parser.add_argument("--elevation", type=float, default=35.0)
     return parser.parse_args()
@@ -99,6 +103,7 @@ def main():
     npr = vtkNPRPass()
     npr.SetStyleToDrawing()
     npr.SetHiddenLines(args.hidden_lines)
+    npr.GetEdgePass().SetSmoothSilhouettes(args.smooth_silhouettes)
     renderer.SetPass(npr)
     window.Render()
 

@@ -36,10 +36,15 @@ render rotor_hidden.svg $rotor --style drawing --hidden-lines
 rasterise rotor_hidden
 
 # A scientific scene: an isosurface of VTK's wavelet, through vtkNPRPass and vtkNPRDrawingExporter.
-for hidden in "" --hidden-lines; do
-  name=isosurface${hidden:+_hidden}
-  echo "python3 Documentation/images/drawing/isosurface_drawing.py --size $size $hidden -o $name.svg"
+for flags in "" --hidden-lines --smooth-silhouettes "--smooth-silhouettes --hidden-lines"; do
+  case $flags in
+    "") name=isosurface ;;
+    --hidden-lines) name=isosurface_hidden ;;
+    --smooth-silhouettes) name=isosurface_smooth ;;
+    *) name=isosurface_smooth_hidden ;;
+  esac
+  echo "python3 Documentation/images/drawing/isosurface_drawing.py --size $size $flags -o $name.svg"
   PYTHONPATH="$python_path${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 \
-    "$out/isosurface_drawing.py" --size "$size" $hidden -o "$out/$name.svg"
+    "$out/isosurface_drawing.py" --size "$size" $flags -o "$out/$name.svg"
   rasterise "$name"
 done

@@ -19,6 +19,7 @@
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
 #include "vtkNPRDrawingLines.h"
+#include "vtkNPRFeatureLines.h"
 #include "vtkNPRModelReader.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
@@ -45,17 +46,21 @@ namespace
 using namespace nprFeatureLineTesting;
 // ---- A rod through a ring: each hides part of the other's lines ----
 // Visible line length in pixels on the ring (a torus of radii 1 and 0.25 about z) and on the rod
-// (radius 0.15 along x), each stroke segment told by where its world midpoint lies.
+// (radius 0.15 along x), each stroke segment told by where its world midpoint lies; the curves
+// where they cross, on both, are left out.
 std::array<double, 2> VisibleLengths(vtkNPRDrawingLines* lines)
 {
   vtkPolyData* strokes = lines->GetStrokes();
   vtkDataArray* image = strokes->GetPointData()->GetArray("ImageCoordinates");
   auto* hidden = vtkUnsignedCharArray::SafeDownCast(strokes->GetCellData()->GetArray("Hidden"));
+  auto* types = vtkUnsignedCharArray::SafeDownCast(strokes->GetCellData()->GetArray("FeatureType"));
   std::array<double, 2> length = { 0.0, 0.0 };
   nprForEachCell(strokes->GetLines(),
     [&](vtkIdType cell, vtkIdType size, const vtkIdType* ids)
     {
-      for (vtkIdType i = 0; !hidden->GetValue(cell) && i + 1 < size; ++i)
+      const bool counted =
+        !hidden->GetValue(cell) && types->GetValue(cell) != vtkNPRFeatureLines::INTERSECTION;
+      for (vtkIdType i = 0; counted && i + 1 < size; ++i)
       {
         double a[3], b[3];
         strokes->GetPoint(ids[i], a);

@@ -48,8 +48,8 @@ int SvgStructure()
     svg.find("width=\"800pt\" height=\"600pt\" viewBox=\"0 0 800 600\"") != std::string::npos,
     "page size");
   const char* classes[] = { "npr-hidden", "npr-silhouette", "npr-boundary", "npr-crease",
-    "npr-non-manifold" };
-  for (int k = 0; k < 5; ++k)
+    "npr-non-manifold", "npr-intersection" };
+  for (int k = 0; k < 6; ++k)
   {
     const std::string open = std::string("<g class=\"") + classes[k] + "\">";
     const size_t start = svg.find(open);

@@ -240,6 +240,38 @@ int DrawingReuse()
 }
 NPR_TEST_CASE("reuse", DrawingReuse);
 
+// ---- Smooth silhouettes through the edge pass's SmoothSilhouettes ----
+// A coarse sphere (24 x 12 facets): with the setting, its outline is one closed smooth stroke of
+// pieces inside its triangles, so more points than its mesh silhouette's polygon; switching it
+// computes the strokes again.
+int DrawingSmooth()
+{
+  Scene scene;
+  const double origin[3] = { 0, 0, 0 };
+  nprAddSphere(scene.Renderer, origin, 1.0, nprGrey, 24);
+  const double eye[3] = { 2.6, 1.8, 2.2 };
+  nprLookAtOrigin(scene.Camera(), eye, 10.0);
+  vtkNPRDrawingPass* drawing = scene.Drawing();
+  vtkIdType points[2] = { 0, 0 }; // mesh, smooth
+  for (int smooth = 0; smooth < 2; ++smooth)
+  {
+    scene.Edges()->SetSmoothSilhouettes(smooth == 1);
+    scene.Render();
+    vtkPolyData* strokes = drawing->GetStrokes();
+    points[smooth] = strokes->GetNumberOfPoints();
+    NPR_CHECK(drawing->GetNumberOfStrokeUpdates() == smooth + 1 &&
+        drawing->GetDrawingLines()->GetSmoothContours() == (smooth == 1),
+      "SmoothSilhouettes " << smooth << ": not passed to the drawing lines");
+    NPR_CHECK(strokes->GetNumberOfLines() == 1,
+      "SmoothSilhouettes " << smooth << ": " << strokes->GetNumberOfLines()
+                           << " strokes for the sphere's outline");
+  }
+  std::cout << "outline points: " << points[0] << " mesh, " << points[1] << " smooth\n";
+  NPR_CHECK(points[1] > points[0], "the smooth outline has no more points than the polygon");
+  return nprTestResult();
+}
+NPR_TEST_CASE("smooth", DrawingSmooth);
+
 // ---- The CAD part with hidden lines, against its baseline ----
 int DrawingBaseline()
 {
