@@ -16,6 +16,7 @@
 
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
+#include "vtkNPRDrawingSheet.h"
 #include "vtkNPRInkPass.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRReferenceMask.h"
@@ -56,6 +57,23 @@ void WriteReferenceMask(
     throw std::runtime_error("cannot compute the reference mask");
   }
   nprWritePNG(reference->GetMask(), options.ReferenceMask);
+}
+
+// --sheet: the views on one page, as a vector file.
+void WriteSheet(vtkRenderer* renderer, const nprRenderOptions& options)
+{
+  vtkNew<vtkNPRDrawingSheet> sheet;
+  sheet->SetRenderer(renderer);
+  sheet->SetFileName(options.Output.c_str());
+  sheet->SetViews(options.Sheet.c_str());
+  sheet->SetPaperSize(vtkNPRDrawingSheet::GetPaperSizeFromName(options.SheetPaper.c_str()));
+  sheet->SetArrangement(
+    options.SheetThirdAngle ? vtkNPRDrawingSheet::THIRD_ANGLE : vtkNPRDrawingSheet::FIRST_ANGLE);
+  sheet->SetMargin(options.SheetMargin);
+  if (!sheet->Write())
+  {
+    throw std::runtime_error(sheet->GetErrorMessage());
+  }
 }
 
 // --frames: times the main style and every --compare-style, and prints one JSON line about the
@@ -250,7 +268,11 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
     TimeFrames(options, window, renderer, pass, triangles, width, height);
   }
   progress.Start();
-  if (!options.Output.empty() && nprIsDrawingFile(options.Output))
+  if (!options.Sheet.empty())
+  {
+    WriteSheet(renderer, options);
+  }
+  else if (!options.Output.empty() && nprIsDrawingFile(options.Output))
   {
     nprWriteDrawing(renderer, options.Output); // .svg, .pdf, .ps, .eps
   }

@@ -7,6 +7,8 @@
 #include "nprPassOptions.h"
 #include "nprWindowImage.h"
 
+#include "vtkNPRDrawingExporter.h"
+#include "vtkNPRDrawingSheet.h"
 #include "vtkNPRRenderWindowFactory.h"
 
 #include <iostream>
@@ -28,6 +30,79 @@ void WarnAboutFlags(const nprRenderOptions& options)
   {
     std::cerr << "npr-render: warning: " << warning << "\n";
   }
+}
+
+// The drawing sheet's flags; false for another flag.
+bool ParseSheetOption(nprArgumentReader& arguments, nprRenderOptions& options)
+{
+  const std::string& arg = arguments.Current();
+  if (arg == "--sheet")
+  {
+    options.Sheet = arguments.Value();
+    for (const std::string& view : nprSplitList(options.Sheet))
+    {
+      if (!vtkNPRDrawingSheet::IsViewName(view.c_str()))
+      {
+        throw nprUsageError("--sheet: unknown view '" + view +
+          "' (views: " + vtkNPRDrawingSheet::GetViewNames() + ")");
+      }
+    }
+  }
+  else if (arg == "--sheet-paper")
+  {
+    options.SheetPaper = arguments.Value();
+    if (vtkNPRDrawingSheet::GetPaperSizeFromName(options.SheetPaper.c_str()) < 0)
+    {
+      throw nprUsageError("--sheet-paper " + options.SheetPaper + ": not A4, A3 or letter");
+    }
+  }
+  else if (arg == "--sheet-angle")
+  {
+    const std::string angle = arguments.Value();
+    if (angle != "first" && angle != "third")
+    {
+      throw nprUsageError("--sheet-angle " + angle + ": not first or third");
+    }
+    options.SheetThirdAngle = angle == "third";
+  }
+  else if (arg == "--sheet-margin")
+  {
+    options.SheetMargin = nprParseRange(arg, arguments.Value(), 0.0, 50.0);
+  }
+  else
+  {
+    return false;
+  }
+  options.SheetFlags.insert(arg);
+  return true;
+}
+
+// A sheet is the drawing style's, written as a vector file; its flags need --sheet.
+void CheckSheetOptions(nprRenderOptions& options)
+{
+  if (options.Sheet.empty())
+  {
+    if (!options.SheetFlags.empty())
+    {
+      throw nprUsageError(*options.SheetFlags.begin() + " needs --sheet VIEWS");
+    }
+    return;
+  }
+  if (!nprIsDrawingFile(options.Output))
+  {
+    throw nprUsageError(std::string("--sheet needs -o FILE with the extension ") +
+      vtkNPRDrawingExporter::GetSupportedExtensions());
+  }
+  if (options.Orbit > 0 || options.Frames > 0 || !options.EdgeMask.empty())
+  {
+    throw nprUsageError("--sheet cannot be combined with --orbit, --frames or --edge-mask");
+  }
+  if (options.Pass.GivenFlags.count("--style") && options.Pass.Style != "drawing")
+  {
+    throw nprUsageError(
+      "--sheet draws the drawing style: leave out --style or give --style drawing");
+  }
+  options.Pass.Style = "drawing";
 }
 
 const char* const Usage = R"(usage: npr-render [options] MODEL [MODEL...]
@@ -62,6 +137,14 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
   --reference-mask FILE    also write the ground truth of --lines and --crease-angle:
                            the visible object-space lines, white on black, 8-bit grey
                            PNG of the render's size (any style)
+  --sheet VIEWS            write a drawing sheet to -o (.svg, .pdf, .ps, .eps): these
+                           views of the scene on one page, one scale, with their names
+                           (comma separated: iso, front, top, right, left, back, bottom);
+                           the drawing style's lines (--hidden-lines and the line flags)
+  --sheet-paper NAME       A4 (default), A3 or letter, landscape
+  --sheet-angle ANGLE      first (default: the top view under the front view, the right
+                           view to its left) or third (top above, right to the right)
+  --sheet-margin MM        the page's margins in millimetres, 0..50 (default 10)
   --quiet                  no progress lines (otherwise each step that takes over a
                            second, such as reading a large model, prints one on stderr)
   -h, --help               this text
@@ -80,9 +163,11 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
   while (arguments.Next())
   {
     const std::string& arg = arguments.Current();
-    if (nprParsePassOption(arguments, pass) || nprParseSceneOption(arguments, options))
+    if (nprParsePassOption(arguments, pass) || nprParseSceneOption(arguments, options) ||
+      ParseSheetOption(arguments, options))
     {
-      continue; // --style and the flags of the styles; the models, the frame and the camera
+      continue; // --style and the flags of the styles; the models, the frame and the camera;
+                // the drawing sheet
     }
     if (arg == "-o" || arg == "--output")
     {
@@ -142,6 +227,7 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
     }
   }
   nprCheckSceneOptions(options);
+  CheckSheetOptions(options);
   const std::string outputKind = nprOrbitOutputKind(options.Output);
   if (options.Orbit > 0)
   {

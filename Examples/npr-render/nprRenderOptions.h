@@ -7,6 +7,7 @@
 #include "nprCameraOptions.h"
 #include "nprPassSettings.h"
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,13 @@ struct nprRenderOptions : nprSceneOptions
   std::string EdgeMask;
   std::string ReferenceMask;
   std::vector<std::string> CompareStyles;
-  bool Quiet = false;   // --quiet: no progress lines
-  nprPassSettings Pass; // --style and the flags of the styles
+  bool Quiet = false; // --quiet: no progress lines
+  std::string Sheet;  // --sheet VIEWS: a drawing sheet of these views
+  std::string SheetPaper = "A4";
+  bool SheetThirdAngle = false;
+  double SheetMargin = 10.0;        // millimetres
+  std::set<std::string> SheetFlags; // the --sheet-* flags given
+  nprPassSettings Pass;             // --style and the flags of the styles
 };
 
 // Prints --help and exits for -h; throws nprUsageError for anything else that is wrong.

@@ -9,6 +9,7 @@
 #include "vtkNPREdgePass.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRStrokePainter.h"
+#include "vtkNPRVectorFile.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
@@ -18,22 +19,15 @@
 #include "vtkSmartPointer.h"
 #include "vtkWindowToImageFilter.h"
 
-#include <cairo-pdf.h>
-#include <cairo-ps.h>
-#include <cairo-svg.h>
 #include <cairo.h>
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <chrono>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <string>
-#include <system_error>
 #include <vector>
 
 namespace
@@ -42,12 +36,6 @@ using Clock = std::chrono::steady_clock;
 double Seconds(Clock::time_point start)
 {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-cairo_status_t AppendToString(void* closure, const unsigned char* data, unsigned int length)
-{
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
 }
 
 // Puts each class of strokes of Cairo's SVG into a <g class="npr-..."> group. Cairo 1.16 writes
@@ -140,28 +128,6 @@ vtkSmartPointer<vtkImageData> GrabRaster(vtkRenderer* renderer)
   grab->ShouldRerenderOn();
   grab->Update();
   return grab->GetOutput();
-}
-
-// A Cairo surface of the format that writes into `bytes`.
-cairo_surface_t* CreateSurface(int format, std::string& bytes, int width, int height)
-{
-  cairo_surface_t* surface = nullptr;
-  switch (format)
-  {
-    case vtkNPRDrawingExporter::SVG:
-      surface = cairo_svg_surface_create_for_stream(AppendToString, &bytes, width, height);
-      cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PT);
-      break;
-    case vtkNPRDrawingExporter::PDF:
-      surface = cairo_pdf_surface_create_for_stream(AppendToString, &bytes, width, height);
-      cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "vtkNPR");
-      break;
-    default:
-      surface = cairo_ps_surface_create_for_stream(AppendToString, &bytes, width, height);
-      cairo_ps_surface_set_eps(surface, format == vtkNPRDrawingExporter::EPS ? 1 : 0);
-      break;
-  }
-  return surface;
 }
 
 // Paints the raster over the whole width x height of `cr`.
@@ -365,28 +331,13 @@ bool vtkNPRDrawingExporter::Write()
 
 bool vtkNPRDrawingExporter::CheckPath(Target& target)
 {
-  if (!this->FileName || !*this->FileName)
-  {
-    return this->Fail(vtkErrorCode::NoFileNameError, "no file name");
-  }
-  const std::string path = target.Path = this->FileName;
-  target.Format = GetFormatFromFileName(this->FileName);
+  std::string error;
+  target.Format = vtkNPRCheckVectorPath(this->FileName, this->ErrorCode, error);
   if (target.Format < 0)
   {
-    return this->Fail(vtkErrorCode::FileFormatError,
-      path + ": unsupported extension (supported: " + GetSupportedExtensions() + ")");
+    return this->Fail(this->ErrorCode, error);
   }
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-  {
-    return this->Fail(vtkErrorCode::CannotOpenFileError, path + ": is a directory");
-  }
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
-  {
-    return this->Fail(
-      vtkErrorCode::CannotOpenFileError, path + ": no such directory: " + parent.string());
-  }
+  target.Path = this->FileName;
   return true;
 }
 
@@ -463,7 +414,8 @@ bool vtkNPRDrawingExporter::ComputeStrokes(const Target& target)
 bool vtkNPRDrawingExporter::Paint(const Target& target, vtkImageData* raster, std::string& bytes)
 {
   Internals& internal = *this->Internal;
-  cairo_surface_t* surface = CreateSurface(target.Format, bytes, target.Width, target.Height);
+  cairo_surface_t* surface =
+    vtkNPRCreateVectorSurface(target.Format, bytes, target.Width, target.Height);
   cairo_t* cr = cairo_create(surface);
   double background[3];
   target.Renderer->GetBackground(background);
@@ -474,21 +426,14 @@ bool vtkNPRDrawingExporter::Paint(const Target& target, vtkImageData* raster, st
     PaintRaster(cr, raster, target.Width, target.Height);
     internal.Embedded = true;
   }
-  std::string error;
-  bool painted = vtkNPRPaintStrokes(
+  std::string error, unused;
+  const bool painted = vtkNPRPaintStrokes(
     cr, internal.Lines->GetStrokes(), target.Style, target.Height, internal.Counts, error);
   cairo_destroy(cr);
-  cairo_surface_finish(surface);
-  const cairo_status_t status = cairo_surface_status(surface);
-  cairo_surface_destroy(surface);
-  if (!painted)
+  const bool finished = vtkNPRFinishVectorSurface(surface, painted ? error : unused);
+  if (!painted || !finished)
   {
     return this->Fail(vtkErrorCode::UnknownError, target.Path + ": " + error);
-  }
-  if (status != CAIRO_STATUS_SUCCESS)
-  {
-    return this->Fail(
-      vtkErrorCode::UnknownError, target.Path + ": Cairo: " + cairo_status_to_string(status));
   }
   if (target.Format == SVG)
   {
@@ -505,20 +450,9 @@ bool vtkNPRDrawingExporter::Paint(const Target& target, vtkImageData* raster, st
 
 bool vtkNPRDrawingExporter::WriteFile(const std::string& path, const std::string& bytes)
 {
-  std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  if (!file)
-  {
-    return this->Fail(vtkErrorCode::CannotOpenFileError,
-      path + ": cannot open for writing: " + std::strerror(errno));
-  }
-  file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  file.close();
-  if (!file)
-  {
-    std::remove(path.c_str()); // no partial file
-    return this->Fail(vtkErrorCode::OutOfDiskSpaceError, path + ": cannot write the file");
-  }
-  return true;
+  std::string error;
+  return vtkNPRWriteVectorFile(path, bytes, this->ErrorCode, error) ||
+    this->Fail(this->ErrorCode, error);
 }
 
 void vtkNPRDrawingExporter::PrintSelf(ostream& os, vtkIndent indent)

@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """npr-render -o with vector drawings: .svg, .pdf, .ps and .eps write the lines (over the image,
 in the edges style), .png stays an image, and an unknown extension, a missing folder or a folder
-as the file each exit non-zero with one line `npr-render: error: ...` and leave no file."""
+as the file each exit non-zero with one line `npr-render: error: ...` and leave no file; --sheet
+writes a drawing sheet in each format and refuses what it cannot do."""
 import os
 import shutil
 import subprocess
@@ -82,5 +83,24 @@ for target, expected in ((out("drawing.jpg"), "unknown extension (supported: .pn
     check(not os.path.isfile(target), "-o %s: no file left" % os.path.basename(target))
 rc, _, err = run(part, "--orbit", "3", "-o", out("orbit.svg"))
 check(rc != 0 and "--orbit needs" in err, "--orbit with .svg is refused (%s)" % err.strip())
+
+# Drawing sheets: the issue's command, the page in each format, and the usage errors (exit 2).
+for name, magic in (("sheet.pdf", b"%PDF"), ("sheet.svg", b"<?xml"), ("sheet.eps", b"%!PS")):
+    rc, _, err = run(part, "--sheet", "iso,front,top,right", "-o", out(name))
+    data = open(out(name), "rb").read() if os.path.isfile(out(name)) else b""
+    check(rc == 0 and data.startswith(magic), "--sheet -o %s (%r)" % (name, err.strip()))
+rc, _, err = run(part, "--sheet", "front,top", "--sheet-paper", "A3", "--sheet-angle", "third",
+                 "--sheet-margin", "15", "--hidden-lines", "-o", out("sheet_a3.pdf"))
+data = open(out("sheet_a3.pdf"), "rb").read() if os.path.isfile(out("sheet_a3.pdf")) else b""
+size = pdf_page_size(out("sheet_a3.pdf"), data) if data else None
+check(rc == 0 and err == "" and (size is None or size == (1191, 842)),
+      "--sheet-paper A3: an A3 landscape page, no warning (%r, %r)" % (size, err.strip()))
+for extra, expected in ((["--sheet", "front,side", "-o", out("x.svg")], "unknown view 'side'"),
+                        (["--sheet", "front", "-o", out("x.png")], "--sheet needs -o FILE"),
+                        (["--sheet-angle", "third", "-o", out("x.svg")], "needs --sheet VIEWS"),
+                        (["--sheet", "front", "--sheet-paper", "B5", "-o", out("x.svg")], "not A4, A3 or letter"),
+                        (["--sheet", "front", "--style", "edges", "-o", out("x.svg")], "--sheet draws the drawing style")):
+    rc, _, err = run(part, *extra)
+    check(rc == 2 and expected in err, "%s: exit 2 with '%s' (%r)" % (" ".join(extra[:2]), expected, err.strip()))
 
 cli.exit()

@@ -35,6 +35,11 @@ rasterise rotor
 render rotor_hidden.svg $rotor --style drawing --hidden-lines
 rasterise rotor_hidden
 
+# A drawing sheet of the CAD part: four views on A4, rasterised at the page's size in points.
+render cad_part_sheet.svg Testing/Data/cad_part.vtp --sheet iso,front,top,right --hidden-lines
+echo "rsvg-convert -w 842 -h 595 cad_part_sheet.svg -o cad_part_sheet.png"
+rsvg-convert -b white -w 842 -h 595 "$out/cad_part_sheet.svg" -o "$out/cad_part_sheet.png"
+
 # A scientific scene: an isosurface of VTK's wavelet, through vtkNPRPass and vtkNPRDrawingExporter.
 for flags in "" --hidden-lines --smooth-silhouettes "--smooth-silhouettes --hidden-lines"; do
   case $flags in
