@@ -91,6 +91,38 @@ struct vtkNPRDrawingSheetView
   vtkIdType Strokes = 0;
 };
 
+namespace
+{
+// The bounding box's extent in each view's image (its corners on the view's axes), and the
+// largest width of each column and height of each row of the grid.
+void MeasureViews(std::vector<vtkNPRDrawingSheetView>& views, const double bounds[6],
+  std::map<int, double>& columns, std::map<int, double>& rows)
+{
+  for (vtkNPRDrawingSheetView& view : views)
+  {
+    double right[3], up[3];
+    ViewAxes(Kinds[view.Kind], right, up);
+    double low[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+    double high[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const double p[3] = { bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)],
+        bounds[4 + ((corner >> 2) & 1)] };
+      const double along[2] = { vtkMath::Dot(p, right), vtkMath::Dot(p, up) };
+      for (int k = 0; k < 2; ++k)
+      {
+        low[k] = std::min(low[k], along[k]);
+        high[k] = std::max(high[k], along[k]);
+      }
+    }
+    view.Width = high[0] - low[0];
+    view.Height = high[1] - low[1];
+    columns[view.Column] = std::max(columns[view.Column], view.Width);
+    rows[view.Row] = std::max(rows[view.Row], view.Height);
+  }
+}
+}
+
 struct vtkNPRDrawingSheet::Internals
 {
   std::vector<vtkNPRDrawingSheetView> Views;
@@ -261,30 +293,9 @@ bool vtkNPRDrawingSheet::LayOut()
   {
     return this->Fail(vtkErrorCode::UnknownError, "nothing visible to draw");
   }
-  // Each view's extent: the bounding box's corners on its image axes.
-  std::map<int, double> columns, rows; // the widest view of a column, the highest of a row
-  for (vtkNPRDrawingSheetView& view : internal.Views)
-  {
-    double right[3], up[3];
-    ViewAxes(Kinds[view.Kind], right, up);
-    double low[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX },
-           high[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-    for (int corner = 0; corner < 8; ++corner)
-    {
-      const double p[3] = { bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)],
-        bounds[4 + ((corner >> 2) & 1)] };
-      const double along[2] = { vtkMath::Dot(p, right), vtkMath::Dot(p, up) };
-      for (int k = 0; k < 2; ++k)
-      {
-        low[k] = std::min(low[k], along[k]);
-        high[k] = std::max(high[k], along[k]);
-      }
-    }
-    view.Width = high[0] - low[0];
-    view.Height = high[1] - low[1];
-    columns[view.Column] = std::max(columns[view.Column], view.Width);
-    rows[view.Row] = std::max(rows[view.Row], view.Height);
-  }
+  // Each view's extent, and the widest view of each column and the highest of each row.
+  std::map<int, double> columns, rows;
+  MeasureViews(internal.Views, bounds, columns, rows);
   // The paper, and the one scale that fits the grid inside the margins.
   const double sizes[3][2] = { { 210.0, 297.0 }, { 297.0, 420.0 }, { 215.9, 279.4 } };
   const double* paper = sizes[this->PaperSize];
