@@ -574,6 +574,24 @@ void vtkNPROccluders::CrossingsOf(std::uint32_t position, std::vector<Crossing>&
     }
     return overlap;
   };
+  // A's plane, for a cheap first test: most triangles whose boxes overlap A's lie on one side
+  // of it. The same arithmetic and tolerance as vtkNPRCrossTriangles' first test, which would
+  // reject them too.
+  const glm::dvec3 origin = vtkNPRVector(a[0]);
+  glm::dvec3 normal = glm::cross(vtkNPRVector(a[1]) - origin, vtkNPRVector(a[2]) - origin);
+  const double length = glm::length(normal);
+  normal = length > 0.0 ? normal / length : glm::dvec3(0.0);
+  auto oneSide = [&](const double* const b[3])
+  {
+    double d[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      d[k] = glm::dot(normal, vtkNPRVector(b[k]) - origin);
+    }
+    const bool above = d[0] > 1e-12 || d[1] > 1e-12 || d[2] > 1e-12;
+    const bool below = d[0] < -1e-12 || d[1] < -1e-12 || d[2] < -1e-12;
+    return !above || !below;
+  };
   Traverse(this->Nodes, overlaps,
     [&](std::uint32_t other)
     {
@@ -583,6 +601,10 @@ void vtkNPROccluders::CrossingsOf(std::uint32_t position, std::vector<Crossing>&
       }
       const double* b[3];
       this->Corners(other, b);
+      if (length > 0.0 && oneSide(b))
+      {
+        return false;
+      }
       // Neighbours (a corner at the same coordinates) meet along their shared edge or point.
       bool neighbours = false;
       for (int u = 0; u < 3 && !neighbours; ++u)
