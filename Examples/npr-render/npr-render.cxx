@@ -204,6 +204,24 @@ void WarnWhenNothingDrawn(vtkRenderWindow* window, long long triangles)
   }
 }
 
+// -o: the sheet, the drawing as a vector file, or the window's image.
+void WriteOutput(vtkRenderWindow* window, vtkRenderer* renderer, const nprRenderOptions& options)
+{
+  if (!options.Sheet.empty())
+  {
+    WriteSheet(renderer, options);
+  }
+  else if (!options.Output.empty() && nprIsDrawingFile(options.Output))
+  {
+    nprWriteDrawing(renderer, options.Output); // .svg, .pdf, .ps, .eps
+  }
+  else if (!options.Output.empty())
+  {
+    // The first frame is what it writes, unless --frames drew others since.
+    nprWriteWindowPNG(window, options.Output, false, options.Frames > 0);
+  }
+}
+
 int Run(const nprRenderOptions& options, nprOutputWindow* messages)
 {
   MakeOutputFolders(options);
@@ -268,19 +286,7 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
     TimeFrames(options, window, renderer, pass, triangles, width, height);
   }
   progress.Start();
-  if (!options.Sheet.empty())
-  {
-    WriteSheet(renderer, options);
-  }
-  else if (!options.Output.empty() && nprIsDrawingFile(options.Output))
-  {
-    nprWriteDrawing(renderer, options.Output); // .svg, .pdf, .ps, .eps
-  }
-  else if (!options.Output.empty())
-  {
-    // The first frame is what it writes, unless --frames drew others since.
-    nprWriteWindowPNG(window, options.Output, false, options.Frames > 0);
-  }
+  WriteOutput(window, renderer, options);
   if (!options.Output.empty())
   {
     progress.Done("wrote " + options.Output);

@@ -8,6 +8,7 @@
 #include "vtkNPRDrawingPass.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRPass.h"
+#include "vtkNPRPassUtilities.h"
 #include "vtkNPRStrokePainter.h"
 #include "vtkNPRVectorFile.h"
 #include "vtkNew.h"
@@ -202,9 +203,8 @@ int vtkNPRDrawingExporter::GetFormatFromFileName(const char* fileName)
   {
     return -1;
   }
-  std::string extension = std::filesystem::path(fileName).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension =
+    vtkNPRLowerCase(std::filesystem::path(fileName).extension().string());
   if (extension == ".svg")
   {
     return SVG;

@@ -7,6 +7,7 @@
 #include "vtkMath.h"
 #include "vtkNPRDrawingLines.h"
 #include "vtkNPRPass.h"
+#include "vtkNPRPassUtilities.h"
 #include "vtkNPRStrokePainter.h"
 #include "vtkNPRVectorFile.h"
 #include "vtkNew.h"
@@ -54,19 +55,23 @@ const ViewKind Kinds[] = {
   { "bottom", "BOTTOM", { 0, 1, 0 }, { 0, 0, 1 }, 1, 0 },
 };
 
-std::string Lower(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
-
 std::string Trim(const std::string& text)
 {
   const size_t first = text.find_first_not_of(" \t");
   return first == std::string::npos ? ""
                                     : text.substr(first, text.find_last_not_of(" \t") - first + 1);
 }
+
+// One view of the sheet: its kind, its place in the grid, the bounding box's extent in its image
+// (model units) and its box on the page (points).
+struct SheetView
+{
+  int Kind;
+  int Column, Row;
+  double Width = 0.0, Height = 0.0;
+  double Box[4] = { 0.0, 0.0, 0.0, 0.0 };
+  vtkIdType Strokes = 0;
+};
 
 // The view's image axes: right and up, unit length.
 void ViewAxes(const ViewKind& kind, double right[3], double up[3])
@@ -78,27 +83,13 @@ void ViewAxes(const ViewKind& kind, double right[3], double up[3])
   vtkMath::Normalize(right);
   vtkMath::Cross(right, direction, up);
 }
-}
 
-// One view of the sheet: its kind, its place in the grid, the bounding box's extent in its image
-// (model units) and its box on the page (points).
-struct vtkNPRDrawingSheetView
-{
-  int Kind;
-  int Column, Row;
-  double Width = 0.0, Height = 0.0;
-  double Box[4] = { 0.0, 0.0, 0.0, 0.0 };
-  vtkIdType Strokes = 0;
-};
-
-namespace
-{
 // The bounding box's extent in each view's image (its corners on the view's axes), and the
 // largest width of each column and height of each row of the grid.
-void MeasureViews(std::vector<vtkNPRDrawingSheetView>& views, const double bounds[6],
+void MeasureViews(std::vector<SheetView>& views, const double bounds[6],
   std::map<int, double>& columns, std::map<int, double>& rows)
 {
-  for (vtkNPRDrawingSheetView& view : views)
+  for (SheetView& view : views)
   {
     double right[3], up[3];
     ViewAxes(Kinds[view.Kind], right, up);
@@ -125,7 +116,7 @@ void MeasureViews(std::vector<vtkNPRDrawingSheetView>& views, const double bound
 
 struct vtkNPRDrawingSheet::Internals
 {
-  std::vector<vtkNPRDrawingSheetView> Views;
+  std::vector<SheetView> Views;
   double Bounds[6];
   double Page[2] = { 0.0, 0.0 };
   double Scale = 0.0;
@@ -152,13 +143,13 @@ vtkNPRDrawingSheet::~vtkNPRDrawingSheet()
 
 int vtkNPRDrawingSheet::GetPaperSizeFromName(const char* name)
 {
-  const std::string lower = Lower(name ? name : "");
+  const std::string lower = vtkNPRLowerCase(name ? name : "");
   return lower == "a4" ? A4 : lower == "a3" ? A3 : lower == "letter" ? LETTER : -1;
 }
 
 bool vtkNPRDrawingSheet::IsViewName(const char* name)
 {
-  const std::string lower = Lower(Trim(name ? name : ""));
+  const std::string lower = vtkNPRLowerCase(Trim(name ? name : ""));
   return std::any_of(
     std::begin(Kinds), std::end(Kinds), [&](const ViewKind& kind) { return lower == kind.Name; });
 }
@@ -254,12 +245,12 @@ bool vtkNPRDrawingSheet::Write()
 
 bool vtkNPRDrawingSheet::ParseViews()
 {
-  std::vector<vtkNPRDrawingSheetView>& views = this->Internal->Views;
+  std::vector<SheetView>& views = this->Internal->Views;
   std::stringstream list(this->Views ? this->Views : "");
   std::string item;
   while (std::getline(list, item, ','))
   {
-    const std::string name = Lower(Trim(item));
+    const std::string name = vtkNPRLowerCase(Trim(item));
     const auto* kind = std::find_if(
       std::begin(Kinds), std::end(Kinds), [&](const ViewKind& k) { return name == k.Name; });
     if (kind == std::end(Kinds))
@@ -268,12 +259,12 @@ bool vtkNPRDrawingSheet::ParseViews()
         vtkErrorCode::UnknownError, "unknown view '" + name + "' (views: " + GetViewNames() + ")");
     }
     const int index = static_cast<int>(kind - std::begin(Kinds));
-    if (std::any_of(views.begin(), views.end(),
-          [&](const vtkNPRDrawingSheetView& view) { return view.Kind == index; }))
+    if (std::any_of(
+          views.begin(), views.end(), [&](const SheetView& view) { return view.Kind == index; }))
     {
       return this->Fail(vtkErrorCode::UnknownError, "the view '" + name + "' is given twice");
     }
-    vtkNPRDrawingSheetView view;
+    SheetView view;
     view.Kind = index;
     // Third angle mirrors the side and top/bottom views about the front view.
     const bool mirror = this->Arrangement == THIRD_ANGLE && kind->Column != 3;
@@ -302,7 +293,7 @@ bool vtkNPRDrawingSheet::LayOut()
   internal.Page[0] = (this->Landscape ? paper[1] : paper[0]) * PointsPerMillimetre;
   internal.Page[1] = (this->Landscape ? paper[0] : paper[1]) * PointsPerMillimetre;
   const double margin = this->Margin * PointsPerMillimetre;
-  const double gap = this->GapMillimetres * PointsPerMillimetre;
+  const double gap = this->Gap * PointsPerMillimetre;
   double widths = 0.0, heights = 0.0;
   for (const auto& column : columns)
   {
@@ -340,7 +331,7 @@ bool vtkNPRDrawingSheet::LayOut()
     y[row.first] = at + 0.5 * s * row.second;
     at += s * row.second + LabelLine + gap;
   }
-  for (vtkNPRDrawingSheetView& view : internal.Views)
+  for (SheetView& view : internal.Views)
   {
     const double cx = x[view.Column], cy = y[view.Row];
     const double box[4] = { cx - 0.5 * s * view.Width, cy - 0.5 * s * view.Height,
@@ -403,7 +394,7 @@ bool vtkNPRDrawingSheet::Paint(int format, std::string& bytes)
   cairo_set_font_size(cr, LabelPoints);
   std::string error;
   bool painted = true;
-  for (vtkNPRDrawingSheetView& view : internal.Views)
+  for (SheetView& view : internal.Views)
   {
     // The view's image: the box's size in points and a few pixels around it.
     const int width = static_cast<int>(std::ceil(view.Box[2] - view.Box[0])) + 2 * ViewPadding;
@@ -455,6 +446,6 @@ void vtkNPRDrawingSheet::PrintSelf(ostream& os, vtkIndent indent)
                                     : "letter")
      << (this->Landscape ? ", landscape" : ", portrait") << "\n";
   os << indent << "Margin: " << this->Margin << " mm\n";
-  os << indent << "GapMillimetres: " << this->GapMillimetres << " mm\n";
+  os << indent << "Gap: " << this->Gap << " mm\n";
   os << indent << "ErrorCode: " << this->ErrorCode << "\n";
 }

@@ -17,7 +17,7 @@
  *   view in the free corner above the side views. Views in one column share their x axis and
  *   views in one row their y axis, as projection lines would join them.
  * - Scale: one for every view (iso included), the largest that fits the grid of views, the gaps
- *   between them (GapMillimetres) and a line under each for its name, inside the margins. The
+ *   between them (Gap, millimetres) and a line under each for its name, inside the margins. The
  *   page's bottom right corner names it: "scale 1 : N", N the model units one millimetre of
  *   paper stands for (GetScale(): points per model unit).
  * - Page: A4 (the default), A3 or LETTER, landscape by default, Margin millimetres (default 10)
@@ -113,8 +113,8 @@ public:
   vtkBooleanMacro(Landscape, bool);
   vtkSetClampMacro(Margin, double, 0.0, 50.0);
   vtkGetMacro(Margin, double);
-  vtkSetClampMacro(GapMillimetres, double, 0.0, 50.0);
-  vtkGetMacro(GapMillimetres, double);
+  vtkSetClampMacro(Gap, double, 0.0, 50.0);
+  vtkGetMacro(Gap, double);
   ///@}
 
   /**
@@ -169,7 +169,7 @@ protected:
   int PaperSize = A4;
   bool Landscape = true;
   double Margin = 10.0;
-  double GapMillimetres = 10.0;
+  double Gap = 10.0;
   unsigned long ErrorCode = 0;
 
 private:

@@ -21,6 +21,7 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <mutex>
 #include <set>
@@ -35,6 +36,13 @@ vtkTextureObject* vtkNPRNewTexture(vtkOpenGLRenderWindow* window, int filter, in
   texture->SetWrapT(wrap);
   texture->SetWrapR(wrap);
   return texture;
+}
+
+std::string vtkNPRLowerCase(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
 }
 
 double vtkNPRWindowScale(vtkRenderer* renderer)

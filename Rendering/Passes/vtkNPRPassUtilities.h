@@ -25,6 +25,9 @@ class vtkWindow;
 // and wrap modes on every axis (ClampToEdge, Repeat, ...); the caller allocates and deletes it.
 vtkTextureObject* vtkNPRNewTexture(vtkOpenGLRenderWindow* window, int filter, int wrap);
 
+// The text in lower case (ASCII): file extensions, the names of views and papers.
+std::string vtkNPRLowerCase(std::string text);
+
 // How many pixels one pixel at 72 DPI is in this renderer's window: DPI / 72 x tile scale.
 double vtkNPRWindowScale(vtkRenderer* renderer);
 
