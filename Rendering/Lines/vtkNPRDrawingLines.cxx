@@ -8,6 +8,7 @@
 #include "vtkFieldData.h"
 #include "vtkIntArray.h"
 #include "vtkNPRFeatureLines.h"
+#include "vtkNPRSceneFaces.h"
 #include "vtkNPRSceneLines.h"
 #include "vtkNPRVectors.h"
 #include "vtkNew.h"
@@ -418,6 +419,9 @@ private:
 struct vtkNPRDrawingLines::Internals
 {
   vtkNew<vtkPolyData> Strokes;
+  vtkNew<vtkPolyData> Faces;
+  vtkIdType FaceSplits = 0;
+  double FacesTime = 0.0;
   vtkIdType StrokeCount = 0;
   double ChainTime = 0.0;
 };
@@ -434,6 +438,43 @@ vtkNPRDrawingLines::~vtkNPRDrawingLines() = default;
 vtkPolyData* vtkNPRDrawingLines::GetStrokes()
 {
   return this->Internal->Strokes;
+}
+
+vtkPolyData* vtkNPRDrawingLines::GetFaces()
+{
+  return this->Internal->Faces;
+}
+
+vtkIdType vtkNPRDrawingLines::GetNumberOfFaceSplits() const
+{
+  return this->Internal->FaceSplits;
+}
+
+double vtkNPRDrawingLines::GetFacesTime() const
+{
+  return this->Internal->FacesTime;
+}
+
+bool vtkNPRDrawingLines::UpdateFaces()
+{
+  Internals& internal = *this->Internal;
+  internal.Faces->Initialize();
+  internal.FaceSplits = 0;
+  internal.FacesTime = 0.0;
+  int width, height;
+  if (!this->Renderer || !vtkNPRImageSize(this->Renderer, this->Size, width, height))
+  {
+    vtkErrorMacro(<< (this->Renderer ? "no size" : "no renderer") << ": no faces");
+    return false;
+  }
+  const Clock::time_point start = Clock::now();
+  vtkNPRSceneView view;
+  view.Set(this->Renderer->GetActiveCamera(), width, height);
+  const vtkNPRSceneFacesCounts counts =
+    vtkNPRSceneFaces(vtkNPRDrawnMeshes(this->Renderer), view, internal.Faces);
+  internal.FaceSplits = counts.Splits;
+  internal.FacesTime = Seconds(start);
+  return true;
 }
 
 vtkIdType vtkNPRDrawingLines::GetNumberOfStrokes() const

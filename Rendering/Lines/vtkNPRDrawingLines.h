@@ -106,6 +106,34 @@ public:
    */
   vtkPolyData* GetStrokes();
 
+  /**
+   * Computes the faces a vector drawing fills (vtkNPRDrawingExporter's FillFaces), for the
+   * renderer's scene and camera as they are now: every triangle that can show, back to front
+   * and split where needed (a binary space partition of the faces' planes), so that painting
+   * them in order gives the picture, surfaces that pass through each other included, with
+   * nothing behind showing through; clipped to the near and far planes. The back faces of a
+   * closed mesh wound one way (unless the near plane cuts it) and the faces its property culls
+   * are left out, and so are polygons wholly outside the image. False, with an error, when there
+   * is no renderer or no size.
+   */
+  bool UpdateFaces();
+
+  /**
+   * The faces of the last UpdateFaces(), in painting order: a vtkPolyData of convex polygons,
+   * points in world coordinates, point data "ImageCoordinates" (as the strokes'), cell data
+   * "Colors" (unsigned char RGB: the actor's colour without lighting, its mapped scalar colour
+   * where it colours by scalars, a cell's or the mean of the corners'), field data "ImageSize".
+   */
+  vtkPolyData* GetFaces();
+
+  ///@{
+  /**
+   * What the last UpdateFaces() did: the pieces made by splitting faces, and the seconds it took.
+   */
+  vtkIdType GetNumberOfFaceSplits() const;
+  double GetFacesTime() const;
+  ///@}
+
   ///@{
   /**
    * What the last Update() did besides vtkNPRRendererLines's counts (whose rays include the

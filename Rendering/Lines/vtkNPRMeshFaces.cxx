@@ -151,6 +151,23 @@ void vtkNPRMeshFaces::GetTriangle(vtkIdType triangle, vtkIdType ids[3]) const
   ids[2] = this->Polys.Id(first + k + 1);
 }
 
+vtkIdType vtkNPRMeshFaces::GetCellOfTriangle(vtkIdType triangle) const
+{
+  if (triangle >= this->PolyTriangles)
+  {
+    const vtkIdType r = triangle - this->PolyTriangles;
+    return this->Polys.Count +
+      (std::upper_bound(this->StripFirstFace.begin(), this->StripFirstFace.end(), r) - 1 -
+        this->StripFirstFace.begin());
+  }
+  if (this->PolysAreTriangles)
+  {
+    return triangle;
+  }
+  return std::upper_bound(this->FanFirstTriangle.begin(), this->FanFirstTriangle.end(), triangle) -
+    1 - this->FanFirstTriangle.begin();
+}
+
 size_t vtkNPRMeshFaces::GetMemorySize() const
 {
   return sizeof(double) * this->CopiedPoints.capacity() +

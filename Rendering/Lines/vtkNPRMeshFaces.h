@@ -72,6 +72,9 @@ public:
   // Triangles: the polygons as fans (points 0, k, k + 1), then the strips' triangles.
   vtkIdType GetNumberOfTriangles() const { return this->PolyTriangles + this->StripTriangles; }
   void GetTriangle(vtkIdType triangle, vtkIdType ids[3]) const;
+  // The cell a triangle is part of, counted over the polygons, then the strips (add the mesh's
+  // vertices and lines for its vtkPolyData cell id).
+  vtkIdType GetCellOfTriangle(vtkIdType triangle) const;
 
   // Bytes of the tables made by Set() (none for a mesh of triangles with float or double points).
   size_t GetMemorySize() const;

@@ -143,9 +143,9 @@ void AddDrawnMeshes(vtkActor* actor, vtkMatrix4x4* matrix, std::vector<vtkNPRMes
     meshes.push_back(state);
   }
 }
+}
 
-// The meshes of the renderer's visible actors, those inside assemblies included (vtkNPRPropParts).
-std::vector<vtkNPRMeshInstance> DrawnMeshes(vtkRenderer* renderer)
+std::vector<vtkNPRMeshInstance> vtkNPRDrawnMeshes(vtkRenderer* renderer)
 {
   std::vector<vtkNPRMeshInstance> meshes;
   vtkPropCollection* props = renderer->GetViewProps();
@@ -167,7 +167,6 @@ std::vector<vtkNPRMeshInstance> DrawnMeshes(vtkRenderer* renderer)
     }
   }
   return meshes;
-}
 }
 
 bool vtkNPRImageSize(vtkRenderer* renderer, const int size[2], int& width, int& height)
@@ -314,7 +313,7 @@ size_t vtkNPRSceneLines::GetMemorySize() const
 void vtkNPRSceneLines::Update(
   vtkRenderer* renderer, const Settings& settings, int trianglesPerLocator)
 {
-  const std::vector<vtkNPRMeshInstance> actors = DrawnMeshes(renderer);
+  const std::vector<vtkNPRMeshInstance> actors = vtkNPRDrawnMeshes(renderer);
   Clock::time_point start = Clock::now();
   const vtkIdType nodes = this->UpdateLines(actors, renderer->GetActiveCamera(), settings);
   this->LinesTime = Seconds(start);

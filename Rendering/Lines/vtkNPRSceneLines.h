@@ -26,6 +26,11 @@ class vtkRenderer;
 // window. False when there is none.
 bool vtkNPRImageSize(vtkRenderer* renderer, const int size[2], int& width, int& height);
 
+// The meshes of the renderer's visible, opaque vtkActors drawn by a vtkPolyDataMapper as surfaces,
+// those inside assemblies included (vtkNPRPropParts), each polygonal leaf of a composite input a
+// mesh of its actor; their inputs brought up to date.
+std::vector<vtkNPRMeshInstance> vtkNPRDrawnMeshes(vtkRenderer* renderer);
+
 // The camera of a frame as the image sees it.
 struct vtkNPRSceneView
 {

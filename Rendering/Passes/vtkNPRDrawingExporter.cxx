@@ -166,6 +166,7 @@ struct vtkNPRDrawingExporter::Internals
   vtkSmartPointer<vtkNPRDrawingLines> Lines; // those of the last Write()
   std::string ErrorMessage;
   vtkNPRStrokeCounts Counts{};
+  vtkIdType FilledFaces = 0;
   bool Labelled = false;
   bool Embedded = false;
   double StrokesTime = 0.0, WriteTime = 0.0;
@@ -250,6 +251,11 @@ vtkIdType vtkNPRDrawingExporter::GetNumberOfStrokes() const
   return total;
 }
 
+vtkIdType vtkNPRDrawingExporter::GetNumberOfFilledFaces() const
+{
+  return this->Internal->FilledFaces;
+}
+
 bool vtkNPRDrawingExporter::GetClassesLabelled() const
 {
   return this->Internal->Labelled;
@@ -288,6 +294,7 @@ struct vtkNPRDrawingExporter::Target
   vtkNPREdgePass* Edges = nullptr;
   vtkNPRDrawingLines* Lines = nullptr; // the drawing pass's, else the exporter's own
   vtkNPRStrokeStyle Style;
+  double FaceColor[3] = { 1.0, 1.0, 1.0 }; // the drawing pass's
   bool DrawingStyle = false; // the renderer's vtkNPRPass draws the drawing style
 };
 
@@ -297,6 +304,7 @@ bool vtkNPRDrawingExporter::Write()
   this->ErrorCode = vtkErrorCode::NoError;
   internal.ErrorMessage.clear();
   internal.Counts.fill(0);
+  internal.FilledFaces = 0;
   internal.Labelled = internal.Embedded = false;
   internal.StrokesTime = internal.WriteTime = 0.0;
 
@@ -310,7 +318,8 @@ bool vtkNPRDrawingExporter::Write()
   // The raster under the lines: the renderer's part of the window, rendered again.
   vtkSmartPointer<vtkImageData> raster;
   if (target.Renderer->GetRenderWindow() &&
-    (this->EmbedImage == 1 || (this->EmbedImage == -1 && !target.DrawingStyle)))
+    (this->EmbedImage == 1 ||
+      (this->EmbedImage == -1 && !target.DrawingStyle && !this->FillFaces)))
   {
     raster = GrabRaster(target.Renderer);
   }
@@ -384,6 +393,10 @@ void vtkNPRDrawingExporter::ResolveStyle(Target& target)
   target.DrawingStyle =
     npr && std::strcmp(vtkNPRPass::GetStyleName(npr->GetStyle()), "drawing") == 0;
   target.Style = vtkNPRMakeStrokeStyle(drawing, target.Edges, target.Renderer);
+  if (drawing)
+  {
+    drawing->GetFaceColor(target.FaceColor);
+  }
   // The drawing pass's lines keep the edge table and occluders it built for its frames: on a
   // large model, building them again would double the time and the memory of the export.
   target.Lines = drawing ? drawing->GetDrawingLines() : this->Internal->OwnLines.Get();
@@ -397,7 +410,7 @@ bool vtkNPRDrawingExporter::ComputeStrokes(const Target& target)
   lines->SetRenderer(target.Renderer);
   lines->SetSize(target.Width, target.Height);
   vtkNPRSelectStrokeLines(lines, style, target.Edges);
-  const bool updated = lines->Update();
+  const bool updated = lines->Update() && (!this->FillFaces || lines->UpdateFaces());
   if (lines != this->Internal->OwnLines.Get())
   {
     // A pass held by the renderer must not hold the renderer (a cycle, hence a leak).
@@ -427,8 +440,12 @@ bool vtkNPRDrawingExporter::Paint(const Target& target, vtkImageData* raster, st
     internal.Embedded = true;
   }
   std::string error, unused;
-  const bool painted = vtkNPRPaintStrokes(
-    cr, internal.Lines->GetStrokes(), target.Style, target.Height, internal.Counts, error);
+  const bool painted = (!this->FillFaces ||
+                         vtkNPRPaintFaces(cr, internal.Lines->GetFaces(),
+                           this->FillColors == FACE_COLOR ? target.FaceColor : nullptr,
+                           this->FillSeam, target.Height, internal.FilledFaces, error)) &&
+    vtkNPRPaintStrokes(
+      cr, internal.Lines->GetStrokes(), target.Style, target.Height, internal.Counts, error);
   cairo_destroy(cr);
   const bool finished = vtkNPRFinishVectorSurface(surface, painted ? error : unused);
   if (!painted || !finished)
@@ -465,6 +482,9 @@ void vtkNPRDrawingExporter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DrawingPass: " << this->DrawingPass << "\n";
   os << indent << "EdgePass: " << this->EdgePass << "\n";
   os << indent << "EmbedImage: " << this->EmbedImage << "\n";
+  os << indent << "FillFaces: " << this->FillFaces << "\n";
+  os << indent << "FillColors: " << this->FillColors << "\n";
+  os << indent << "FillSeam: " << this->FillSeam << "\n";
   os << indent << "ErrorCode: " << this->ErrorCode << "\n";
   os << indent << "ErrorMessage: " << this->Internal->ErrorMessage << "\n";
 }

@@ -22,7 +22,9 @@
  * - Background: a rectangle of the renderer's background colour. When the renderer's style is
  *   not "drawing" (or it has no vtkNPRPass), the window's image (rendered again) is embedded as a
  *   raster under the lines (EmbedImage: -1, the default, decides so; 0 never; 1 always).
- * - Order and structure: background, raster, hidden strokes, then the visible silhouettes,
+ * - Faces (FillFaces): the visible faces as filled polygons, in the drawing style's FaceColor
+ *   or each actor's own colours (FillColors), painted back to front over the background.
+ * - Order and structure: background, raster or faces, hidden strokes, then the visible silhouettes,
  *   boundaries, creases, non-manifold edges and intersection curves. In an SVG file each of
  *   these classes of strokes is a `<g class="npr-hidden">`, `npr-silhouette`, `npr-boundary`,
  *   `npr-crease`, `npr-non-manifold`, `npr-intersection` group of `<path>` elements, one per
@@ -108,10 +110,36 @@ public:
   vtkGetObjectMacro(EdgePass, vtkNPREdgePass);
   ///@}
 
+  enum FillColorModes
+  {
+    FACE_COLOR = 0,    ///< the drawing pass's FaceColor (white without one): as the style draws
+    SURFACE_COLORS = 1 ///< each face's actor colour or mapped scalar colour, without lighting
+  };
+
+  ///@{
+  /**
+   * Fill the visible faces under the lines (off by default): vtkNPRDrawingLines::UpdateFaces()'s
+   * polygons, back to front, so that the file shows the faces as the render does, nothing
+   * behind showing through, as regions an editor can select and recolour. In FillColors:
+   * FACE_COLOR (the default; the drawing style's picture) or SURFACE_COLORS (each actor's
+   * colour, or its scalar colours, flat and unlit: a coloured figure). Each polygon is also
+   * stroked with FillSeam pixels (default 1, clamped to [0, 2]) in its own colour, which
+   * closes the hairline gaps anti-aliasing viewers leave between neighbouring polygons.
+   */
+  vtkSetMacro(FillFaces, bool);
+  vtkGetMacro(FillFaces, bool);
+  vtkBooleanMacro(FillFaces, bool);
+  vtkSetClampMacro(FillColors, int, FACE_COLOR, SURFACE_COLORS);
+  vtkGetMacro(FillColors, int);
+  vtkSetClampMacro(FillSeam, double, 0.0, 2.0);
+  vtkGetMacro(FillSeam, double);
+  ///@}
+
   ///@{
   /**
    * Embed the window's image under the lines: -1 (the default) when the renderer's style is
-   * not "drawing", 0 never, 1 always.
+   * not "drawing"
+   * and FillFaces is off, 0 never, 1 always.
    */
   vtkSetClampMacro(EmbedImage, int, -1, 1);
   vtkGetMacro(EmbedImage, int);
@@ -151,11 +179,12 @@ public:
   /**
    * What the last Write() painted: the strokes of a class (0 hidden, 1 silhouette, 2 boundary,
    * 3 crease, 4 non-manifold, 5 intersection) and in all; whether the SVG's groups were
-   * labelled; whether a raster was embedded; the seconds computing the strokes and painting and
-   * writing the file.
+   * labelled; whether a raster was embedded; the polygons filled (FillFaces); the seconds
+   * computing the strokes (and the faces) and painting and writing the file.
    */
   vtkIdType GetNumberOfStrokes(int strokeClass) const;
   vtkIdType GetNumberOfStrokes() const;
+  vtkIdType GetNumberOfFilledFaces() const;
   bool GetClassesLabelled() const;
   bool GetImageEmbedded() const;
   double GetStrokesTime() const;
@@ -173,6 +202,9 @@ protected:
   vtkNPRDrawingPass* DrawingPass = nullptr;
   vtkNPREdgePass* EdgePass = nullptr;
   int EmbedImage = -1;
+  bool FillFaces = false;
+  int FillColors = FACE_COLOR;
+  double FillSeam = 1.0;
   unsigned long ErrorCode = 0;
 
 private:

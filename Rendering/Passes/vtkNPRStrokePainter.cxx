@@ -277,6 +277,72 @@ bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeSty
   return true;
 }
 
+bool vtkNPRPaintFaces(cairo_t* cr, vtkPolyData* faces, const double* color, double seam,
+  double height, vtkIdType& painted, std::string& error)
+{
+  painted = 0;
+  vtkCellArray* polys = faces ? faces->GetPolys() : nullptr;
+  if (!polys || polys->GetNumberOfCells() == 0)
+  {
+    return true;
+  }
+  vtkDataArray* coordinates = faces->GetPointData()->GetArray("ImageCoordinates");
+  vtkDataArray* colors = faces->GetCellData()->GetArray("Colors");
+  if (!coordinates || coordinates->GetNumberOfComponents() < 2 ||
+    (!color &&
+      (!colors || colors->GetNumberOfComponents() < 3 ||
+        colors->GetNumberOfTuples() < polys->GetNumberOfCells())))
+  {
+    error = "the faces lack their ImageCoordinates or Colors arrays";
+    return false;
+  }
+  cairo_save(cr);
+  cairo_set_dash(cr, nullptr, 0, 0.0);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_set_line_width(cr, seam);
+  if (color)
+  {
+    cairo_set_source_rgb(cr, color[0], color[1], color[2]);
+  }
+  auto iterator = vtk::TakeSmartPointer(polys->NewIterator());
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    iterator->GetCurrentCell(size, ids);
+    if (size < 3)
+    {
+      continue;
+    }
+    if (!color)
+    {
+      const vtkIdType cell = faces->GetNumberOfVerts() + faces->GetNumberOfLines() +
+        iterator->GetCurrentCellId();
+      cairo_set_source_rgb(cr, colors->GetComponent(cell, 0) / 255.0,
+        colors->GetComponent(cell, 1) / 255.0, colors->GetComponent(cell, 2) / 255.0);
+    }
+    TraceStroke(cr, size, ids, coordinates, height);
+    cairo_close_path(cr);
+    if (seam > 0.0)
+    {
+      cairo_fill_preserve(cr);
+      cairo_stroke(cr);
+    }
+    else
+    {
+      cairo_fill(cr);
+    }
+    ++painted;
+  }
+  cairo_restore(cr);
+  if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
+  {
+    error = std::string("Cairo: ") + cairo_status_to_string(cairo_status(cr));
+    return false;
+  }
+  return true;
+}
+
 bool vtkNPRRasterizeStrokes(vtkPolyData* strokes, const vtkNPRStrokeStyle& style, int width,
   int height, std::vector<unsigned char>& rgba, std::string& error)
 {

@@ -1,0 +1,374 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the vtkNPR developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkNPRSceneFaces.h"
+
+#include "vtkActor.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIntArray.h"
+#include "vtkMapper.h"
+#include "vtkNPRFaceOrder.h"
+#include "vtkNPRMeshFaces.h"
+#include "vtkNPRSceneLines.h"
+#include "vtkNPRVectors.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkScalarsToColors.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace
+{
+using Color = std::array<unsigned char, 3>;
+
+// A mesh's faces' colours as its actor draws them without lighting: the mapper's scalar colours
+// (as vtkMapper::MapScalars makes them), else the property's colour.
+class FaceColors
+{
+public:
+  FaceColors(vtkActor* actor, vtkPolyData* mesh);
+  Color Of(const vtkNPRMeshFaces& faces, vtkIdType triangle, const vtkIdType ids[3]) const;
+
+private:
+  vtkSmartPointer<vtkUnsignedCharArray> Colors; // RGB or RGBA, a point's or a cell's
+  int Stride = 4;
+  bool PerCell = false;
+  vtkIdType FirstFaceCell = 0; // the cell id of the first polygon: after vertices and lines
+  Color Uniform;
+};
+
+FaceColors::FaceColors(vtkActor* actor, vtkPolyData* mesh)
+{
+  double color[3];
+  actor->GetProperty()->GetColor(color);
+  for (int c = 0; c < 3; ++c)
+  {
+    this->Uniform[c] = static_cast<unsigned char>(std::lround(255.0 * std::clamp(color[c], 0.0, 1.0)));
+  }
+  this->FirstFaceCell = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
+  vtkMapper* mapper = actor->GetMapper();
+  if (!mapper || !mapper->GetScalarVisibility())
+  {
+    return;
+  }
+  int cellFlag = 0;
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(mesh, mapper->GetScalarMode(),
+    mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
+  if (!scalars || cellFlag > 1) // field data colours are left to the property's colour
+  {
+    return;
+  }
+  vtkScalarsToColors* table = mapper->GetLookupTable();
+  if (!mapper->GetUseLookupTableScalarRange())
+  {
+    table->SetRange(mapper->GetScalarRange()); // as the mapper does before it draws
+  }
+  this->Colors = vtk::TakeSmartPointer(
+    table->MapScalars(scalars, mapper->GetColorMode(), mapper->GetArrayComponent(), VTK_RGBA));
+  this->PerCell = cellFlag == 1;
+  // Direct colours keep their own components (VTK 9.1 returns RGB scalars as RGBA or RGB).
+  this->Stride = this->Colors ? this->Colors->GetNumberOfComponents() : 4;
+  const vtkIdType needed = this->PerCell ? mesh->GetNumberOfCells() : mesh->GetNumberOfPoints();
+  if (this->Colors && (this->Colors->GetNumberOfTuples() < needed || this->Stride < 3))
+  {
+    this->Colors = nullptr; // scalars not one a point or a cell: the property's colour
+  }
+}
+
+Color FaceColors::Of(const vtkNPRMeshFaces& faces, vtkIdType triangle, const vtkIdType ids[3]) const
+{
+  if (!this->Colors)
+  {
+    return this->Uniform;
+  }
+  const unsigned char* rgb = this->Colors->GetPointer(0);
+  if (this->PerCell)
+  {
+    const unsigned char* c =
+      rgb + this->Stride * (this->FirstFaceCell + faces.GetCellOfTriangle(triangle));
+    return { c[0], c[1], c[2] };
+  }
+  Color mean;
+  for (int c = 0; c < 3; ++c)
+  {
+    const int s = this->Stride;
+    const int sum = rgb[s * ids[0] + c] + rgb[s * ids[1] + c] + rgb[s * ids[2] + c];
+    mean[c] = static_cast<unsigned char>((sum + 1) / 3);
+  }
+  return mean;
+}
+
+// +1 when the mesh is closed and wound one way with its faces outwards (each edge used twice, in
+// opposite directions, and a positive volume), -1 wound inwards, 0 otherwise: then a back face is
+// behind a front face of its own mesh.
+int ClosedWinding(const vtkNPRMeshFaces& faces)
+{
+  const vtkIdType triangles = faces.GetNumberOfTriangles();
+  if (triangles < 4)
+  {
+    return 0;
+  }
+  struct Use
+  {
+    vtkIdType Low, High;
+    bool Forward;
+  };
+  std::vector<Use> uses;
+  uses.reserve(3 * triangles);
+  double volume = 0.0, origin[3], x[3][3];
+  faces.GetPoint(0, origin);
+  for (vtkIdType t = 0; t < triangles; ++t)
+  {
+    vtkIdType ids[3];
+    faces.GetTriangle(t, ids);
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType a = ids[k], b = ids[(k + 1) % 3];
+      uses.push_back({ std::min(a, b), std::max(a, b), a < b });
+      faces.GetPoint(ids[k], x[k]);
+    }
+    const glm::dvec3 o = vtkNPRVector(origin);
+    volume += glm::dot(vtkNPRVector(x[0]) - o,
+      glm::cross(vtkNPRVector(x[1]) - o, vtkNPRVector(x[2]) - o));
+  }
+  std::sort(uses.begin(), uses.end(), [](const Use& u, const Use& v)
+    { return u.Low < v.Low || (u.Low == v.Low && u.High < v.High); });
+  const auto sameEdge = [](const Use& u, const Use& v) { return u.Low == v.Low && u.High == v.High; };
+  for (size_t i = 0; i < uses.size(); i += 2)
+  {
+    if (i + 1 >= uses.size() || !sameEdge(uses[i], uses[i + 1]) ||
+      uses[i].Forward == uses[i + 1].Forward ||
+      (i + 2 < uses.size() && sameEdge(uses[i], uses[i + 2])))
+    {
+      return 0;
+    }
+  }
+  return volume > 0.0 ? 1 : (volume < 0.0 ? -1 : 0);
+}
+
+// The determinant of the matrix's linear part: negative for a mirror.
+double LinearDeterminant(const std::array<double, 16>& m)
+{
+  return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
+    m[2] * (m[4] * m[9] - m[5] * m[8]);
+}
+
+// Whether the world points of the mesh reach behind the near plane.
+bool CutByNearPlane(const std::vector<double>& world, const vtkNPRSceneView& view)
+{
+  for (size_t i = 0; i < world.size(); i += 3)
+  {
+    double c[4];
+    view.Clip(&world[i], c);
+    if (c[2] + c[3] < 0.0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Whether a triangle lies wholly outside one plane of the view frustum.
+bool OutsideFrustum(const double* corners[3], const vtkNPRSceneView& view)
+{
+  double c[3][4];
+  for (int k = 0; k < 3; ++k)
+  {
+    view.Clip(corners[k], c[k]);
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (double sign : { -1.0, 1.0 })
+    {
+      bool outside = true;
+      for (int k = 0; k < 3 && outside; ++k)
+      {
+        outside = c[k][3] + sign * c[k][axis] < 0.0;
+      }
+      if (outside)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+// Adds the triangles of one mesh that can show to `order`, their colours to `colors` (the tags).
+void AddMesh(const vtkNPRMeshInstance& instance, const vtkNPRSceneView& view,
+  vtkNPRFaceOrder& order, std::vector<Color>& colors, vtkNPRSceneFacesCounts& counts)
+{
+  vtkNPRMeshFaces faces;
+  faces.Set(instance.Mesh);
+  std::vector<double> world(3 * faces.GetNumberOfPoints());
+  for (vtkIdType i = 0; i < faces.GetNumberOfPoints(); ++i)
+  {
+    double local[3];
+    faces.GetPoint(i, local);
+    vtkNPRTransformPoint(instance.Matrix.data(), local, &world[3 * i]);
+  }
+  const bool cut = CutByNearPlane(world, view);
+  const int winding = cut ? 0 : ClosedWinding(faces);
+  const double outwards = winding * (LinearDeterminant(instance.Matrix) < 0.0 ? -1.0 : 1.0);
+  vtkProperty* property = instance.Actor->GetProperty();
+  const bool cullBack = property->GetBackfaceCulling() != 0;
+  const bool cullFront = property->GetFrontfaceCulling() != 0;
+  const FaceColors palette(instance.Actor, instance.Mesh);
+  const glm::dvec3 eye = vtkNPRVector(view.Eye), towardsEye = -vtkNPRVector(view.Direction);
+  for (vtkIdType t = 0; t < faces.GetNumberOfTriangles(); ++t)
+  {
+    ++counts.Triangles;
+    vtkIdType ids[3];
+    faces.GetTriangle(t, ids);
+    const double* corners[3] = { &world[3 * ids[0]], &world[3 * ids[1]], &world[3 * ids[2]] };
+    const glm::dvec3 a = vtkNPRVector(corners[0]);
+    const glm::dvec3 normal =
+      glm::cross(vtkNPRVector(corners[1]) - a, vtkNPRVector(corners[2]) - a);
+    const double facing = glm::dot(normal, view.Parallel ? towardsEye : eye - a);
+    const bool front = facing > 0.0;
+    if (facing == 0.0 || !std::isfinite(facing) || (cullBack && !front) || (cullFront && front) ||
+      (outwards != 0.0 && front != (outwards > 0.0)) || OutsideFrustum(corners, view))
+    {
+      ++counts.LeftOut;
+      continue;
+    }
+    const double triangle[9] = { corners[0][0], corners[0][1], corners[0][2], corners[1][0],
+      corners[1][1], corners[1][2], corners[2][0], corners[2][1], corners[2][2] };
+    if (!order.Add(triangle, 3, static_cast<vtkIdType>(colors.size())))
+    {
+      ++counts.LeftOut;
+      continue;
+    }
+    colors.push_back(palette.Of(faces, t, ids));
+  }
+}
+
+// The part of a convex polygon (world corners) between the near and far planes.
+std::vector<glm::dvec3> ClipToDepthRange(std::vector<glm::dvec3> polygon, const vtkNPRSceneView& view)
+{
+  for (double sign : { 1.0, -1.0 }) // near: z + w >= 0, far: w - z >= 0
+  {
+    std::vector<glm::dvec3> kept;
+    const size_t n = polygon.size();
+    for (size_t k = 0; k < n; ++k)
+    {
+      const glm::dvec3& a = polygon[k];
+      const glm::dvec3& b = polygon[(k + 1) % n];
+      double ca[4], cb[4];
+      view.Clip(glm::value_ptr(a), ca);
+      view.Clip(glm::value_ptr(b), cb);
+      const double da = ca[3] + sign * ca[2], db = cb[3] + sign * cb[2];
+      if (da >= 0.0)
+      {
+        kept.push_back(a);
+      }
+      if ((da >= 0.0) != (db >= 0.0))
+      {
+        kept.push_back(vtkNPRPointAlong(a, b, da / (da - db)));
+      }
+    }
+    polygon.swap(kept);
+  }
+  return polygon;
+}
+
+// Appends one ordered polygon to the output arrays; false when nothing of it is in the image or
+// it has no area (under a millionth of a square pixel).
+bool AppendPolygon(const std::vector<glm::dvec3>& polygon, const vtkNPRSceneView& view,
+  vtkPoints* points, vtkDoubleArray* image, vtkCellArray* polys)
+{
+  if (polygon.size() < 3)
+  {
+    return false;
+  }
+  std::vector<std::array<double, 3>> projected(polygon.size());
+  double low[2] = { 1e300, 1e300 }, high[2] = { -1e300, -1e300 };
+  for (size_t k = 0; k < polygon.size(); ++k)
+  {
+    view.ToImage(glm::value_ptr(polygon[k]), projected[k].data());
+    for (int axis = 0; axis < 2; ++axis)
+    {
+      low[axis] = std::min(low[axis], projected[k][axis]);
+      high[axis] = std::max(high[axis], projected[k][axis]);
+    }
+  }
+  double area = 0.0;
+  for (size_t k = 0; k < projected.size(); ++k)
+  {
+    const auto& a = projected[k];
+    const auto& b = projected[(k + 1) % projected.size()];
+    area += a[0] * b[1] - b[0] * a[1];
+  }
+  // Outside the image, or a sliver that covers nothing (its seam stroke would still paint).
+  if (high[0] < 0.0 || high[1] < 0.0 || low[0] > view.Width || low[1] > view.Height ||
+    !(std::abs(area) > 2e-6))
+  {
+    return false;
+  }
+  polys->InsertNextCell(static_cast<vtkIdType>(polygon.size()));
+  for (size_t k = 0; k < polygon.size(); ++k)
+  {
+    polys->InsertCellPoint(points->InsertNextPoint(glm::value_ptr(polygon[k])));
+    image->InsertNextTypedTuple(projected[k].data());
+  }
+  return true;
+}
+}
+
+vtkNPRSceneFacesCounts vtkNPRSceneFaces(
+  const std::vector<vtkNPRMeshInstance>& meshes, const vtkNPRSceneView& view, vtkPolyData* output)
+{
+  vtkNPRSceneFacesCounts counts;
+  vtkNPRFaceOrder order;
+  std::vector<Color> colors;
+  for (const vtkNPRMeshInstance& instance : meshes)
+  {
+    AddMesh(instance, view, order, colors, counts);
+  }
+  order.Build();
+  counts.Splits = order.GetNumberOfSplits();
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkDoubleArray> image;
+  image->SetName("ImageCoordinates");
+  image->SetNumberOfComponents(3);
+  vtkNew<vtkUnsignedCharArray> cellColors;
+  cellColors->SetName("Colors");
+  cellColors->SetNumberOfComponents(3);
+  for (std::uint32_t polygon : order.BackToFront(view.Eye, view.Direction, view.Parallel))
+  {
+    std::vector<glm::dvec3> corners(order.GetNumberOfCorners(polygon));
+    for (size_t k = 0; k < corners.size(); ++k)
+    {
+      order.GetCorner(polygon, static_cast<int>(k), glm::value_ptr(corners[k]));
+    }
+    if (AppendPolygon(ClipToDepthRange(std::move(corners), view), view, points, image, polys))
+    {
+      cellColors->InsertNextTypedTuple(colors[order.GetTag(polygon)].data());
+    }
+  }
+  output->Initialize();
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  output->GetPointData()->AddArray(image);
+  output->GetCellData()->AddArray(cellColors);
+  vtkNew<vtkIntArray> imageSize;
+  imageSize->SetName("ImageSize");
+  imageSize->SetNumberOfComponents(2);
+  const int size[2] = { view.Width, view.Height };
+  imageSize->InsertNextTypedTuple(size);
+  output->GetFieldData()->AddArray(imageSize);
+  counts.Polygons = polys->GetNumberOfCells();
+  return counts;
+}
