@@ -113,6 +113,10 @@ void vtkNPRFaceOrder::Build()
     this->Polygons[p].Plane = p;
     this->AddPlane(this->Polygons[p]);
   }
+  if (this->Polygons.empty())
+  {
+    return;
+  }
   // Depth first, with a stack of its own: no recursion however deep the tree.
   std::vector<Task> tasks(1);
   tasks[0].Parent = -1;
