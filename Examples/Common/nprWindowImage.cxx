@@ -63,10 +63,12 @@ std::string nprOutputExtensions()
   return std::string(".png, ") + vtkNPRDrawingExporter::GetSupportedExtensions();
 }
 
-void nprWriteDrawing(vtkRenderer* renderer, const std::string& path)
+void nprWriteDrawing(vtkRenderer* renderer, const std::string& path, bool fillFaces, int fillColors)
 {
   vtkNew<vtkNPRDrawingExporter> exporter;
   exporter->SetRenderer(renderer);
+  exporter->SetFillFaces(fillFaces);
+  exporter->SetFillColors(fillColors);
   exporter->SetFileName(path.c_str());
   if (!exporter->Write())
   {

@@ -34,8 +34,10 @@ bool nprIsDrawingFile(const std::string& path);
 std::string nprOutputExtensions();
 
 // Writes the renderer's lines as a vector drawing (vtkNPRDrawingExporter; the format from the
-// extension) in its vtkNPRPass's style, over the window's image unless the style is "drawing".
+// extension) in its vtkNPRPass's style, over the window's image unless the style is "drawing"
+// or fillFaces asks for the faces as filled regions (in fillColors, FillColorModes).
 // Throws std::runtime_error with the exporter's message.
-void nprWriteDrawing(vtkRenderer* renderer, const std::string& path);
+void nprWriteDrawing(vtkRenderer* renderer, const std::string& path, bool fillFaces = false,
+  int fillColors = 0);
 
 #endif

@@ -213,7 +213,8 @@ void WriteOutput(vtkRenderWindow* window, vtkRenderer* renderer, const nprRender
   }
   else if (!options.Output.empty() && nprIsDrawingFile(options.Output))
   {
-    nprWriteDrawing(renderer, options.Output); // .svg, .pdf, .ps, .eps
+    // .svg, .pdf, .ps, .eps
+    nprWriteDrawing(renderer, options.Output, options.FillFaces, options.FillColors);
   }
   else if (!options.Output.empty())
   {

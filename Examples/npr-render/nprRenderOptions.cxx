@@ -105,6 +105,48 @@ void CheckSheetOptions(nprRenderOptions& options)
   options.Pass.Style = "drawing";
 }
 
+// The vector drawing's filled faces; false for another flag.
+bool ParseFillOption(nprArgumentReader& arguments, nprRenderOptions& options)
+{
+  const std::string& arg = arguments.Current();
+  if (arg == "--fill-faces")
+  {
+    options.FillFaces = true;
+    return true;
+  }
+  if (arg == "--fill-colors")
+  {
+    const std::string colors = arguments.Value();
+    if (colors != "face" && colors != "surface")
+    {
+      throw nprUsageError("--fill-colors " + colors + ": not face or surface");
+    }
+    options.FillColors = colors == "face" ? vtkNPRDrawingExporter::FACE_COLOR
+                                          : vtkNPRDrawingExporter::SURFACE_COLORS;
+    options.FillColorsGiven = true;
+    return true;
+  }
+  return false;
+}
+
+// Filled faces are written into a vector drawing or sheet, and their colours need them.
+void CheckFillOptions(const nprRenderOptions& options)
+{
+  if (options.FillColorsGiven && !options.FillFaces)
+  {
+    throw nprUsageError("--fill-colors needs --fill-faces");
+  }
+  if (options.FillFaces && !options.Sheet.empty())
+  {
+    throw nprUsageError("--fill-faces is not available with --sheet (the sheet's views are lines)");
+  }
+  if (options.FillFaces && !nprIsDrawingFile(options.Output))
+  {
+    throw nprUsageError(std::string("--fill-faces needs -o FILE with the extension ") +
+      vtkNPRDrawingExporter::GetSupportedExtensions());
+  }
+}
+
 const char* const Usage = R"(usage: npr-render [options] MODEL [MODEL...]
 
 Renders one scene of the given models headless and writes a PNG, or a vector drawing
@@ -137,6 +179,10 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
   --reference-mask FILE    also write the ground truth of --lines and --crease-angle:
                            the visible object-space lines, white on black, 8-bit grey
                            PNG of the render's size (any style)
+  --fill-faces             with a vector -o: the visible faces as filled regions under
+                           the lines, back to front (the render's picture, as shapes)
+  --fill-colors COLORS     face (default: the drawing style's face colour) or surface
+                           (each model's own colour, flat and unlit)
   --sheet VIEWS            write a drawing sheet to -o (.svg, .pdf, .ps, .eps): these
                            views of the scene on one page, one scale, with their names
                            (comma separated: iso, front, top, right, left, back, bottom);
@@ -164,10 +210,10 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
   {
     const std::string& arg = arguments.Current();
     if (nprParsePassOption(arguments, pass) || nprParseSceneOption(arguments, options) ||
-      ParseSheetOption(arguments, options))
+      ParseSheetOption(arguments, options) || ParseFillOption(arguments, options))
     {
       continue; // --style and the flags of the styles; the models, the frame and the camera;
-                // the drawing sheet
+                // the drawing sheet; the filled faces
     }
     if (arg == "-o" || arg == "--output")
     {
@@ -228,6 +274,7 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
   }
   nprCheckSceneOptions(options);
   CheckSheetOptions(options);
+  CheckFillOptions(options);
   const std::string outputKind = nprOrbitOutputKind(options.Output);
   if (options.Orbit > 0)
   {

@@ -30,6 +30,9 @@ struct nprRenderOptions : nprSceneOptions
   bool SheetThirdAngle = false;
   double SheetMargin = 10.0;        // millimetres
   std::set<std::string> SheetFlags; // the --sheet-* flags given
+  bool FillFaces = false;           // --fill-faces: filled faces in the vector drawing
+  int FillColors = 0;               // --fill-colors: vtkNPRDrawingExporter::FillColorModes
+  bool FillColorsGiven = false;
   nprPassSettings Pass;             // --style and the flags of the styles
 };
 

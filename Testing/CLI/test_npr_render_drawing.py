@@ -3,7 +3,8 @@
 """npr-render -o with vector drawings: .svg, .pdf, .ps and .eps write the lines (over the image,
 in the edges style), .png stays an image, and an unknown extension, a missing folder or a folder
 as the file each exit non-zero with one line `npr-render: error: ...` and leave no file; --sheet
-writes a drawing sheet in each format and refuses what it cannot do."""
+writes a drawing sheet in each format and refuses what it cannot do; --fill-faces writes the faces
+as filled paths under the strokes, in the face or the surface colours."""
 import os
 import shutil
 import subprocess
@@ -100,6 +101,23 @@ for extra, expected in ((["--sheet", "front,side", "-o", out("x.svg")], "unknown
                         (["--sheet-angle", "third", "-o", out("x.svg")], "needs --sheet VIEWS"),
                         (["--sheet", "front", "--sheet-paper", "B5", "-o", out("x.svg")], "not A4, A3 or letter"),
                         (["--sheet", "front", "--style", "edges", "-o", out("x.svg")], "--sheet draws the drawing style")):
+    rc, _, err = run(part, *extra)
+    check(rc == 2 and expected in err, "%s: exit 2 with '%s' (%r)" % (" ".join(extra[:2]), expected, err.strip()))
+
+# Filled faces: paths with a fill under the strokes, in the drawing style's face colour (white) or
+# the part's own colour (as a PDF), and the usage errors.
+rc, _, err = run(part, "--style", "drawing", "--fill-faces", "-o", out("filled.svg"))
+svg = open(out("filled.svg")).read() if os.path.isfile(out("filled.svg")) else ""
+check(rc == 0 and svg.count("fill:rgb(100%,100%,100%)") > 100 and "npr-silhouette" in svg,
+      "--fill-faces: white filled paths under the strokes (%r)" % err.strip())
+rc, _, err = run(part, "--style", "drawing", "--fill-faces", "--fill-colors", "surface",
+                 "-o", out("filled_surface.pdf"))
+data = open(out("filled_surface.pdf"), "rb").read() if os.path.isfile(out("filled_surface.pdf")) else b""
+check(rc == 0 and data.startswith(b"%PDF"), "--fill-colors surface -o .pdf (%r)" % err.strip())
+for extra, expected in ((["--fill-faces", "-o", out("x.png")], "--fill-faces needs -o FILE"),
+                        (["--fill-colors", "surface", "-o", out("x.svg")], "needs --fill-faces"),
+                        (["--fill-faces", "--fill-colors", "toon", "-o", out("x.svg")], "not face or surface"),
+                        (["--fill-faces", "--sheet", "front", "-o", out("x.svg")], "not available with --sheet")):
     rc, _, err = run(part, *extra)
     check(rc == 2 and expected in err, "%s: exit 2 with '%s' (%r)" % (" ".join(extra[:2]), expected, err.strip()))
 
