@@ -121,6 +121,16 @@ void vtkPVNPRView::SetDrawingFileName(const char* path)
   this->DrawingFileName = path ? path : "";
 }
 
+void vtkPVNPRView::SetDrawingFillFaces(bool on)
+{
+  this->DrawingFillFaces = on;
+}
+
+void vtkPVNPRView::SetDrawingFillColors(int mode)
+{
+  this->DrawingFillColors = mode;
+}
+
 bool vtkPVNPRView::ExportDrawing()
 {
   // The view's renderer is drawn by vtkNPRViewPass, not a vtkNPRPass: the style comes from ours.
@@ -129,7 +139,9 @@ bool vtkPVNPRView::ExportDrawing()
   exporter->SetRenderer(this->GetRenderer());
   exporter->SetDrawingPass(pass->GetDrawingPass());
   exporter->SetEdgePass(pass->GetEdgePass());
-  exporter->SetEmbedImage(pass->GetStyle() == vtkNPRPass::DRAWING ? 0 : 1);
+  exporter->SetEmbedImage(pass->GetStyle() == vtkNPRPass::DRAWING || this->DrawingFillFaces ? 0 : 1);
+  exporter->SetFillFaces(this->DrawingFillFaces);
+  exporter->SetFillColors(this->DrawingFillColors);
   exporter->SetFileName(this->DrawingFileName.c_str());
   if (!exporter->Write())
   {

@@ -100,9 +100,12 @@ public:
   /**
    * Vector output of the view's lines (vtkNPRDrawingExporter): ExportDrawing() writes
    * DrawingFileName (.svg, .pdf, .ps or .eps) on the process that renders (the client in a builtin
-   * session, the server's first rank otherwise). False, with an error, when it could not.
+   * session, the server's first rank otherwise), with the faces filled on request. False, with
+   * an error, when it could not.
    */
   void SetDrawingFileName(const char* path);
+  void SetDrawingFillFaces(bool on);   // vtkNPRDrawingExporter's FillFaces
+  void SetDrawingFillColors(int mode); // and FillColors
   bool ExportDrawing();
   ///@}
 
@@ -140,6 +143,8 @@ protected:
 
   vtkNew<vtkNPRViewPass> NPRViewPass;
   std::string DrawingFileName;
+  bool DrawingFillFaces = false;
+  int DrawingFillColors = 0;
 
 private:
   vtkPVNPRView(const vtkPVNPRView&) = delete;

@@ -23,7 +23,7 @@ import numpy as np
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
 
 import vtknpr  # noqa: F401
-from vtknpr.pyvista import SETTINGS, disable_npr, enable_npr, npr_pass
+from vtknpr.pyvista import SETTINGS, disable_npr, enable_npr, export_drawing, npr_pass
 
 FAILURES = []
 
@@ -246,6 +246,30 @@ def case_screenshot():
     p.close()
 
 
+def case_export():
+    """export_drawing writes the drawing style's lines as SVG, with fill_faces the faces too, in
+    the sphere's own colour with fill_colors="surface"; bad fill_colors is a ValueError."""
+    p = plotter()
+    p.add_mesh(pv.Sphere(theta_resolution=32, phi_resolution=16), color="red")
+    enable_npr(p, "drawing")
+    p.render()
+    folder = tempfile.mkdtemp()
+    lines = os.path.join(folder, "lines.svg")
+    filled = os.path.join(folder, "filled.svg")
+    export_drawing(p, lines)
+    exporter = export_drawing(p, filled, fill_faces=True, fill_colors="surface")
+    text = open(filled).read()
+    check(exporter.GetNumberOfFilledFaces() > 100 and "fill:rgb(100%,0%,0%)" in text
+          and "fill:rgb(100%,0%,0%)" not in open(lines).read(),
+          "fill_faces: %d red faces in the SVG" % exporter.GetNumberOfFilledFaces())
+    try:
+        export_drawing(p, filled, fill_faces=True, fill_colors="toon")
+        check(False, "fill_colors='toon' was accepted")
+    except ValueError:
+        pass
+    p.close()
+
+
 def python_blocks(page, only_pyvista):
     """The page's python blocks in order (later ones continue earlier ones); with only_pyvista,
     those that import PyVista."""
@@ -280,7 +304,8 @@ def case_snippet():
 
 
 CASES = {"subplots": case_subplots, "settings": case_settings, "compose": case_compose,
-         "toggle": case_toggle, "screenshot": case_screenshot, "snippet": case_snippet}
+         "toggle": case_toggle, "screenshot": case_screenshot, "snippet": case_snippet,
+         "export": case_export}
 
 
 def main():

@@ -145,6 +145,15 @@ if not args.mpi:
     check(text.count("<path") > 20 and '<g class="npr-hidden">' in text and
           '<g class="npr-silhouette">' in text and "<image" not in text,
           "ExportDrawing writes the SVG with its groups, hidden lines and no raster")
+    # With DrawingFillFaces: the faces as filled paths under the same strokes.
+    view.DrawingFillFaces = 1
+    view.SMProxy.UpdateVTKObjects()
+    view.SMProxy.InvokeCommand("ExportDrawing")
+    view.DrawingFillFaces = 0
+    filled = open(svg).read() if os.path.exists(svg) else ""
+    print("drawing.svg with faces: %d paths" % filled.count("<path"))
+    check(filled.count("fill:rgb(100%,100%,100%)") > 10 and '<g class="npr-silhouette">' in filled,
+          "ExportDrawing with DrawingFillFaces writes white filled faces under the strokes")
     # Lines from depth only (what MPI gives): silhouettes and creases remain.
     for style in LINE_STYLES:
         name, path, img = render(style, True)

@@ -23,9 +23,9 @@ import weakref
 import pyvista
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 
-from .vtkNPRPasses import vtkNPRPass, vtkNPRSketchPass
+from .vtkNPRPasses import vtkNPRDrawingExporter, vtkNPRPass, vtkNPRSketchPass
 
-__all__ = ["enable_npr", "disable_npr", "npr_pass", "SETTINGS"]
+__all__ = ["enable_npr", "disable_npr", "npr_pass", "export_drawing", "SETTINGS"]
 
 STYLES = ("shaded", "edges", "toon", "toon+edges", "sketch", "inked", "drawing")
 
@@ -276,3 +276,38 @@ def npr_pass(target):
     """The vtkNPRPass of the renderer, or None when no style is on."""
     binding = _BINDINGS.get(_renderer_of(target))
     return None if binding is None else binding.npr
+
+
+_FILL_COLORS = {"face": vtkNPRDrawingExporter.FACE_COLOR,
+                "surface": vtkNPRDrawingExporter.SURFACE_COLORS}
+
+
+def export_drawing(target, filename, fill_faces=False, fill_colors="face"):
+    """Writes the renderer's lines as a vector drawing (vtkNPRDrawingExporter): .svg, .pdf, .ps
+    or .eps, in the renderer's style (over its image unless the style is "drawing").
+
+    Parameters
+    ----------
+    target : pyvista.Plotter or pyvista.Renderer or vtkRenderer
+        With a plotter, its active renderer; render it first.
+    filename : str
+        The file; its extension gives the format.
+    fill_faces : bool
+        Also write the visible faces as filled regions under the lines, back to front (in place
+        of the image), so the file shows the faces as the render does.
+    fill_colors : str
+        "face" (the drawing style's face colour) or "surface" (each mesh's own colour or scalar
+        colours, flat and unlit).
+
+    Raises ValueError for an unknown fill_colors and RuntimeError when the file cannot be written.
+    """
+    if fill_colors not in _FILL_COLORS:
+        raise ValueError("export_drawing: fill_colors %r is not 'face' or 'surface'" % (fill_colors,))
+    exporter = vtkNPRDrawingExporter()
+    exporter.SetRenderer(_renderer_of(target))
+    exporter.SetFileName(str(filename))
+    exporter.SetFillFaces(bool(fill_faces))
+    exporter.SetFillColors(_FILL_COLORS[fill_colors])
+    if not exporter.Write():
+        raise RuntimeError("export_drawing: " + exporter.GetErrorMessage())
+    return exporter
