@@ -37,7 +37,7 @@ std::string nprOutputExtensions();
 // extension) in its vtkNPRPass's style, over the window's image unless the style is "drawing"
 // or fillFaces asks for the faces as filled regions (in fillColors, FillColorModes).
 // Throws std::runtime_error with the exporter's message.
-void nprWriteDrawing(vtkRenderer* renderer, const std::string& path, bool fillFaces = false,
-  int fillColors = 0);
+void nprWriteDrawing(
+  vtkRenderer* renderer, const std::string& path, bool fillFaces = false, int fillColors = 0);
 
 #endif

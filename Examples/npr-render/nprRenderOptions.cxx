@@ -121,8 +121,8 @@ bool ParseFillOption(nprArgumentReader& arguments, nprRenderOptions& options)
     {
       throw nprUsageError("--fill-colors " + colors + ": not face or surface");
     }
-    options.FillColors = colors == "face" ? vtkNPRDrawingExporter::FACE_COLOR
-                                          : vtkNPRDrawingExporter::SURFACE_COLORS;
+    options.FillColors =
+      colors == "face" ? vtkNPRDrawingExporter::FACE_COLOR : vtkNPRDrawingExporter::SURFACE_COLORS;
     options.FillColorsGiven = true;
     return true;
   }

@@ -33,7 +33,7 @@ struct nprRenderOptions : nprSceneOptions
   bool FillFaces = false;           // --fill-faces: filled faces in the vector drawing
   int FillColors = 0;               // --fill-colors: vtkNPRDrawingExporter::FillColorModes
   bool FillColorsGiven = false;
-  nprPassSettings Pass;             // --style and the flags of the styles
+  nprPassSettings Pass; // --style and the flags of the styles
 };
 
 // Prints --help and exits for -h; throws nprUsageError for anything else that is wrong.

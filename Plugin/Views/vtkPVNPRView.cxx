@@ -139,7 +139,8 @@ bool vtkPVNPRView::ExportDrawing()
   exporter->SetRenderer(this->GetRenderer());
   exporter->SetDrawingPass(pass->GetDrawingPass());
   exporter->SetEdgePass(pass->GetEdgePass());
-  exporter->SetEmbedImage(pass->GetStyle() == vtkNPRPass::DRAWING || this->DrawingFillFaces ? 0 : 1);
+  exporter->SetEmbedImage(
+    pass->GetStyle() == vtkNPRPass::DRAWING || this->DrawingFillFaces ? 0 : 1);
   exporter->SetFillFaces(this->DrawingFillFaces);
   exporter->SetFillColors(this->DrawingFillColors);
   exporter->SetFileName(this->DrawingFileName.c_str());

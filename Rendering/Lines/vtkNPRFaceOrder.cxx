@@ -38,7 +38,8 @@ int Classify(double distance)
 
 bool vtkNPRFaceOrder::Add(const double* corners, int count, vtkIdType tag)
 {
-  if (count < 3 || !std::all_of(corners, corners + 3 * count, [](double v) { return std::isfinite(v); }))
+  if (count < 3 ||
+    !std::all_of(corners, corners + 3 * count, [](double v) { return std::isfinite(v); }))
   {
     return false;
   }
@@ -46,7 +47,8 @@ bool vtkNPRFaceOrder::Add(const double* corners, int count, vtkIdType tag)
   glm::dvec3 area(0.0);
   for (int k = 0; k < count; ++k)
   {
-    area += glm::cross(vtkNPRVector(corners + 3 * k), vtkNPRVector(corners + 3 * ((k + 1) % count)));
+    area +=
+      glm::cross(vtkNPRVector(corners + 3 * k), vtkNPRVector(corners + 3 * ((k + 1) % count)));
   }
   if (!(glm::length(area) > 0.0))
   {
@@ -77,7 +79,8 @@ void vtkNPRFaceOrder::SetFrame()
   this->Corners.resize(this->InputCorners.size() / 3);
   for (size_t k = 0; k < this->Corners.size(); ++k)
   {
-    this->Corners[k] = (vtkNPRVector(this->InputCorners.data() + 3 * k) - this->Center) * this->Scale;
+    this->Corners[k] =
+      (vtkNPRVector(this->InputCorners.data() + 3 * k) - this->Center) * this->Scale;
   }
 }
 

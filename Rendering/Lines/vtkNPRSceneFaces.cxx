@@ -52,7 +52,8 @@ FaceColors::FaceColors(vtkActor* actor, vtkPolyData* mesh)
   actor->GetProperty()->GetColor(color);
   for (int c = 0; c < 3; ++c)
   {
-    this->Uniform[c] = static_cast<unsigned char>(std::lround(255.0 * std::clamp(color[c], 0.0, 1.0)));
+    this->Uniform[c] =
+      static_cast<unsigned char>(std::lround(255.0 * std::clamp(color[c], 0.0, 1.0)));
   }
   this->FirstFaceCell = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
   vtkMapper* mapper = actor->GetMapper();
@@ -137,12 +138,14 @@ int ClosedWinding(const vtkNPRMeshFaces& faces)
       faces.GetPoint(ids[k], x[k]);
     }
     const glm::dvec3 o = vtkNPRVector(origin);
-    volume += glm::dot(vtkNPRVector(x[0]) - o,
-      glm::cross(vtkNPRVector(x[1]) - o, vtkNPRVector(x[2]) - o));
+    volume +=
+      glm::dot(vtkNPRVector(x[0]) - o, glm::cross(vtkNPRVector(x[1]) - o, vtkNPRVector(x[2]) - o));
   }
-  std::sort(uses.begin(), uses.end(), [](const Use& u, const Use& v)
+  std::sort(uses.begin(), uses.end(),
+    [](const Use& u, const Use& v)
     { return u.Low < v.Low || (u.Low == v.Low && u.High < v.High); });
-  const auto sameEdge = [](const Use& u, const Use& v) { return u.Low == v.Low && u.High == v.High; };
+  const auto sameEdge = [](const Use& u, const Use& v)
+  { return u.Low == v.Low && u.High == v.High; };
   for (size_t i = 0; i < uses.size(); i += 2)
   {
     if (i + 1 >= uses.size() || !sameEdge(uses[i], uses[i + 1]) ||
@@ -253,7 +256,8 @@ void AddMesh(const vtkNPRMeshInstance& instance, const vtkNPRSceneView& view,
 }
 
 // The part of a convex polygon (world corners) between the near and far planes.
-std::vector<glm::dvec3> ClipToDepthRange(std::vector<glm::dvec3> polygon, const vtkNPRSceneView& view)
+std::vector<glm::dvec3> ClipToDepthRange(
+  std::vector<glm::dvec3> polygon, const vtkNPRSceneView& view)
 {
   for (double sign : { 1.0, -1.0 }) // near: z + w >= 0, far: w - z >= 0
   {

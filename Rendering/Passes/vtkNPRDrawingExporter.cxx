@@ -295,7 +295,7 @@ struct vtkNPRDrawingExporter::Target
   vtkNPRDrawingLines* Lines = nullptr; // the drawing pass's, else the exporter's own
   vtkNPRStrokeStyle Style;
   double FaceColor[3] = { 1.0, 1.0, 1.0 }; // the drawing pass's
-  bool DrawingStyle = false; // the renderer's vtkNPRPass draws the drawing style
+  bool DrawingStyle = false;               // the renderer's vtkNPRPass draws the drawing style
 };
 
 bool vtkNPRDrawingExporter::Write()
@@ -318,8 +318,7 @@ bool vtkNPRDrawingExporter::Write()
   // The raster under the lines: the renderer's part of the window, rendered again.
   vtkSmartPointer<vtkImageData> raster;
   if (target.Renderer->GetRenderWindow() &&
-    (this->EmbedImage == 1 ||
-      (this->EmbedImage == -1 && !target.DrawingStyle && !this->FillFaces)))
+    (this->EmbedImage == 1 || (this->EmbedImage == -1 && !target.DrawingStyle && !this->FillFaces)))
   {
     raster = GrabRaster(target.Renderer);
   }

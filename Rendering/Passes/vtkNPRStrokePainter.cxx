@@ -316,8 +316,8 @@ bool vtkNPRPaintFaces(cairo_t* cr, vtkPolyData* faces, const double* color, doub
     }
     if (!color)
     {
-      const vtkIdType cell = faces->GetNumberOfVerts() + faces->GetNumberOfLines() +
-        iterator->GetCurrentCellId();
+      const vtkIdType cell =
+        faces->GetNumberOfVerts() + faces->GetNumberOfLines() + iterator->GetCurrentCellId();
       cairo_set_source_rgb(cr, colors->GetComponent(cell, 0) / 255.0,
         colors->GetComponent(cell, 1) / 255.0, colors->GetComponent(cell, 2) / 255.0);
     }

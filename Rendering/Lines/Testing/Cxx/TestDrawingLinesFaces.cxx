@@ -305,8 +305,8 @@ int FacesOrder(bool parallel)
   int decided = 0;
   const int wrong = CompareWithRays(renderer, tris, painted, decided);
   std::cout << (parallel ? "parallel" : "perspective") << ": " << tris.size() << " triangles, "
-            << painted.size() << " polygons (" << lines->GetNumberOfFaceSplits()
-            << " splits); " << decided << " samples decided, " << wrong << " wrong\n";
+            << painted.size() << " polygons (" << lines->GetNumberOfFaceSplits() << " splits); "
+            << decided << " samples decided, " << wrong << " wrong\n";
   NPR_CHECK(decided > Width * Height / 9 / 2, "too few samples decided: " << decided);
   NPR_CHECK(wrong == 0, wrong << " samples show a triangle behind the first one hit");
   NPR_CHECK(lines->GetNumberOfFaceSplits() > 0, "triangles that cross were not split");
@@ -355,10 +355,12 @@ int FacesCulling()
     sphere->Update();
     const auto triangles = static_cast<size_t>(sphere->GetOutput()->GetNumberOfPolys());
     const double sign = reversed ? -1.0 : 1.0;
-    const auto facing = std::count_if(painted.begin(), painted.end(),
-      [&](const Painted& p) { return sign * ImageArea(p) > 0.0; });
+    const auto facing = std::count_if(
+      painted.begin(), painted.end(), [&](const Painted& p) { return sign * ImageArea(p) > 0.0; });
     const bool colored = std::all_of(painted.begin(), painted.end(),
-      [](const Painted& p) { return p.Id == Color{ 51, 102, 153 }; });
+      [](const Painted& p) {
+        return p.Id == Color{ 51, 102, 153 };
+      });
     std::cout << (reversed ? "inward" : "outward") << " winding: " << painted.size() << " of "
               << triangles << " triangles painted\n";
     NPR_CHECK(!painted.empty() && painted.size() < 0.6 * triangles,
@@ -379,7 +381,8 @@ int FacesErrors()
   for (int step = 0; step < 2; ++step)
   {
     const int errors = messages ? messages->Errors : 0;
-    NPR_CHECK(!lines->UpdateFaces(), (step ? "no size" : "no renderer") << ": UpdateFaces succeeded");
+    NPR_CHECK(
+      !lines->UpdateFaces(), (step ? "no size" : "no renderer") << ": UpdateFaces succeeded");
     NPR_CHECK(messages && messages->Errors == errors + 1, "no error reported");
     if (messages)
     {
@@ -389,8 +392,8 @@ int FacesErrors()
   }
   // An empty scene: no faces, and no error. A NaN corner: its triangle left out.
   lines->SetSize(Width, Height);
-  NPR_CHECK(lines->UpdateFaces() && lines->GetFaces()->GetNumberOfCells() == 0,
-    "an empty scene has faces");
+  NPR_CHECK(
+    lines->UpdateFaces() && lines->GetFaces()->GetNumberOfCells() == 0, "an empty scene has faces");
   vtkNew<vtkPolyData> broken;
   vtkNew<vtkPoints> points;
   points->InsertNextPoint(0, 0, 0);

@@ -82,8 +82,8 @@ void BuildScene(vtkRenderer* renderer)
 vtkSmartPointer<vtkImageData> Rasterise(const std::string& svg)
 {
   const std::string png = svg.substr(0, svg.size() - 4) + ".png";
-  const std::string command = std::string(RSVG_CONVERT) + " -w " + std::to_string(Width) +
-    " -h " + std::to_string(Height) + " -o '" + png + "' '" + svg + "'";
+  const std::string command = std::string(RSVG_CONVERT) + " -w " + std::to_string(Width) + " -h " +
+    std::to_string(Height) + " -o '" + png + "' '" + svg + "'";
   NPR_CHECK(std::system(command.c_str()) == 0, "failed: " << command);
   return nprReadPNG(png);
 }
@@ -129,8 +129,8 @@ double DifferingShare(vtkImageData* render, vtkImageData* file, int& inner)
 }
 
 // Writes the renderer's drawing with the exporter's fill settings and compares it with `render`.
-double ExportAndCompare(vtkRenderer* renderer, vtkImageData* render, bool fill, int colors,
-  const std::string& name)
+double ExportAndCompare(
+  vtkRenderer* renderer, vtkImageData* render, bool fill, int colors, const std::string& name)
 {
   vtkNew<vtkNPRDrawingExporter> exporter;
   exporter->SetRenderer(renderer);
@@ -150,8 +150,8 @@ double ExportAndCompare(vtkRenderer* renderer, vtkImageData* render, bool fill, 
   int inner = 0;
   const double share = DifferingShare(render, file, inner);
   std::cout << name << ": " << exporter->GetNumberOfFilledFaces() << " polygons, "
-            << exporter->GetNumberOfStrokes() << " strokes; " << 100.0 * share << " % of "
-            << inner << " inner pixels differ from the render\n";
+            << exporter->GetNumberOfStrokes() << " strokes; " << 100.0 * share << " % of " << inner
+            << " inner pixels differ from the render\n";
   return share;
 }
 
@@ -188,8 +188,8 @@ int Fill()
   const double face = ExportAndCompare(
     drawing, render, true, vtkNPRDrawingExporter::FACE_COLOR, "fill_face_color.svg");
   NPR_CHECK(face <= 0.01, 100.0 * face << " % of the inner pixels differ (1 % allowed)");
-  const double none = ExportAndCompare(
-    drawing, render, false, vtkNPRDrawingExporter::FACE_COLOR, "fill_none.svg");
+  const double none =
+    ExportAndCompare(drawing, render, false, vtkNPRDrawingExporter::FACE_COLOR, "fill_none.svg");
   NPR_CHECK(none > 0.1, "without FillFaces only " << 100.0 * none << " % differ");
   drawing->SetPass(nullptr);
   return nprTestResult();
