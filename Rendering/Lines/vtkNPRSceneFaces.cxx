@@ -10,6 +10,7 @@
 #include "vtkIntArray.h"
 #include "vtkMapper.h"
 #include "vtkNPRFaceOrder.h"
+#include "vtkNPRImageOverlaps.h"
 #include "vtkNPRMeshFaces.h"
 #include "vtkNPRSceneLines.h"
 #include "vtkNPRVectors.h"
@@ -25,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 namespace
 {
@@ -206,9 +208,16 @@ bool OutsideFrustum(const double* corners[3], const vtkNPRSceneView& view)
   return false;
 }
 
-// Adds the triangles of one mesh that can show to `order`, their colours to `colors` (the tags).
-void AddMesh(const vtkNPRMeshInstance& instance, const vtkNPRSceneView& view,
-  vtkNPRFaceOrder& order, std::vector<Color>& colors, vtkNPRSceneFacesCounts& counts)
+// A triangle that can show: its world corners and its colour.
+struct Candidate
+{
+  std::array<double, 9> Corners;
+  Color Fill;
+};
+
+// Appends the triangles of one mesh that can show to `candidates`.
+void CollectMesh(const vtkNPRMeshInstance& instance, const vtkNPRSceneView& view,
+  std::vector<Candidate>& candidates, vtkNPRSceneFacesCounts& counts)
 {
   vtkNPRMeshFaces faces;
   faces.Set(instance.Mesh);
@@ -244,15 +253,31 @@ void AddMesh(const vtkNPRMeshInstance& instance, const vtkNPRSceneView& view,
       ++counts.LeftOut;
       continue;
     }
-    const double triangle[9] = { corners[0][0], corners[0][1], corners[0][2], corners[1][0],
-      corners[1][1], corners[1][2], corners[2][0], corners[2][1], corners[2][2] };
-    if (!order.Add(triangle, 3, static_cast<vtkIdType>(colors.size())))
-    {
-      ++counts.LeftOut;
-      continue;
-    }
-    colors.push_back(palette.Of(faces, t, ids));
+    candidates.push_back(
+      { { corners[0][0], corners[0][1], corners[0][2], corners[1][0], corners[1][1], corners[1][2],
+          corners[2][0], corners[2][1], corners[2][2] },
+        palette.Of(faces, t, ids) });
   }
+}
+
+// The candidates' images for vtkNPRMarkImageOverlaps.
+std::vector<vtkNPRImageTriangle> ProjectCandidates(
+  const std::vector<Candidate>& candidates, const vtkNPRSceneView& view)
+{
+  std::vector<vtkNPRImageTriangle> images(candidates.size());
+  for (size_t i = 0; i < candidates.size(); ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      double c[4], image[3];
+      view.Clip(&candidates[i].Corners[3 * k], c);
+      images[i].Unprojected = images[i].Unprojected || !(c[2] + c[3] > 0.0 && c[3] > 0.0);
+      view.ToImage(&candidates[i].Corners[3 * k], image);
+      images[i].X[k] = image[0];
+      images[i].Y[k] = image[1];
+    }
+  }
+  return images;
 }
 
 // The part of a convex polygon (world corners) between the near and far planes.
@@ -332,11 +357,26 @@ vtkNPRSceneFacesCounts vtkNPRSceneFaces(
   const std::vector<vtkNPRMeshInstance>& meshes, const vtkNPRSceneView& view, vtkPolyData* output)
 {
   vtkNPRSceneFacesCounts counts;
-  vtkNPRFaceOrder order;
-  std::vector<Color> colors;
+  std::vector<Candidate> candidates;
   for (const vtkNPRMeshInstance& instance : meshes)
   {
-    AddMesh(instance, view, order, colors, counts);
+    CollectMesh(instance, view, candidates, counts);
+  }
+  // Only the triangles whose images overlap need the partition; the others are painted first.
+  const std::vector<char> overlapping =
+    vtkNPRMarkImageOverlaps(ProjectCandidates(candidates, view));
+  vtkNPRFaceOrder order;
+  std::vector<std::uint32_t> free;
+  for (std::uint32_t i = 0; i < candidates.size(); ++i)
+  {
+    if (!overlapping[i])
+    {
+      free.push_back(i);
+    }
+    else if (!order.Add(candidates[i].Corners.data(), 3, i))
+    {
+      ++counts.LeftOut;
+    }
   }
   order.Build();
   counts.Splits = order.GetNumberOfSplits();
@@ -350,6 +390,18 @@ vtkNPRSceneFacesCounts vtkNPRSceneFaces(
   vtkNew<vtkUnsignedCharArray> cellColors;
   cellColors->SetName("Colors");
   cellColors->SetNumberOfComponents(3);
+  const auto paint = [&](std::vector<glm::dvec3> corners, const Color& fill)
+  {
+    if (AppendPolygon(ClipToDepthRange(std::move(corners), view), view, points, image, polys))
+    {
+      cellColors->InsertNextTypedTuple(fill.data());
+    }
+  };
+  for (std::uint32_t i : free)
+  {
+    const double* x = candidates[i].Corners.data();
+    paint({ vtkNPRVector(x), vtkNPRVector(x + 3), vtkNPRVector(x + 6) }, candidates[i].Fill);
+  }
   for (std::uint32_t polygon : order.BackToFront(view.Eye, view.Direction, view.Parallel))
   {
     std::vector<glm::dvec3> corners(order.GetNumberOfCorners(polygon));
@@ -357,10 +409,7 @@ vtkNPRSceneFacesCounts vtkNPRSceneFaces(
     {
       order.GetCorner(polygon, static_cast<int>(k), glm::value_ptr(corners[k]));
     }
-    if (AppendPolygon(ClipToDepthRange(std::move(corners), view), view, points, image, polys))
-    {
-      cellColors->InsertNextTypedTuple(colors[order.GetTag(polygon)].data());
-    }
+    paint(std::move(corners), candidates[order.GetTag(polygon)].Fill);
   }
   output->Initialize();
   output->SetPoints(points);

@@ -3,7 +3,8 @@
 // The faces a vector drawing fills (vtkNPRDrawingLines::UpdateFaces), part of the TestDrawingLines
 // program: painted in their order, the faces give at every sample the triangle a ray meets first,
 // among random triangles that pass through each other and a sphere through them (perspective and
-// parallel); a closed sphere loses its back faces, wound either way; colours; bad input.
+// parallel), and on a closed torus over itself beside a sphere; a closed sphere loses its back
+// faces, wound either way; colours; bad input.
 //
 // usage: TestDrawingLines CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprTesting.h"
@@ -314,6 +315,104 @@ int FacesOrder(bool parallel)
 }
 NPR_TEST_CASE("drawing-faces-order", [] { return FacesOrder(false); });
 NPR_TEST_CASE("drawing-faces-order-parallel", [] { return FacesOrder(true); });
+
+// A closed torus (its faces in a random order) seen at a slant, its near side over its far side
+// (faces whose images overlap, ordered), its back faces left out, and a sphere beside it that
+// overlaps nothing (faces painted first, unordered): the same comparison with the rays.
+int FacesOrderTorus()
+{
+  vtkNew<vtkPolyData> torus; // closed: each point shared, quads as two outward triangles
+  {
+    constexpr int U = 48, V = 24;
+    vtkNew<vtkPoints> points;
+    std::vector<std::array<vtkIdType, 3>> triangles;
+    for (int u = 0; u < U; ++u)
+    {
+      for (int v = 0; v < V; ++v)
+      {
+        const double a = 2.0 * M_PI * u / U, b = 2.0 * M_PI * v / V;
+        const double r = 1.0 + 0.35 * std::cos(b);
+        points->InsertNextPoint(r * std::cos(a), r * std::sin(a), 0.35 * std::sin(b));
+        const vtkIdType p00 = u * V + v, p10 = ((u + 1) % U) * V + v;
+        const vtkIdType p01 = u * V + (v + 1) % V, p11 = ((u + 1) % U) * V + (v + 1) % V;
+        triangles.push_back({ p00, p10, p11 });
+        triangles.push_back({ p00, p11, p01 });
+      }
+    }
+    // In a random order: painting the faces in the mesh's order would not be right by chance.
+    std::shuffle(triangles.begin(), triangles.end(), std::mt19937(7));
+    vtkNew<vtkCellArray> cells;
+    for (const auto& t : triangles)
+    {
+      cells->InsertNextCell(3, t.data());
+    }
+    torus->SetPoints(points);
+    torus->SetPolys(cells);
+  }
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(2.2, 0.0, 0.0);
+  sphere->SetRadius(0.5);
+  sphere->Update();
+  vtkNew<vtkRenderer> renderer;
+  std::vector<Triangle> tris;
+  int next = 0;
+  for (vtkPolyData* source : { static_cast<vtkPolyData*>(torus), sphere->GetOutput() })
+  {
+    vtkNew<vtkPolyData> mesh;
+    mesh->ShallowCopy(source);
+    mesh->GetPointData()->Initialize(); // no normals or scalars: the cell ids colour it
+    vtkNew<vtkUnsignedCharArray> ids;
+    ids->SetNumberOfComponents(3);
+    auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++next)
+    {
+      vtkIdType size;
+      const vtkIdType* cell;
+      it->GetCurrentCell(size, cell);
+      const Color id = { static_cast<unsigned char>(next % 256),
+        static_cast<unsigned char>(next / 256), 1 };
+      ids->InsertNextTypedTuple(id.data());
+      for (vtkIdType k = 1; k + 1 < size; ++k) // the polygon's fan, as drawn
+      {
+        Triangle t;
+        mesh->GetPoint(cell[0], t.A.data());
+        mesh->GetPoint(cell[k], t.B.data());
+        mesh->GetPoint(cell[k + 1], t.C.data());
+        t.Id = id;
+        tris.push_back(t);
+      }
+    }
+    mesh->GetCellData()->SetScalars(ids);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(mesh);
+    mapper->SetScalarModeToUseCellData();
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    renderer->AddActor(actor);
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.5, -3.5, 1.0);
+  camera->SetFocalPoint(0.6, 0.0, 0.0);
+  camera->SetViewUp(0, 0, 1);
+  renderer->ResetCameraClippingRange();
+  vtkNew<vtkNPRDrawingLines> lines;
+  lines->SetRenderer(renderer);
+  lines->SetSize(Width, Height);
+  NPR_CHECK(lines->UpdateFaces(), "UpdateFaces failed");
+  const std::vector<Painted> painted = ReadFaces(lines->GetFaces());
+  int decided = 0;
+  const int wrong = CompareWithRays(renderer, tris, painted, decided);
+  std::cout << "torus and sphere: " << tris.size() << " triangles, " << painted.size()
+            << " polygons (" << lines->GetNumberOfFaceSplits() << " splits); " << decided
+            << " samples decided, " << wrong << " wrong\n";
+  NPR_CHECK(decided > 2000, "too few samples decided: " << decided);
+  NPR_CHECK(wrong == 0, wrong << " samples show a face behind the first one hit");
+  NPR_CHECK(painted.size() < 0.75 * tris.size(),
+    painted.size() << " polygons of " << tris.size()
+                   << " triangles: the back faces were not left out");
+  return nprTestResult();
+}
+NPR_TEST_CASE("drawing-faces-order-torus", FacesOrderTorus);
 
 // The signed image area of a polygon: positive when it winds counter-clockwise (front facing).
 double ImageArea(const Painted& p)
