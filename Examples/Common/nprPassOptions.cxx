@@ -40,6 +40,11 @@ Lines (--style edges, toon+edges, sketch and drawing):
                            --line-width)
   --max-line-fraction F    largest share of an object's width one of its lines may take,
                            0..1 (default 0; 0 is no limit, 0.1 suits stream tubes)
+  --depth-falloff          line widths fall off with depth: --near-line-scale times each
+                           kind's width at the near clipping plane, --far-line-scale at
+                           the far one (the scene's depth)
+  --near-line-scale F      width scale of the nearest lines, 0.1..4 (default 1.5)
+  --far-line-scale F       width scale of the farthest lines, 0.1..4 (default 0.5)
   --surface-line-shade F   lines over a surface in its own colour times F, 0..1 (default 0;
                            0 keeps the lines' own colours, 0.5 suits colour-mapped data)
   --line-color COLOR       colour of every line type: a name (red, navy, ...), r,g,b in
@@ -62,6 +67,10 @@ Technical drawing (--style drawing: white faces, exact lines from the meshes; --
 --crease-angle, --line-width and the colours apply):
   --hidden-lines           also draw the hidden lines, dashed (6 px on, 4 off at 72 DPI),
                            0.6 times as wide, in grey
+  --taper PX               visible strokes grow from nothing at an open end to their width
+                           over PX pixels at 72 DPI, 0..200 (default 0; 0 is no taper)
+  --curvature-width F      visible strokes up to 1 + F times as wide where they bend,
+                           0..4 (default 0)
 
 Toon shading (--style toon, toon+edges):
   --toon-bands N           number of equal light bands, 1..64 (default 3)
@@ -133,6 +142,10 @@ const RangeFlag RangeFlags[] = {
   { "--suggestive-width", &nprPassSettings::SuggestiveContourLineWidth, 0.0, 16.0 },
   { "--max-line-fraction", &nprPassSettings::MaximumLineFraction, 0.0, 1.0 },
   { "--surface-line-shade", &nprPassSettings::SurfaceLineShade, 0.0, 1.0 },
+  { "--near-line-scale", &nprPassSettings::NearLineScale, 0.1, 4.0 },
+  { "--far-line-scale", &nprPassSettings::FarLineScale, 0.1, 4.0 },
+  { "--taper", &nprPassSettings::TaperLength, 0.0, 200.0 },
+  { "--curvature-width", &nprPassSettings::CurvatureWidth, 0.0, 4.0 },
   { "--packed-threshold", &nprPassSettings::PackedThreshold, 0.001, 4.0 },
   { "--uncertainty", &nprPassSettings::Uncertainty, 0.0, 32.0 },
   { "--noise-frequency", &nprPassSettings::NoiseFrequency, 0.05, 25.0 },
@@ -150,6 +163,7 @@ const SwitchFlag SwitchFlags[] = {
   { "--packed-blur", &nprPassSettings::PackedBlur, true },
   { "--toon-per-vertex", &nprPassSettings::ToonPerVertex, true },
   { "--hidden-lines", &nprPassSettings::HiddenLines, true },
+  { "--depth-falloff", &nprPassSettings::DepthFalloff, true },
   { "--sketch-toon", &nprPassSettings::SketchToon, true },
 };
 const std::pair<const char*, double (nprPassSettings::*)[3]> ColorFlags[] = {
@@ -341,7 +355,9 @@ const FlagScope FlagScopes[] = { { "--lines", Strokes }, { "--crease-angle", Str
   { "--noise-frequency", StyleBit(vtkNPRPass::SKETCH) },
   { "--noise-space", StyleBit(vtkNPRPass::SKETCH) },
   { "--paper-color", StyleBit(vtkNPRPass::SKETCH) },
-  { "--hidden-lines", StyleBit(vtkNPRPass::DRAWING) } };
+  { "--hidden-lines", StyleBit(vtkNPRPass::DRAWING) }, { "--taper", StyleBit(vtkNPRPass::DRAWING) },
+  { "--curvature-width", StyleBit(vtkNPRPass::DRAWING) }, { "--depth-falloff", Strokes },
+  { "--near-line-scale", Strokes }, { "--far-line-scale", Strokes } };
 
 // "edges, toon+edges or sketch"
 std::string StyleList(unsigned styles)

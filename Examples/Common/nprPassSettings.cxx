@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "nprPassSettings.h"
 
+#include "vtkNPRDrawingPass.h"
 #include "vtkNPRInkPass.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRSketchPass.h"
@@ -34,6 +35,9 @@ void nprApplyPassSettings(vtkNPRPass* pass, const nprPassSettings& settings)
   edges->SetSuggestiveContourLineWidth(settings.SuggestiveContourLineWidth);
   edges->SetMaximumLineFraction(settings.MaximumLineFraction);
   edges->SetSurfaceLineShade(settings.SurfaceLineShade);
+  edges->SetDepthFalloff(settings.DepthFalloff);
+  edges->SetNearLineScale(settings.NearLineScale);
+  edges->SetFarLineScale(settings.FarLineScale);
   edges->SetSilhouetteColor(settings.SilhouetteColor);
   edges->SetCreaseColor(settings.CreaseColor);
   edges->SetContourColor(settings.ContourColor);
@@ -55,6 +59,9 @@ void nprApplyPassSettings(vtkNPRPass* pass, const nprPassSettings& settings)
   sketch->SetPaperColor(settings.PaperColor);
   pass->SetSketchToonShading(settings.SketchToon);
   pass->SetHiddenLines(settings.HiddenLines);
+  vtkNPRDrawingPass* drawing = pass->GetDrawingPass();
+  drawing->SetTaperLength(settings.TaperLength);
+  drawing->SetCurvatureWidth(settings.CurvatureWidth);
   vtkNPRInkPass* ink = pass->GetInkPass();
   ink->SetLineWidth(settings.LineWidth);
   ink->SetInkColor(settings.SilhouetteColor);

@@ -36,6 +36,9 @@ struct nprPassSettings
   double SuggestiveContourLineWidth = 0.0;
   double MaximumLineFraction = 0.0;
   double SurfaceLineShade = 0.0;
+  bool DepthFalloff = false; // widths from NearLineScale to FarLineScale over the depth
+  double NearLineScale = 1.5;
+  double FarLineScale = 0.5;
   double SilhouetteColor[3] = { 0.0, 0.0, 0.0 };
   double CreaseColor[3] = { 0.0, 0.0, 0.0 };
   double ContourColor[3] = { 0.0, 0.0, 0.0 };
@@ -61,6 +64,8 @@ struct nprPassSettings
 
   // Technical drawing
   bool HiddenLines = false;
+  double TaperLength = 0.0;
+  double CurvatureWidth = 0.0;
 
   // The flags given on the command line (nprParsePassOption), for nprCheckPassOptions.
   std::set<std::string> GivenFlags;

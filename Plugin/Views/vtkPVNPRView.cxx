@@ -63,8 +63,12 @@ void vtkPVNPRView::UpdateSceneRenderPass()
     this->SynchronizedRenderers->SetRenderPass(pass);
   }
 }
-vtkPVNPRViewForward(FaceCreases, bool, GetEdgePass(), SetFaceCreases) vtkPVNPRViewForward(
-  SmoothSilhouettes, bool, GetEdgePass(),
+vtkPVNPRViewForward(DepthFalloff, bool, GetEdgePass(), SetDepthFalloff) vtkPVNPRViewForward(
+  NearLineScale, double, GetEdgePass(), SetNearLineScale) vtkPVNPRViewForward(FarLineScale, double,
+  GetEdgePass(), SetFarLineScale) vtkPVNPRViewForward(DrawingTaperLength, double, GetDrawingPass(),
+  SetTaperLength) vtkPVNPRViewForward(DrawingCurvatureWidth, double, GetDrawingPass(),
+  SetCurvatureWidth) vtkPVNPRViewForward(FaceCreases, bool, GetEdgePass(),
+  SetFaceCreases) vtkPVNPRViewForward(SmoothSilhouettes, bool, GetEdgePass(),
   SetSmoothSilhouettes) vtkPVNPRViewForward(SuggestiveContours, bool, GetEdgePass(),
   SetSuggestiveContours) vtkPVNPRViewForward(SuggestiveContourThreshold, double, GetEdgePass(),
   SetSuggestiveContourThreshold) vtkPVNPRViewForwardColor(SuggestiveContourColor, GetEdgePass(),

@@ -74,6 +74,9 @@ public:
   void SetSuggestiveContourLineWidth(double width);
   void SetMaximumLineFraction(double fraction);
   void SetSurfaceLineShade(double shade);
+  void SetDepthFalloff(bool on);
+  void SetNearLineScale(double scale);
+  void SetFarLineScale(double scale);
   void SetLineAntiAliasing(bool on);
   void SetLineEncoding(int encoding);
   void SetPackedThreshold(double threshold);
@@ -94,6 +97,8 @@ public:
   void SetDrawingHiddenLines(bool on);
   void SetDrawingFaceColor(double r, double g, double b);
   void SetDrawingHiddenLineColor(double r, double g, double b);
+  void SetDrawingTaperLength(double pixels);
+  void SetDrawingCurvatureWidth(double factor);
   ///@}
 
   ///@{

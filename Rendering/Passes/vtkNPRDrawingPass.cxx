@@ -214,5 +214,7 @@ void vtkNPRDrawingPass::PrintSelf(ostream& os, vtkIndent indent)
      << " " << this->HiddenLineColor[2] << "\n";
   os << indent << "HiddenLineWidth: " << this->HiddenLineWidth << "\n";
   os << indent << "DashLength: " << this->DashLength << " GapLength: " << this->GapLength << "\n";
+  os << indent << "TaperLength: " << this->TaperLength << "\n";
+  os << indent << "CurvatureWidth: " << this->CurvatureWidth << "\n";
   os << indent << "NumberOfStrokeUpdates: " << this->Internal->StrokeUpdates << "\n";
 }

@@ -96,6 +96,26 @@ public:
   vtkGetMacro(GapLength, double);
   ///@}
 
+  ///@{
+  /**
+   * Tapered ends: the visible strokes' width grows from nothing at an open end to its full width
+   * over TaperLength pixels at 72 DPI (default 0: no taper; clamped to [0, 200]). A closed
+   * stroke has no end. In the image and in vector files (each stroke then one filled outline).
+   */
+  vtkSetClampMacro(TaperLength, double, 0.0, 200.0);
+  vtkGetMacro(TaperLength, double);
+  ///@}
+
+  ///@{
+  /**
+   * Width from curvature: a visible stroke is up to 1 + CurvatureWidth times as wide where it
+   * bends (fully where its radius of curvature is 8 pixels or less; default 0: off; clamped to
+   * [0, 4]).
+   */
+  vtkSetClampMacro(CurvatureWidth, double, 0.0, 4.0);
+  vtkGetMacro(CurvatureWidth, double);
+  ///@}
+
   /**
    * The vtkNPRDrawingLines this pass computes its strokes with (its settings other than the
    * renderer, size, line types, crease angle and hidden lines can be tuned). Its renderer is set
@@ -129,6 +149,8 @@ protected:
   double HiddenLineWidth = 0.6;
   double DashLength = 6.0;
   double GapLength = 4.0;
+  double TaperLength = 0.0;
+  double CurvatureWidth = 0.0;
 
 private:
   vtkNPRDrawingPass(const vtkNPRDrawingPass&) = delete;

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkNPREdgePass.h"
 
+#include "vtkCamera.h"
 #include "vtkMath.h"
 #include "vtkNPRGBufferPass.h"
 #include "vtkNPRLineFilter.h"
@@ -356,14 +357,22 @@ std::string vtkNPREdgePass::GetCompositeDefines(vtkRenderer* renderer, int outpu
   Internals& internal = *this->Internal;
   double widths[4];
   this->GetDrawnLineWidths(renderer, widths);
-  internal.Filter.Compute(widths);
+  if (this->DepthFalloff)
+  {
+    internal.Filter.Compute(widths, this->NearLineScale, this->FarLineScale);
+  }
+  else
+  {
+    internal.Filter.Compute(widths);
+  }
   std::ostringstream defines;
   defines << "#define NPR_LINES " << (this->GetDrawsLines() ? 1 : 0) << "\n#define NPR_TAPS "
           << internal.Filter.Taps.size() / 3 << "\n#define NPR_RADIUS "
           << internal.Filter.Radius + 1 << "\n#define NPR_ANTIALIAS "
           << (this->AntiAliasing ? 1 : 0) << "\n#define NPR_OUTPUT " << output
           << "\n#define NPR_REMAPPED_DEPTH " << (this->GBufferPass->GetDepthRemapped() ? 1 : 0)
-          << "\n"
+          << "\n#define NPR_DEPTH_FALLOFF " << (internal.Filter.HasFalloff() ? 1 : 0)
+          << "\n#define NPR_FALLOFF_STEPS " << vtkNPRLineFilter::FalloffSteps << "\n"
           << this->GetLineColorDefines();
   return defines.str();
 }
@@ -398,7 +407,8 @@ std::string vtkNPREdgePass::GetCompositeKey(vtkRenderer* renderer)
   {
     key << " " << colorValue[0] << " " << colorValue[1] << " " << colorValue[2];
   }
-  key << " " << this->SurfaceLineShade;
+  key << " " << this->SurfaceLineShade << " " << this->Internal->Filter.Scales[0] << " "
+      << this->Internal->Filter.Scales[1];
   return key.str();
 }
 
@@ -439,7 +449,7 @@ bool vtkNPREdgePass::DrawLines(const vtkRenderState* state, const int origin[2],
   {
     internal.DrawnLines()->Activate();
   }
-  this->SetCompositeUniforms(program, origin);
+  this->SetCompositeUniforms(program, origin, renderer);
   composite.Render();
   color->Deactivate();
   depth->Deactivate();
@@ -450,7 +460,8 @@ bool vtkNPREdgePass::DrawLines(const vtkRenderState* state, const int origin[2],
   return true;
 }
 
-void vtkNPREdgePass::SetCompositeUniforms(vtkShaderProgram* program, const int origin[2])
+void vtkNPREdgePass::SetCompositeUniforms(
+  vtkShaderProgram* program, const int origin[2], vtkRenderer* renderer)
 {
   Internals& internal = *this->Internal;
   vtkNPRGBufferPass* gbuffer = this->GBufferPass;
@@ -474,6 +485,17 @@ void vtkNPREdgePass::SetCompositeUniforms(vtkShaderProgram* program, const int o
   program->SetUniform2f("texelSize", texelSize);
   program->SetUniform4f("coverageLevel", filter.CoverageLevel);
   program->SetUniform4f("coverageSlope", filter.CoverageSlope);
+  if (filter.HasFalloff())
+  {
+    // Each kind's mapping at the falloff's steps, and the camera that gives a depth its step.
+    program->SetUniform4fv("falloffLevels", vtkNPRLineFilter::FalloffSteps, filter.FalloffLevels);
+    program->SetUniform4fv("falloffSlopes", vtkNPRLineFilter::FalloffSteps, filter.FalloffSlopes);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    const double* range = camera->GetClippingRange();
+    const float falloffCamera[3] = { static_cast<float>(range[0]), static_cast<float>(range[1]),
+      camera->GetParallelProjection() ? 1.0f : 0.0f };
+    program->SetUniform3f("falloffCamera", falloffCamera);
+  }
   this->SetLineColorUniforms(program);
 }
 
@@ -529,6 +551,8 @@ void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LineWidth: " << this->LineWidth << " (silhouettes " << this->SilhouetteLineWidth
      << ", creases " << this->CreaseLineWidth << ", contours " << this->ContourLineWidth
      << ", suggestive contours " << this->SuggestiveContourLineWidth << ": 0 is LineWidth)\n";
+  os << indent << "DepthFalloff: " << this->DepthFalloff << " (near x" << this->NearLineScale
+     << ", far x" << this->FarLineScale << ")\n";
   os << indent << "MaximumLineFraction: " << this->MaximumLineFraction << "\n";
   os << indent << "SurfaceLineShade: " << this->SurfaceLineShade << "\n";
   os << indent << "Encoding: " << GetEncodingName(this->Encoding) << " packed threshold "

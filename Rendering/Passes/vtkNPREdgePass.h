@@ -265,6 +265,24 @@ public:
   vtkGetMacro(SuggestiveContourLineWidth, double);
   ///@}
 
+  ///@{
+  /**
+   * Width falling off with depth (off by default): with DepthFalloff on, a line's width is its
+   * kind's times NearLineScale (default 1.5) at the camera's near clipping plane, times
+   * FarLineScale (default 0.5) at its far one, linear in the distance between (each clamped to
+   * [0.1, 4]): near lines heavier. VTK places the clipping planes on the scene's bounds
+   * (ResetCameraClippingRange), so the scale runs over the scene's depth. The drawing style's
+   * visible strokes take it point by point.
+   */
+  vtkSetMacro(DepthFalloff, bool);
+  vtkGetMacro(DepthFalloff, bool);
+  vtkBooleanMacro(DepthFalloff, bool);
+  vtkSetClampMacro(NearLineScale, double, 0.1, 4.0);
+  vtkGetMacro(NearLineScale, double);
+  vtkSetClampMacro(FarLineScale, double, 0.1, 4.0);
+  vtkGetMacro(FarLineScale, double);
+  ///@}
+
   /**
    * The width in pixels of the widest line drawn for this renderer: the largest of the widths of
    * the kinds drawn (each LineWidth where it is 0; LineWidth when none is drawn) x DPI / 72 x tile
@@ -397,6 +415,9 @@ protected:
   double ContourColor[3] = { 0.0, 0.0, 0.0 };
   double LineWidth = 1.5;
   double SilhouetteLineWidth = 0.0;
+  bool DepthFalloff = false;
+  double NearLineScale = 1.5;
+  double FarLineScale = 0.5;
   double CreaseLineWidth = 0.0;
   double ContourLineWidth = 0.0;
   double SuggestiveContourLineWidth = 0.0;
@@ -429,7 +450,7 @@ private:
   // The composite of the lines (and colour and depth, or the mask, or the coverage).
   std::string GetCompositeDefines(vtkRenderer* renderer, int output);
   bool DrawLines(const vtkRenderState* state, const int origin[2], int output);
-  void SetCompositeUniforms(vtkShaderProgram* program, const int origin[2]);
+  void SetCompositeUniforms(vtkShaderProgram* program, const int origin[2], vtkRenderer* renderer);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

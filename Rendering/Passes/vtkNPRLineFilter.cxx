@@ -25,16 +25,30 @@ double CoverageSlopeOverLevel(double width, double sigma)
 }
 }
 
-void vtkNPRLineFilter::Compute(const double widths[4])
+void vtkNPRLineFilter::Compute(const double widths[4], double nearScale, double farScale)
 {
-  if (std::equal(widths, widths + 4, this->Widths))
+  if (std::equal(widths, widths + 4, this->Widths) && this->Scales[0] == nearScale &&
+    this->Scales[1] == farScale)
   {
     return;
   }
   std::copy_n(widths, 4, this->Widths);
-  const double width = *std::max_element(widths, widths + 4);
+  this->Scales[0] = nearScale;
+  this->Scales[1] = farScale;
+  const double width =
+    *std::max_element(widths, widths + 4) * std::max({ 1.0, nearScale, farScale });
   const double sigma = LineSigma(width);
-  this->ComputeCoverage(width, sigma, this->ComputeTaps(width, sigma));
+  const double sum = this->ComputeTaps(width, sigma);
+  for (int kind = 0; kind < 4; ++kind)
+  {
+    Coverage(widths[kind], width, sigma, sum, this->CoverageLevel[kind], this->CoverageSlope[kind]);
+    for (int step = 0; step < FalloffSteps; ++step)
+    {
+      const double scale = nearScale + (farScale - nearScale) * step / (FalloffSteps - 1.0);
+      Coverage(widths[kind] * scale, width, sigma, sum, this->FalloffLevels[step][kind],
+        this->FalloffSlopes[step][kind]);
+    }
+  }
 }
 
 double vtkNPRLineFilter::ComputeTaps(double width, double sigma)
@@ -82,7 +96,8 @@ double vtkNPRLineFilter::ComputeTaps(double width, double sigma)
   return sum;
 }
 
-void vtkNPRLineFilter::ComputeCoverage(double width, double sigma, double sum)
+void vtkNPRLineFilter::Coverage(
+  double kindWidth, double filterWidth, double sigma, double sum, float& level, float& slope)
 {
   // Across a one-pixel line the filtered value is P(d) = g(d): coverage is P's level set at d =
   // width / 2, with the slope there giving one pixel of anti-aliasing. A kind narrower than the
@@ -90,19 +105,16 @@ void vtkNPRLineFilter::ComputeCoverage(double width, double sigma, double sum)
   // is steepened so that the line's centre is covered as much as a line of its width covers a
   // pixel (fully from one pixel up).
   const double peak = 1.0 / sum; // P(0)
-  for (int kind = 0; kind < 4; ++kind)
+  const double half = 0.5 * kindWidth;
+  const double value = std::exp(-half * half / (2.0 * sigma * sigma)) / sum;
+  double steepness = CoverageSlopeOverLevel(kindWidth, sigma) * value;
+  const double centre = std::min(1.0, kindWidth); // the coverage wanted at d = 0
+  if (kindWidth < filterWidth && centre > 0.5)
   {
-    const double half = 0.5 * this->Widths[kind];
-    const double level = std::exp(-half * half / (2.0 * sigma * sigma)) / sum;
-    double slope = CoverageSlopeOverLevel(this->Widths[kind], sigma) * level;
-    const double centre = std::min(1.0, this->Widths[kind]); // the coverage wanted at d = 0
-    if (this->Widths[kind] < width && centre > 0.5)
-    {
-      slope = std::min(slope, (peak - level) / (centre - 0.5));
-    }
-    this->CoverageLevel[kind] = static_cast<float>(level);
-    this->CoverageSlope[kind] = static_cast<float>(slope);
+    steepness = std::min(steepness, (peak - value) / (centre - 0.5));
   }
+  level = static_cast<float>(value);
+  slope = static_cast<float>(steepness);
 }
 
 void vtkNPRSetWidthLimitUniforms(vtkShaderProgram* program, const double widths[4], double fraction)

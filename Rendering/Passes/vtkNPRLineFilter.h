@@ -19,15 +19,25 @@ struct vtkNPRLineFilter
   float CoverageLevel[4] = { 0.5f, 0.5f, 0.5f, 0.5f };
   float CoverageSlope[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
   double Widths[4] = { -1.0, -1.0, -1.0, -1.0 }; // the widths the filter was computed for
+  // With a depth falloff (vtkNPREdgePass's DepthFalloff): the widths' scales at the near and far
+  // clipping planes, and each kind's mapping at FalloffSteps scales evenly between them.
+  static constexpr int FalloffSteps = 8;
+  double Scales[2] = { 1.0, 1.0 };
+  float FalloffLevels[FalloffSteps][4] = {};
+  float FalloffSlopes[FalloffSteps][4] = {};
 
-  // The taps for the widest line, and each kind's level set of their result at its own width
-  // (in pixels). Nothing to do when the widths are those of the last call.
-  void Compute(const double widths[4]);
+  // The taps for the widest line (at the larger scale), and each kind's level set of their
+  // result at its own width (in pixels), at scale 1 and at the falloff's steps. Nothing to do
+  // when the widths and scales are those of the last call.
+  void Compute(const double widths[4], double nearScale = 1.0, double farScale = 1.0);
+  bool HasFalloff() const { return this->Scales[0] != 1.0 || this->Scales[1] != 1.0; }
 
 private:
   // The taps of the Gaussian of standard deviation sigma; returns the discrete kernel's sum.
   double ComputeTaps(double width, double sigma);
-  void ComputeCoverage(double width, double sigma, double sum);
+  // The level and slope of one kind's width with the filter of this width, sigma and sum.
+  static void Coverage(
+    double kindWidth, double filterWidth, double sigma, double sum, float& level, float& slope);
 };
 
 // The width limit's uniforms (glsl/vtkNPREdgeLimitFS.glsl) for the kinds' widths in pixels,

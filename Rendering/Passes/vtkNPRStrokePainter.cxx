@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkNPRStrokePainter.h"
 
+#include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -19,6 +20,7 @@
 #include <cairo.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -120,6 +122,22 @@ vtkNPRStrokeStyle vtkNPRMakeStrokeStyle(
   style.HiddenLineWidth = hiddenWidth * style.LineWidth;
   style.DashLength = dash * scale;
   style.GapLength = gap * scale;
+  if (drawing)
+  {
+    style.TaperLength = drawing->GetTaperLength() * scale;
+    style.CurvatureWidth = drawing->GetCurvatureWidth();
+  }
+  if (edges && edges->GetDepthFalloff())
+  {
+    style.DepthFalloff = true;
+    style.NearScale = edges->GetNearLineScale();
+    style.FarScale = edges->GetFarLineScale();
+  }
+  if (vtkCamera* camera = renderer ? renderer->GetActiveCamera() : nullptr)
+  {
+    camera->GetClippingRange(style.ClippingRange);
+    style.Parallel = camera->GetParallelProjection() != 0;
+  }
   return style;
 }
 
@@ -227,6 +245,166 @@ bool TraceStroke(
 }
 }
 
+namespace
+{
+// A point of a stroke in Cairo's user space, with its depth and its distance along the stroke.
+struct StrokePoint
+{
+  double X, Y, Depth, Along;
+};
+
+// The stroke's points, y flipped; with a taper or a width from curvature, long segments cut so
+// that the width ramps along the taper and a bend widens the stroke only about it (4 px).
+std::vector<StrokePoint> SampleStroke(vtkIdType size, const vtkIdType* ids,
+  vtkDataArray* coordinates, double height, const vtkNPRStrokeStyle& style)
+{
+  std::vector<StrokePoint> points;
+  double step = style.TaperLength > 0.0 ? std::max(0.5, style.TaperLength / 8.0) : 1e300;
+  step = style.CurvatureWidth > 0.0 ? std::min(step, 4.0) : step;
+  for (vtkIdType k = 0; k < size; ++k)
+  {
+    const StrokePoint p = { coordinates->GetComponent(ids[k], 0),
+      height - coordinates->GetComponent(ids[k], 1),
+      coordinates->GetNumberOfComponents() > 2 ? coordinates->GetComponent(ids[k], 2) : 0.0, 0.0 };
+    if (!points.empty())
+    {
+      const StrokePoint q = points.back();
+      const double length = std::hypot(p.X - q.X, p.Y - q.Y);
+      const int pieces = static_cast<int>(std::min(4096.0, std::ceil(length / step)));
+      for (int i = 1; i < pieces; ++i)
+      {
+        const double t = static_cast<double>(i) / pieces;
+        points.push_back({ q.X + t * (p.X - q.X), q.Y + t * (p.Y - q.Y),
+          q.Depth + t * (p.Depth - q.Depth), q.Along + t * length });
+      }
+      points.push_back({ p.X, p.Y, p.Depth, q.Along + length });
+    }
+    else
+    {
+      points.push_back(p);
+    }
+  }
+  return points;
+}
+
+// The width factor of the depth: NearScale at the near clipping plane to FarScale at the far one,
+// linear in the distance (window depth z in [0, 1] converted back through the projection).
+double DepthScale(double z, const vtkNPRStrokeStyle& style)
+{
+  const double n = style.ClippingRange[0], f = style.ClippingRange[1];
+  double t = z;
+  if (!style.Parallel)
+  {
+    const double ndc = 2.0 * z - 1.0;
+    const double distance = 2.0 * f * n / ((f + n) - ndc * (f - n));
+    t = (distance - n) / (f - n);
+  }
+  t = std::clamp(t, 0.0, 1.0);
+  return style.NearScale + t * (style.FarScale - style.NearScale);
+}
+
+// Each point's width: the class's width times the depth's, the taper's and the bend's factors.
+std::vector<double> StrokeWidths(
+  const std::vector<StrokePoint>& points, bool closed, double width, const vtkNPRStrokeStyle& style)
+{
+  const size_t n = points.size();
+  const double total = points.back().Along;
+  std::vector<double> widths(n, width);
+  for (size_t i = 0; i < n; ++i)
+  {
+    if (style.DepthFalloff)
+    {
+      widths[i] *= DepthScale(points[i].Depth, style);
+    }
+    if (style.TaperLength > 0.0 && !closed)
+    {
+      const double toEnd = std::min(points[i].Along, total - points[i].Along);
+      widths[i] *= std::clamp(toEnd / style.TaperLength, 0.0, 1.0);
+    }
+    const bool inner = closed || (i > 0 && i + 1 < n);
+    if (style.CurvatureWidth > 0.0 && inner && n > 2)
+    {
+      const StrokePoint& a = points[(i + n - 1) % n];
+      const StrokePoint& c = points[(i + 1) % n];
+      const double ux = points[i].X - a.X, uy = points[i].Y - a.Y;
+      const double vx = c.X - points[i].X, vy = c.Y - points[i].Y;
+      const double lengths = 0.5 * (std::hypot(ux, uy) + std::hypot(vx, vy));
+      const double turn = std::abs(std::atan2(ux * vy - uy * vx, ux * vx + uy * vy));
+      const double curvature = lengths > 0.0 ? turn / lengths : 0.0; // per pixel
+      widths[i] *= 1.0 + style.CurvatureWidth * std::min(1.0, 8.0 * curvature);
+    }
+  }
+  return widths;
+}
+
+// Adds the outline of a stroke of varying width to the path: a disc at each point and a
+// quadrilateral between two, all wound alike so that the non-zero rule fills their union.
+void TraceOutline(cairo_t* cr, const std::vector<StrokePoint>& points,
+  const std::vector<double>& widths, bool closed)
+{
+  const size_t n = points.size();
+  for (size_t i = 0; i < n; ++i)
+  {
+    const double r = 0.5 * widths[i];
+    if (r > 1e-3)
+    {
+      cairo_new_sub_path(cr);
+      cairo_arc(cr, points[i].X, points[i].Y, r, 0.0, 2.0 * M_PI);
+      cairo_close_path(cr);
+    }
+  }
+  const size_t segments = closed ? n : n - 1;
+  for (size_t i = 0; i < segments; ++i)
+  {
+    const StrokePoint &a = points[i], &b = points[(i + 1) % n];
+    const double length = std::hypot(b.X - a.X, b.Y - a.Y);
+    if (!(length > 0.0))
+    {
+      continue;
+    }
+    const double nx = (a.Y - b.Y) / length, ny = (b.X - a.X) / length;
+    const double ra = 0.5 * widths[i], rb = 0.5 * widths[(i + 1) % n];
+    double corners[4][2] = { { a.X + nx * ra, a.Y + ny * ra }, { b.X + nx * rb, b.Y + ny * rb },
+      { b.X - nx * rb, b.Y - ny * rb }, { a.X - nx * ra, a.Y - ny * ra } };
+    double area = 0.0;
+    for (int k = 0; k < 4; ++k)
+    {
+      area += corners[k][0] * corners[(k + 1) % 4][1] - corners[(k + 1) % 4][0] * corners[k][1];
+    }
+    if (area < 0.0) // the discs' winding
+    {
+      std::swap(corners[1], corners[3]);
+    }
+    cairo_move_to(cr, corners[0][0], corners[0][1]);
+    for (int k = 1; k < 4; ++k)
+    {
+      cairo_line_to(cr, corners[k][0], corners[k][1]);
+    }
+    cairo_close_path(cr);
+  }
+}
+
+// One visible stroke of varying width, filled; false for an empty cell.
+bool FillStroke(cairo_t* cr, vtkIdType size, const vtkIdType* ids, vtkDataArray* coordinates,
+  double height, double width, const vtkNPRStrokeStyle& style)
+{
+  if (size < 1)
+  {
+    return false;
+  }
+  const bool closed = size >= 3 && ids[size - 1] == ids[0];
+  std::vector<StrokePoint> loop = SampleStroke(size, ids, coordinates, height, style);
+  if (closed)
+  {
+    loop.pop_back(); // the first point again
+  }
+  TraceOutline(cr, loop, StrokeWidths(loop, closed, width, style), closed);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+  cairo_fill(cr);
+  return true;
+}
+}
+
 bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeStyle& style,
   double height, vtkNPRStrokeCounts& counts, std::string& error)
 {
@@ -261,7 +439,12 @@ bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeSty
       vtkIdType size;
       const vtkIdType* ids;
       iterator->GetCellAtId(cell, size, ids);
-      if (TraceStroke(cr, size, ids, coordinates, height))
+      if (strokeClass != NPR_STROKES_HIDDEN && style.VariableWidth())
+      {
+        counts[strokeClass] +=
+          FillStroke(cr, size, ids, coordinates, height, cairo_get_line_width(cr), style);
+      }
+      else if (TraceStroke(cr, size, ids, coordinates, height))
       {
         cairo_stroke(cr); // one path per stroke: an SVG <path> each
         ++counts[strokeClass];

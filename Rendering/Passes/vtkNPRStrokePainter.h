@@ -33,6 +33,19 @@ struct vtkNPRStrokeStyle
   double HiddenLineWidth = 0.9; // pixels
   double DashLength = 6.0;      // pixels
   double GapLength = 4.0;       // pixels
+  // The visible strokes' width along them (vtkNPRDrawingPass's TaperLength and CurvatureWidth,
+  // vtkNPREdgePass's DepthFalloff): a factor from the distance to an open end, the bend and the
+  // depth (between the clipping planes ClippingRange of a parallel or perspective camera).
+  double TaperLength = 0.0; // pixels; 0: none
+  double CurvatureWidth = 0.0;
+  bool DepthFalloff = false;
+  double NearScale = 1.5, FarScale = 0.5;
+  double ClippingRange[2] = { 0.1, 1000.0 };
+  bool Parallel = false;
+  bool VariableWidth() const
+  {
+    return this->TaperLength > 0.0 || this->CurvatureWidth > 0.0 || this->DepthFalloff;
+  }
 };
 
 // The style a drawing pass and its edge pass give for a renderer (widths and dashes scaled by the
@@ -75,8 +88,10 @@ using vtkNPRStrokeCounts = std::array<vtkIdType, NPR_STROKE_CLASSES>;
 // `height` pixels high with row 0 at the top (ImageCoordinates' y is flipped here). One path a
 // stroke (move_to, line_to through its points, close_path for a closed loop), one cairo_stroke
 // each: round caps and joins; hidden strokes first, dashed (the pattern running on along the
-// stroke), then the visible ones class by class (vtkNPRStrokeClass). Strokes of a line type the
-// style leaves out are skipped. Counts what it painted. False, with `error` set, when the strokes
+// stroke), then the visible ones class by class (vtkNPRStrokeClass); with a VariableWidth style,
+// each visible stroke is one filled outline of its width point by point (a disc at each point and
+// a quadrilateral between two, filled as their union). Strokes of a line type the style leaves
+// out are skipped. Counts what it painted. False, with `error` set, when the strokes
 // lack ImageCoordinates, FeatureType or Hidden, or Cairo fails.
 bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeStyle& style,
   double height, vtkNPRStrokeCounts& counts, std::string& error);

@@ -31,6 +31,8 @@ render line_width_6.png Testing/Data/cad_part.vtp --style edges --size 480x360 -
 # Line weights: heavy silhouettes over light creases, in the edges and the drawing style.
 render line_weights.png Testing/Data/cad_part.vtp --style edges --size 480x360 --azimuth 30 --elevation 30 --silhouette-width 3 --crease-width 0.75
 render line_weights_drawing.png Testing/Data/cad_part.vtp --style drawing --hidden-lines --size 480x360 --azimuth 30 --elevation 30 --silhouette-width 2 --crease-width 0.75
+render line_weights_depth.png Testing/Data/cad_part.vtp --style edges --size 480x360 --azimuth 30 --elevation 12 --zoom 1.3 --line-width 2 --depth-falloff --near-line-scale 2 --far-line-scale 0.4
+render line_weights_taper.png Testing/Data/cad_part.vtp --style drawing --size 480x360 --azimuth 30 --elevation 30 --line-width 2.5 --taper 30 --curvature-width 0.5 --depth-falloff
 
 # Contour side, on two models: the rotor stands in front of the bunny and cuts into it.
 render contour_side_inside.png Testing/Data/bunny.ply Testing/Data/rotor.ply --style edges --size 480x360 --azimuth -20 --zoom 1.3 --lines contours --contour-side inside --contour-color 0.85,0,0 --line-width 4

@@ -23,10 +23,34 @@ uniform vec2 texelSize;
 uniform ivec2 viewportOrigin; // of the renderer in the window
 uniform vec4 coverageLevel;     // P(w/2) of each type's width w
 uniform vec4 coverageSlope;     // |P'(w/2)|
+#if NPR_DEPTH_FALLOFF
+// The same at NPR_FALLOFF_STEPS width scales from the near clipping plane to the far one, and
+// the camera: near, far, 1 for a parallel projection.
+uniform vec4 falloffLevels[NPR_FALLOFF_STEPS];
+uniform vec4 falloffSlopes[NPR_FALLOFF_STEPS];
+uniform vec3 falloffCamera;
+#endif
 //NPR::LineColor
 //NPR::WindowDepth
 //NPR::NearestDepth
 //VTK::Output::Dec
+
+#if NPR_DEPTH_FALLOFF
+// Where a window depth lies between the clipping planes, 0 at the near one to 1 at the far one,
+// linear in the distance.
+float nprFalloffPosition(float window)
+{
+  float n = falloffCamera.x;
+  float f = falloffCamera.y;
+  float t = window;
+  if (falloffCamera.z < 0.5)
+  {
+    float distance = 2.0 * f * n / ((f + n) - (2.0 * window - 1.0) * (f - n));
+    t = (distance - n) / (f - n);
+  }
+  return clamp(t, 0.0, 1.0) * float(NPR_FALLOFF_STEPS - 1);
+}
+#endif
 
 void main()
 {
@@ -43,14 +67,29 @@ void main()
   {
     lines += taps[i].z * texture(lineTexture, texCoord + taps[i].xy * texelSize);
   }
-#if NPR_ANTIALIAS
-  coverage = clamp(0.5 + (lines - coverageLevel) / coverageSlope, 0.0, 1.0);
-#else
-  coverage = step(coverageLevel, lines);
-#endif
 #endif
   ivec2 p = ivec2(gl_FragCoord.xy) - viewportOrigin;
   float depth = texelFetch(depthTexture, p, 0).r;
+#if NPR_LINES
+  vec4 level = coverageLevel;
+  vec4 slope = coverageSlope;
+#if NPR_DEPTH_FALLOFF
+  // The width at this pixel's depth (a background pixel's: its line's surface's).
+  if (max(max(lines.r, lines.g), max(lines.b, lines.a)) > 0.0)
+  {
+    float stored = depth < 1.0 ? depth : nprNearestDepth(p);
+    float x = nprFalloffPosition(nprWindowDepth(stored));
+    int i = min(int(x), NPR_FALLOFF_STEPS - 2);
+    level = mix(falloffLevels[i], falloffLevels[i + 1], x - float(i));
+    slope = mix(falloffSlopes[i], falloffSlopes[i + 1], x - float(i));
+  }
+#endif
+#if NPR_ANTIALIAS
+  coverage = clamp(0.5 + (lines - level) / slope, 0.0, 1.0);
+#else
+  coverage = step(level, lines);
+#endif
+#endif
 #if !NPR_LINES && NPR_OUTPUT == 0
   if (depth >= 1.0)
   {

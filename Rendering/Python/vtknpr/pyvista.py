@@ -40,6 +40,10 @@ SETTINGS = {
     "silhouette_color": "colour of the silhouette lines",
     "silhouette_width": "width of the silhouettes in pixels at 72 DPI (0: line_width)",
     "crease_width": "width of the creases in pixels at 72 DPI (0: line_width)",
+    "depth_falloff": "whether line widths fall off with depth, near_line_scale to far_line_scale"
+                     " (bool)",
+    "near_line_scale": "width scale of the nearest lines with depth_falloff, 0.1..4",
+    "far_line_scale": "width scale of the farthest lines with depth_falloff, 0.1..4",
     "contour_width": "width of the object contours in pixels at 72 DPI (0: line_width)",
     "suggestive_width": "width of the suggestive contours in pixels at 72 DPI (0: line_width)",
     "crease_color": "colour of the crease lines",
@@ -65,6 +69,9 @@ SETTINGS = {
     "paper_color": "colour of the sketch's paper",
     "hidden_lines": "whether the drawing shows its hidden lines, dashed (bool)",
     "face_color": "colour of the drawing's faces",
+    "taper": "length in pixels at 72 DPI over which the drawing's strokes grow from their ends"
+             " (0: none)",
+    "curvature_width": "the drawing's strokes up to 1 + this times as wide where they bend, 0..4",
 }
 
 # The PyVista passes that draw the scene with their own shaders.
@@ -95,6 +102,9 @@ _SETTERS = {
     "silhouette_color": (_color, [("edges", "SetSilhouetteColor")]),
     "silhouette_width": (float, [("edges", "SetSilhouetteLineWidth")]),
     "crease_width": (float, [("edges", "SetCreaseLineWidth")]),
+    "depth_falloff": (bool, [("edges", "SetDepthFalloff")]),
+    "near_line_scale": (float, [("edges", "SetNearLineScale")]),
+    "far_line_scale": (float, [("edges", "SetFarLineScale")]),
     "contour_width": (float, [("edges", "SetContourLineWidth")]),
     "suggestive_width": (float, [("edges", "SetSuggestiveContourLineWidth")]),
     "crease_color": (_color, [("edges", "SetCreaseColor")]),
@@ -120,6 +130,8 @@ _SETTERS = {
     "paper_color": (_color, [("sketch", "SetPaperColor")]),
     "hidden_lines": (bool, [("npr", "SetHiddenLines")]),
     "face_color": (_color, [("drawing", "SetFaceColor")]),
+    "taper": (float, [("drawing", "SetTaperLength")]),
+    "curvature_width": (float, [("drawing", "SetCurvatureWidth")]),
 }
 
 
