@@ -11,6 +11,7 @@
 #include "vtkNPRDrawingSheet.h"
 #include "vtkNPRRenderWindowFactory.h"
 
+#include <algorithm>
 #include <iostream>
 #include <set>
 
@@ -117,12 +118,13 @@ bool ParseFillOption(nprArgumentReader& arguments, nprRenderOptions& options)
   if (arg == "--fill-colors")
   {
     const std::string colors = arguments.Value();
-    if (colors != "face" && colors != "surface")
+    const char* const names[] = { "face", "surface", "toon" }; // FillColorModes' order
+    const auto found = std::find(std::begin(names), std::end(names), colors);
+    if (found == std::end(names))
     {
-      throw nprUsageError("--fill-colors " + colors + ": not face or surface");
+      throw nprUsageError("--fill-colors " + colors + ": not face, surface or toon");
     }
-    options.FillColors =
-      colors == "face" ? vtkNPRDrawingExporter::FACE_COLOR : vtkNPRDrawingExporter::SURFACE_COLORS;
+    options.FillColors = static_cast<int>(found - std::begin(names));
     options.FillColorsGiven = true;
     return true;
   }
@@ -181,8 +183,9 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
                            PNG of the render's size (any style)
   --fill-faces             with a vector -o: the visible faces as filled regions under
                            the lines, back to front (the render's picture, as shapes)
-  --fill-colors COLORS     face (default: the drawing style's face colour) or surface
-                           (each model's own colour, flat and unlit)
+  --fill-colors COLORS     face (default: the drawing style's face colour), surface (each
+                           model's own colour, flat and unlit) or toon (those colours in
+                           the toon bands of the lights, flat per face)
   --sheet VIEWS            write a drawing sheet to -o (.svg, .pdf, .ps, .eps): these
                            views of the scene on one page, one scale, with their names
                            (comma separated: iso, front, top, right, left, back, bottom);

@@ -7,6 +7,7 @@
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkIntArray.h"
 #include "vtkMapper.h"
 #include "vtkNPRFaceOrder.h"
@@ -32,31 +33,50 @@ namespace
 {
 using Color = std::array<unsigned char, 3>;
 
-// A mesh's faces' colours as its actor draws them without lighting: the mapper's scalar colours
-// (as vtkMapper::MapScalars makes them), else the property's colour.
+// A face's colours: as drawn without lighting, and the ambient and diffuse terms of VTK's lighting
+// (coefficient times colour) that a renderer lights it with.
+struct Shades
+{
+  Color Unlit, Ambient, Diffuse;
+};
+
+Color ToColor(const double rgb[3], double scale = 1.0)
+{
+  Color color;
+  for (int c = 0; c < 3; ++c)
+  {
+    color[c] =
+      static_cast<unsigned char>(std::lround(255.0 * std::clamp(scale * rgb[c], 0.0, 1.0)));
+  }
+  return color;
+}
+
+// A mesh's faces' colours as its actor draws them: the mapper's scalar colours (as
+// vtkMapper::MapScalars makes them; they are the ambient and diffuse colours too, as VTK's default
+// material mode has them), else the property's colours.
 class FaceColors
 {
 public:
   FaceColors(vtkActor* actor, vtkPolyData* mesh);
-  Color Of(const vtkNPRMeshFaces& faces, vtkIdType triangle, const vtkIdType ids[3]) const;
+  Shades Of(const vtkNPRMeshFaces& faces, vtkIdType triangle, const vtkIdType ids[3]) const;
 
 private:
   vtkSmartPointer<vtkUnsignedCharArray> Colors; // RGB or RGBA, a point's or a cell's
   int Stride = 4;
   bool PerCell = false;
   vtkIdType FirstFaceCell = 0; // the cell id of the first polygon: after vertices and lines
-  Color Uniform;
+  Shades Uniform;
+  double Ambient, Diffuse; // the property's coefficients
 };
 
 FaceColors::FaceColors(vtkActor* actor, vtkPolyData* mesh)
 {
-  double color[3];
-  actor->GetProperty()->GetColor(color);
-  for (int c = 0; c < 3; ++c)
-  {
-    this->Uniform[c] =
-      static_cast<unsigned char>(std::lround(255.0 * std::clamp(color[c], 0.0, 1.0)));
-  }
+  vtkProperty* property = actor->GetProperty();
+  this->Ambient = property->GetAmbient();
+  this->Diffuse = property->GetDiffuse();
+  this->Uniform = { ToColor(property->GetColor()),
+    ToColor(property->GetAmbientColor(), this->Ambient),
+    ToColor(property->GetDiffuseColor(), this->Diffuse) };
   this->FirstFaceCell = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
   vtkMapper* mapper = actor->GetMapper();
   if (!mapper || !mapper->GetScalarVisibility())
@@ -87,27 +107,23 @@ FaceColors::FaceColors(vtkActor* actor, vtkPolyData* mesh)
   }
 }
 
-Color FaceColors::Of(const vtkNPRMeshFaces& faces, vtkIdType triangle, const vtkIdType ids[3]) const
+Shades FaceColors::Of(
+  const vtkNPRMeshFaces& faces, vtkIdType triangle, const vtkIdType ids[3]) const
 {
   if (!this->Colors)
   {
     return this->Uniform;
   }
   const unsigned char* rgb = this->Colors->GetPointer(0);
-  if (this->PerCell)
-  {
-    const unsigned char* c =
-      rgb + this->Stride * (this->FirstFaceCell + faces.GetCellOfTriangle(triangle));
-    return { c[0], c[1], c[2] };
-  }
-  Color mean;
+  double mean[3];
+  const int s = this->Stride;
   for (int c = 0; c < 3; ++c)
   {
-    const int s = this->Stride;
-    const int sum = rgb[s * ids[0] + c] + rgb[s * ids[1] + c] + rgb[s * ids[2] + c];
-    mean[c] = static_cast<unsigned char>((sum + 1) / 3);
+    mean[c] = this->PerCell
+      ? rgb[s * (this->FirstFaceCell + faces.GetCellOfTriangle(triangle)) + c] / 255.0
+      : (rgb[s * ids[0] + c] + rgb[s * ids[1] + c] + rgb[s * ids[2] + c]) / (3.0 * 255.0);
   }
-  return mean;
+  return { ToColor(mean), ToColor(mean, this->Ambient), ToColor(mean, this->Diffuse) };
 }
 
 // +1 when the mesh is closed and wound one way with its faces outwards (each edge used twice, in
@@ -212,7 +228,7 @@ bool OutsideFrustum(const double* corners[3], const vtkNPRSceneView& view)
 struct Candidate
 {
   std::array<double, 9> Corners;
-  Color Fill;
+  Shades Fill;
 };
 
 // Appends the triangles of one mesh that can show to `candidates`.
@@ -278,6 +294,19 @@ std::vector<vtkNPRImageTriangle> ProjectCandidates(
     }
   }
   return images;
+}
+
+// The unit normal of a triangle (world corners) on the side the camera sees, as VTK's two-sided
+// lighting turns it.
+std::array<float, 3> FacingNormal(const double* corners, const vtkNPRSceneView& view)
+{
+  const glm::dvec3 a = vtkNPRVector(corners);
+  glm::dvec3 n = glm::cross(vtkNPRVector(corners + 3) - a, vtkNPRVector(corners + 6) - a);
+  const glm::dvec3 towardsEye =
+    view.Parallel ? -vtkNPRVector(view.Direction) : vtkNPRVector(view.Eye) - a;
+  const double length = glm::length(n);
+  n = (glm::dot(n, towardsEye) < 0.0 ? -1.0 : 1.0) * n / (length > 0.0 ? length : 1.0);
+  return { static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z) };
 }
 
 // The part of a convex polygon (world corners) between the near and far planes.
@@ -387,20 +416,32 @@ vtkNPRSceneFacesCounts vtkNPRSceneFaces(
   vtkNew<vtkDoubleArray> image;
   image->SetName("ImageCoordinates");
   image->SetNumberOfComponents(3);
-  vtkNew<vtkUnsignedCharArray> cellColors;
+  vtkNew<vtkUnsignedCharArray> cellColors, ambient, diffuse;
+  for (auto* colors : { cellColors.Get(), ambient.Get(), diffuse.Get() })
+  {
+    colors->SetNumberOfComponents(3);
+  }
   cellColors->SetName("Colors");
-  cellColors->SetNumberOfComponents(3);
-  const auto paint = [&](std::vector<glm::dvec3> corners, const Color& fill)
+  ambient->SetName("AmbientColors");
+  diffuse->SetName("DiffuseColors");
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  const auto paint = [&](std::vector<glm::dvec3> corners, const Candidate& from)
   {
     if (AppendPolygon(ClipToDepthRange(std::move(corners), view), view, points, image, polys))
     {
-      cellColors->InsertNextTypedTuple(fill.data());
+      cellColors->InsertNextTypedTuple(from.Fill.Unlit.data());
+      ambient->InsertNextTypedTuple(from.Fill.Ambient.data());
+      diffuse->InsertNextTypedTuple(from.Fill.Diffuse.data());
+      const std::array<float, 3> normal = FacingNormal(from.Corners.data(), view);
+      normals->InsertNextTypedTuple(normal.data());
     }
   };
   for (std::uint32_t i : free)
   {
     const double* x = candidates[i].Corners.data();
-    paint({ vtkNPRVector(x), vtkNPRVector(x + 3), vtkNPRVector(x + 6) }, candidates[i].Fill);
+    paint({ vtkNPRVector(x), vtkNPRVector(x + 3), vtkNPRVector(x + 6) }, candidates[i]);
   }
   for (std::uint32_t polygon : order.BackToFront(view.Eye, view.Direction, view.Parallel))
   {
@@ -409,13 +450,16 @@ vtkNPRSceneFacesCounts vtkNPRSceneFaces(
     {
       order.GetCorner(polygon, static_cast<int>(k), glm::value_ptr(corners[k]));
     }
-    paint(std::move(corners), candidates[order.GetTag(polygon)].Fill);
+    paint(std::move(corners), candidates[order.GetTag(polygon)]);
   }
   output->Initialize();
   output->SetPoints(points);
   output->SetPolys(polys);
   output->GetPointData()->AddArray(image);
   output->GetCellData()->AddArray(cellColors);
+  output->GetCellData()->AddArray(ambient);
+  output->GetCellData()->AddArray(diffuse);
+  output->GetCellData()->SetNormals(normals);
   vtkNew<vtkIntArray> imageSize;
   imageSize->SetName("ImageSize");
   imageSize->SetNumberOfComponents(2);

@@ -2,14 +2,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkNPRDrawingExporter.h"
 
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkErrorCode.h"
 #include "vtkImageData.h"
 #include "vtkNPRDrawingLines.h"
 #include "vtkNPRDrawingPass.h"
 #include "vtkNPREdgePass.h"
+#include "vtkNPRFaceShading.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkNPRStrokePainter.h"
+#include "vtkNPRToonPass.h"
 #include "vtkNPRVectorFile.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -439,10 +443,7 @@ bool vtkNPRDrawingExporter::Paint(const Target& target, vtkImageData* raster, st
     internal.Embedded = true;
   }
   std::string error, unused;
-  const bool painted = (!this->FillFaces ||
-                         vtkNPRPaintFaces(cr, internal.Lines->GetFaces(),
-                           this->FillColors == FACE_COLOR ? target.FaceColor : nullptr,
-                           this->FillSeam, target.Height, internal.FilledFaces, error)) &&
+  const bool painted = (!this->FillFaces || this->PaintFaces(cr, target, error)) &&
     vtkNPRPaintStrokes(
       cr, internal.Lines->GetStrokes(), target.Style, target.Height, internal.Counts, error);
   cairo_destroy(cr);
@@ -462,6 +463,22 @@ bool vtkNPRDrawingExporter::Paint(const Target& target, vtkImageData* raster, st
     }
   }
   return true;
+}
+
+bool vtkNPRDrawingExporter::PaintFaces(cairo_t* cr, const Target& target, std::string& error)
+{
+  Internals& internal = *this->Internal;
+  vtkPolyData* faces = internal.Lines->GetFaces();
+  vtkSmartPointer<vtkDataArray> colors = faces->GetCellData()->GetArray("Colors");
+  if (this->FillColors == TOON_BANDS)
+  {
+    vtkNPRPass* npr = vtkNPRPass::SafeDownCast(target.Renderer->GetPass());
+    vtkNew<vtkNPRToonPass> defaultToon;
+    colors =
+      vtkNPRToonFaceColors(faces, target.Renderer, npr ? npr->GetToonPass() : defaultToon.Get());
+  }
+  return vtkNPRPaintFaces(cr, faces, this->FillColors == FACE_COLOR ? target.FaceColor : nullptr,
+    colors, this->FillSeam, target.Height, internal.FilledFaces, error);
 }
 
 bool vtkNPRDrawingExporter::WriteFile(const std::string& path, const std::string& bytes)

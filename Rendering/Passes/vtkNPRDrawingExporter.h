@@ -50,6 +50,7 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for the error message
 
+typedef struct _cairo cairo_t;
 class vtkImageData;
 class vtkNPRDrawingLines;
 class vtkNPRDrawingPass;
@@ -112,8 +113,9 @@ public:
 
   enum FillColorModes
   {
-    FACE_COLOR = 0,    ///< the drawing pass's FaceColor (white without one): as the style draws
-    SURFACE_COLORS = 1 ///< each face's actor colour or mapped scalar colour, without lighting
+    FACE_COLOR = 0,     ///< the drawing pass's FaceColor (white without one): as the style draws
+    SURFACE_COLORS = 1, ///< each face's actor colour or mapped scalar colour, without lighting
+    TOON_BANDS = 2      ///< those colours in the toon bands of the renderer's lights
   };
 
   ///@{
@@ -121,15 +123,18 @@ public:
    * Fill the visible faces under the lines (off by default): vtkNPRDrawingLines::UpdateFaces()'s
    * polygons, back to front, so that the file shows the faces as the render does, nothing
    * behind showing through, as regions an editor can select and recolour. In FillColors:
-   * FACE_COLOR (the default; the drawing style's picture) or SURFACE_COLORS (each actor's
-   * colour, or its scalar colours, flat and unlit: a coloured figure). Each polygon is also
+   * FACE_COLOR (the default; the drawing style's picture), SURFACE_COLORS (each actor's
+   * colour, or its scalar colours, flat and unlit: a coloured figure) or TOON_BANDS (those
+   * colours lit in the toon bands of the renderer's lights, flat per face: the toon styles'
+   * picture on flat faces; the vtkNPRPass's toon pass's bands or table, else 3 bands;
+   * highlights are not filled). Each polygon is also
    * stroked with FillSeam pixels (default 1, clamped to [0, 2]) in its own colour, which
    * closes the hairline gaps anti-aliasing viewers leave between neighbouring polygons.
    */
   vtkSetMacro(FillFaces, bool);
   vtkGetMacro(FillFaces, bool);
   vtkBooleanMacro(FillFaces, bool);
-  vtkSetClampMacro(FillColors, int, FACE_COLOR, SURFACE_COLORS);
+  vtkSetClampMacro(FillColors, int, FACE_COLOR, TOON_BANDS);
   vtkGetMacro(FillColors, int);
   vtkSetClampMacro(FillSeam, double, 0.0, 2.0);
   vtkGetMacro(FillSeam, double);
@@ -220,6 +225,7 @@ private:
   void ResolveStyle(Target& target);
   bool ComputeStrokes(const Target& target);
   bool Paint(const Target& target, vtkImageData* raster, std::string& bytes);
+  bool PaintFaces(cairo_t* cr, const Target& target, std::string& error);
   bool WriteFile(const std::string& path, const std::string& bytes);
 
   struct Internals;

@@ -460,8 +460,8 @@ bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeSty
   return true;
 }
 
-bool vtkNPRPaintFaces(cairo_t* cr, vtkPolyData* faces, const double* color, double seam,
-  double height, vtkIdType& painted, std::string& error)
+bool vtkNPRPaintFaces(cairo_t* cr, vtkPolyData* faces, const double* color, vtkDataArray* colors,
+  double seam, double height, vtkIdType& painted, std::string& error)
 {
   painted = 0;
   vtkCellArray* polys = faces ? faces->GetPolys() : nullptr;
@@ -470,13 +470,12 @@ bool vtkNPRPaintFaces(cairo_t* cr, vtkPolyData* faces, const double* color, doub
     return true;
   }
   vtkDataArray* coordinates = faces->GetPointData()->GetArray("ImageCoordinates");
-  vtkDataArray* colors = faces->GetCellData()->GetArray("Colors");
   if (!coordinates || coordinates->GetNumberOfComponents() < 2 ||
     (!color &&
       (!colors || colors->GetNumberOfComponents() < 3 ||
         colors->GetNumberOfTuples() < polys->GetNumberOfCells())))
   {
-    error = "the faces lack their ImageCoordinates or Colors arrays";
+    error = "the faces lack their ImageCoordinates or their colours";
     return false;
   }
   cairo_save(cr);
@@ -499,8 +498,7 @@ bool vtkNPRPaintFaces(cairo_t* cr, vtkPolyData* faces, const double* color, doub
     }
     if (!color)
     {
-      const vtkIdType cell =
-        faces->GetNumberOfVerts() + faces->GetNumberOfLines() + iterator->GetCurrentCellId();
+      const vtkIdType cell = iterator->GetCurrentCellId();
       cairo_set_source_rgb(cr, colors->GetComponent(cell, 0) / 255.0,
         colors->GetComponent(cell, 1) / 255.0, colors->GetComponent(cell, 2) / 255.0);
     }

@@ -13,6 +13,7 @@
 #include <vector> // for the image
 
 typedef struct _cairo cairo_t;
+class vtkDataArray;
 class vtkNPRDrawingLines;
 class vtkNPRDrawingPass;
 class vtkNPREdgePass;
@@ -98,12 +99,13 @@ bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeSty
 
 // Paints the faces of vtkNPRDrawingLines::GetFaces() onto `cr` (user space as for the strokes) in
 // their order, back to front: each polygon filled in `color` (RGB in [0, 1]), or with a null
-// `color` in its own "Colors", and stroked in the same colour with `seam` pixels (0: not
-// stroked), which closes the hairline gaps anti-aliasing leaves between neighbouring pieces.
-// One path a polygon. Sets `painted` to how many were painted. False, with `error` set, when the
-// faces lack ImageCoordinates or (without `color`) Colors, or Cairo fails.
-bool vtkNPRPaintFaces(cairo_t* cr, vtkPolyData* faces, const double* color, double seam,
-  double height, vtkIdType& painted, std::string& error);
+// `color` in its tuple of `colors` (RGB in [0, 255], one a face), and stroked in the same colour
+// with `seam` pixels (0: not stroked), which closes the hairline gaps anti-aliasing leaves
+// between neighbouring pieces. One path a polygon. Sets `painted` to how many were painted.
+// False, with `error` set, when the faces lack ImageCoordinates, there are too few colours, or
+// Cairo fails.
+bool vtkNPRPaintFaces(cairo_t* cr, vtkPolyData* faces, const double* color, vtkDataArray* colors,
+  double seam, double height, vtkIdType& painted, std::string& error);
 
 #endif
 // VTK-HeaderTest-Exclude: vtkNPRStrokePainter.h

@@ -6,6 +6,7 @@ as the file each exit non-zero with one line `npr-render: error: ...` and leave 
 writes a drawing sheet in each format and refuses what it cannot do; --fill-faces writes the faces
 as filled paths under the strokes, in the face or the surface colours."""
 import os
+import re
 import shutil
 import subprocess
 
@@ -110,13 +111,19 @@ rc, _, err = run(part, "--style", "drawing", "--fill-faces", "-o", out("filled.s
 svg = open(out("filled.svg")).read() if os.path.isfile(out("filled.svg")) else ""
 check(rc == 0 and svg.count("fill:rgb(100%,100%,100%)") > 100 and "npr-silhouette" in svg,
       "--fill-faces: white filled paths under the strokes (%r)" % err.strip())
+rc, _, err = run(part, "--style", "toon", "--fill-faces", "--fill-colors", "toon",
+                 "-o", out("filled_toon.svg"))
+svg = open(out("filled_toon.svg")).read() if os.path.isfile(out("filled_toon.svg")) else ""
+fills = set(re.findall(r"fill:(rgb\([^)]*\))", svg))
+check(rc == 0 and len(fills) >= 3 and "<image" not in svg,
+      "--fill-colors toon: the toon bands' colours, no raster (%d colours, %r)" % (len(fills), err.strip()))
 rc, _, err = run(part, "--style", "drawing", "--fill-faces", "--fill-colors", "surface",
                  "-o", out("filled_surface.pdf"))
 data = open(out("filled_surface.pdf"), "rb").read() if os.path.isfile(out("filled_surface.pdf")) else b""
 check(rc == 0 and data.startswith(b"%PDF"), "--fill-colors surface -o .pdf (%r)" % err.strip())
 for extra, expected in ((["--fill-faces", "-o", out("x.png")], "--fill-faces needs -o FILE"),
                         (["--fill-colors", "surface", "-o", out("x.svg")], "needs --fill-faces"),
-                        (["--fill-faces", "--fill-colors", "toon", "-o", out("x.svg")], "not face or surface"),
+                        (["--fill-faces", "--fill-colors", "shiny", "-o", out("x.svg")], "not face, surface or toon"),
                         (["--fill-faces", "--sheet", "front", "-o", out("x.svg")], "not available with --sheet")):
     rc, _, err = run(part, *extra)
     check(rc == 2 and expected in err, "%s: exit 2 with '%s' (%r)" % (" ".join(extra[:2]), expected, err.strip()))

@@ -263,8 +263,8 @@ def case_export():
           and "fill:rgb(100%,0%,0%)" not in open(lines).read(),
           "fill_faces: %d red faces in the SVG" % exporter.GetNumberOfFilledFaces())
     try:
-        export_drawing(p, filled, fill_faces=True, fill_colors="toon")
-        check(False, "fill_colors='toon' was accepted")
+        export_drawing(p, filled, fill_faces=True, fill_colors="shiny")
+        check(False, "fill_colors='shiny' was accepted")
     except ValueError:
         pass
     p.close()

@@ -291,7 +291,8 @@ def npr_pass(target):
 
 
 _FILL_COLORS = {"face": vtkNPRDrawingExporter.FACE_COLOR,
-                "surface": vtkNPRDrawingExporter.SURFACE_COLORS}
+                "surface": vtkNPRDrawingExporter.SURFACE_COLORS,
+                "toon": vtkNPRDrawingExporter.TOON_BANDS}
 
 
 def export_drawing(target, filename, fill_faces=False, fill_colors="face"):
@@ -308,13 +309,14 @@ def export_drawing(target, filename, fill_faces=False, fill_colors="face"):
         Also write the visible faces as filled regions under the lines, back to front (in place
         of the image), so the file shows the faces as the render does.
     fill_colors : str
-        "face" (the drawing style's face colour) or "surface" (each mesh's own colour or scalar
-        colours, flat and unlit).
+        "face" (the drawing style's face colour), "surface" (each mesh's own colour or scalar
+        colours, flat and unlit) or "toon" (those colours in the toon bands of the lights).
 
     Raises ValueError for an unknown fill_colors and RuntimeError when the file cannot be written.
     """
     if fill_colors not in _FILL_COLORS:
-        raise ValueError("export_drawing: fill_colors %r is not 'face' or 'surface'" % (fill_colors,))
+        raise ValueError("export_drawing: fill_colors %r is not 'face', 'surface' or 'toon'"
+                         % (fill_colors,))
     exporter = vtkNPRDrawingExporter()
     exporter.SetRenderer(_renderer_of(target))
     exporter.SetFileName(str(filename))

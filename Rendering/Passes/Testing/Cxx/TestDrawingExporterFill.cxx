@@ -5,9 +5,10 @@
 // - SURFACE_COLORS against VTK's own unlit render of a block, a pin through it and a sphere
 //   through both (the depth order where surfaces cross);
 // - FACE_COLOR against the drawing style's render of the same scene, lines and hidden lines on;
-//   without FillFaces the faces are not there (the comparison can fail).
+//   without FillFaces the faces are not there (the comparison can fail);
+// - TOON_BANDS against the toon style's render of flat faces (a cube and a faceted sphere).
 //
-// usage: TestDrawingExporter fill [DATA_DIR]
+// usage: TestDrawingExporter fill|fill-toon [DATA_DIR]
 #include "TestDrawingExporter.h"
 #include "nprTestImages.h"
 
@@ -16,10 +17,13 @@
 #include "vtkCubeSource.h"
 #include "vtkCylinderSource.h"
 #include "vtkImageData.h"
+#include "vtkLight.h"
 #include "vtkNPRDrawingExporter.h"
 #include "vtkNPRDrawingPass.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRPass.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -195,4 +199,68 @@ int Fill()
   return nprTestResult();
 }
 NPR_TEST_CASE("fill", Fill);
+
+// TOON_BANDS against the toon style's render of flat faces: a turned cube and a faceted sphere
+// (no point normals: VTK lights each face with its own normal) under a light from the side.
+int FillToon()
+{
+  vtkSmartPointer<vtkRenderWindow> window = nprCreateTestWindow(Width, Height, nullptr);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  renderer->SetBackground(0.2, 0.3, 0.4);
+  vtkNew<vtkCubeSource> cube;
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(0.7, 0.2, 0.3);
+  sphere->SetRadius(0.55);
+  sphere->SetThetaResolution(16);
+  sphere->SetPhiResolution(8);
+  sphere->Update();
+  vtkNew<vtkPolyData> faceted;
+  faceted->ShallowCopy(sphere->GetOutput());
+  faceted->GetPointData()->SetNormals(nullptr);
+  for (vtkPolyData* mesh : { static_cast<vtkPolyData*>(nullptr), faceted.Get() })
+  {
+    vtkNew<vtkPolyDataMapper> mapper;
+    if (mesh)
+    {
+      mapper->SetInputData(mesh);
+    }
+    else
+    {
+      mapper->SetInputConnection(cube->GetOutputPort());
+    }
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(mesh ? 0.3 : 0.9, mesh ? 0.6 : 0.7, mesh ? 0.9 : 0.3);
+    actor->RotateX(mesh ? 0.0 : 30.0);
+    actor->RotateY(mesh ? 0.0 : 40.0);
+    renderer->AddActor(actor);
+  }
+  renderer->GetActiveCamera()->Azimuth(20.0);
+  renderer->GetActiveCamera()->Elevation(15.0);
+  renderer->ResetCamera();
+  // A scene light from the side, so that the faces fall into every band.
+  renderer->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(1.0, 0.4, 0.3);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(light);
+  vtkNew<vtkNPRPass> pass;
+  pass->SetStyleToToon();
+  pass->GetEdgePass()->SetSilhouettes(false); // no lines in the file
+  pass->GetEdgePass()->SetCreases(false);
+  renderer->SetPass(pass);
+  window->Render();
+  vtkSmartPointer<vtkImageData> render = nprCaptureImage(window);
+  const double toon = ExportAndCompare(
+    renderer, render, true, vtkNPRDrawingExporter::TOON_BANDS, "fill_toon_bands.svg");
+  NPR_CHECK(toon <= 0.01, 100.0 * toon << " % of the inner pixels differ (1 % allowed)");
+  const double flat = ExportAndCompare(
+    renderer, render, true, vtkNPRDrawingExporter::SURFACE_COLORS, "fill_toon_flat.svg");
+  NPR_CHECK(flat > 0.1, "unlit colours match the toon render: " << 100.0 * flat << " % differ");
+  renderer->SetPass(nullptr);
+  return nprTestResult();
+}
+NPR_TEST_CASE("fill-toon", FillToon);
 }

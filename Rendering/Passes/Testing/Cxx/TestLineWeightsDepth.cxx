@@ -165,8 +165,8 @@ NPR_TEST_CASE("depth", Depth);
 vtkSmartPointer<vtkPolyData> Roof()
 {
   vtkNew<vtkPoints> points;
-  for (const std::array<double, 3>& p : { std::array<double, 3>{ -1, -1, 0 }, { 1, -1, 0 }, { 1, 0, 0.5 },
-         { -1, 0, 0.5 }, { -1, 1, 0 }, { 1, 1, 0 } })
+  for (const std::array<double, 3>& p : { std::array<double, 3>{ -1, -1, 0 }, { 1, -1, 0 },
+         { 1, 0, 0.5 }, { -1, 0, 0.5 }, { -1, 1, 0 }, { 1, 1, 0 } })
   {
     points->InsertNextPoint(p.data());
   }
@@ -211,7 +211,8 @@ int Taper()
   std::cout << "taper 40 px: " << middle << " px in the middle, " << nearEnd
             << " px 10 px from the end\n";
   NPR_CHECK(std::abs(middle - 4.0) < 0.2, "the taper thinned the ridge's middle");
-  NPR_CHECK(std::abs(nearEnd - 1.0) < 0.3, "10 px from its end the ridge is not 1 px (4 x 10 / 40)");
+  NPR_CHECK(
+    std::abs(nearEnd - 1.0) < 0.3, "10 px from its end the ridge is not 1 px (4 x 10 / 40)");
   // Width from curvature: the straight ridge keeps its width; the roof's outline is a square
   // whose corners bend fully.
   drawing->SetTaperLength(0.0);
