@@ -70,6 +70,8 @@ void WriteSheet(vtkRenderer* renderer, const nprRenderOptions& options)
   sheet->SetArrangement(
     options.SheetThirdAngle ? vtkNPRDrawingSheet::THIRD_ANGLE : vtkNPRDrawingSheet::FIRST_ANGLE);
   sheet->SetMargin(options.SheetMargin);
+  sheet->SetFillFaces(options.FillFaces);
+  sheet->SetFillColors(options.FillColors);
   if (!sheet->Write())
   {
     throw std::runtime_error(sheet->GetErrorMessage());

@@ -138,10 +138,6 @@ void CheckFillOptions(const nprRenderOptions& options)
   {
     throw nprUsageError("--fill-colors needs --fill-faces");
   }
-  if (options.FillFaces && !options.Sheet.empty())
-  {
-    throw nprUsageError("--fill-faces is not available with --sheet (the sheet's views are lines)");
-  }
   if (options.FillFaces && !nprIsDrawingFile(options.Output))
   {
     throw nprUsageError(std::string("--fill-faces needs -o FILE with the extension ") +

@@ -13,7 +13,6 @@
 #include "vtkNPRPass.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkNPRStrokePainter.h"
-#include "vtkNPRToonPass.h"
 #include "vtkNPRVectorFile.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -467,18 +466,10 @@ bool vtkNPRDrawingExporter::Paint(const Target& target, vtkImageData* raster, st
 
 bool vtkNPRDrawingExporter::PaintFaces(cairo_t* cr, const Target& target, std::string& error)
 {
-  Internals& internal = *this->Internal;
-  vtkPolyData* faces = internal.Lines->GetFaces();
-  vtkSmartPointer<vtkDataArray> colors = faces->GetCellData()->GetArray("Colors");
-  if (this->FillColors == TOON_BANDS)
-  {
-    vtkNPRPass* npr = vtkNPRPass::SafeDownCast(target.Renderer->GetPass());
-    vtkNew<vtkNPRToonPass> defaultToon;
-    colors =
-      vtkNPRToonFaceColors(faces, target.Renderer, npr ? npr->GetToonPass() : defaultToon.Get());
-  }
+  vtkPolyData* faces = this->Internal->Lines->GetFaces();
   return vtkNPRPaintFaces(cr, faces, this->FillColors == FACE_COLOR ? target.FaceColor : nullptr,
-    colors, this->FillSeam, target.Height, internal.FilledFaces, error);
+    vtkNPRFillColors(faces, this->FillColors, target.Renderer), this->FillSeam, target.Height,
+    this->Internal->FilledFaces, error);
 }
 
 bool vtkNPRDrawingExporter::WriteFile(const std::string& path, const std::string& bytes)

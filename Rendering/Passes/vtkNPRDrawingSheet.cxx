@@ -3,9 +3,12 @@
 #include "vtkNPRDrawingSheet.h"
 
 #include "vtkCamera.h"
+#include "vtkDataArray.h"
 #include "vtkErrorCode.h"
 #include "vtkMath.h"
 #include "vtkNPRDrawingLines.h"
+#include "vtkNPRDrawingPass.h"
+#include "vtkNPRFaceShading.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkNPRStrokePainter.h"
@@ -403,13 +406,14 @@ bool vtkNPRDrawingSheet::Paint(int format, std::string& bytes)
     AimCamera(camera, Kinds[view.Kind], internal.Bounds, internal.Scale, height);
     this->Renderer->SetActiveCamera(camera);
     lines->SetSize(width, height);
-    painted = painted && lines->Update();
+    painted = painted && lines->Update() && (!this->FillFaces || lines->UpdateFaces());
     vtkNPRStrokeCounts counts;
     counts.fill(0);
     const double cx = 0.5 * (view.Box[0] + view.Box[2]), cy = 0.5 * (view.Box[1] + view.Box[3]);
     cairo_save(cr);
     cairo_translate(cr, cx - 0.5 * width, cy - 0.5 * height);
-    painted = painted && vtkNPRPaintStrokes(cr, lines->GetStrokes(), style, height, counts, error);
+    painted = painted && (!this->FillFaces || this->PaintFaces(cr, height, error)) &&
+      vtkNPRPaintStrokes(cr, lines->GetStrokes(), style, height, counts, error);
     cairo_restore(cr);
     view.Strokes = lines->GetNumberOfStrokes();
     cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
@@ -432,6 +436,20 @@ bool vtkNPRDrawingSheet::Paint(int format, std::string& bytes)
   return true;
 }
 
+bool vtkNPRDrawingSheet::PaintFaces(cairo_t* cr, double height, std::string& error)
+{
+  vtkNPRPass* npr = vtkNPRPass::SafeDownCast(this->Renderer->GetPass());
+  double faceColor[3] = { 1.0, 1.0, 1.0 };
+  if (npr)
+  {
+    npr->GetDrawingPass()->GetFaceColor(faceColor);
+  }
+  vtkPolyData* faces = this->Internal->Lines->GetFaces();
+  vtkIdType painted = 0;
+  return vtkNPRPaintFaces(cr, faces, this->FillColors == 0 ? faceColor : nullptr,
+    vtkNPRFillColors(faces, this->FillColors, this->Renderer), 1.0, height, painted, error);
+}
+
 void vtkNPRDrawingSheet::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -447,5 +465,6 @@ void vtkNPRDrawingSheet::PrintSelf(ostream& os, vtkIndent indent)
      << (this->Landscape ? ", landscape" : ", portrait") << "\n";
   os << indent << "Margin: " << this->Margin << " mm\n";
   os << indent << "Gap: " << this->Gap << " mm\n";
+  os << indent << "FillFaces: " << this->FillFaces << " FillColors: " << this->FillColors << "\n";
   os << indent << "ErrorCode: " << this->ErrorCode << "\n";
 }

@@ -46,6 +46,7 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for the error message
 
+typedef struct _cairo cairo_t;
 class vtkRenderer;
 
 class VTKNPRPASSES_EXPORT vtkNPRDrawingSheet : public vtkObject
@@ -111,6 +112,20 @@ public:
   vtkSetMacro(Landscape, bool);
   vtkGetMacro(Landscape, bool);
   vtkBooleanMacro(Landscape, bool);
+  ///@{
+  /**
+   * Fill each view's visible faces under its lines (off by default), in FillColors:
+   * vtkNPRDrawingExporter's FillColorModes, FACE_COLOR (the default; the drawing pass's
+   * FaceColor), SURFACE_COLORS or TOON_BANDS (the renderer's lights as they are: a headlight
+   * stays where the last render put it), as vtkNPRDrawingExporter's FillFaces.
+   */
+  vtkSetMacro(FillFaces, bool);
+  vtkGetMacro(FillFaces, bool);
+  vtkBooleanMacro(FillFaces, bool);
+  vtkSetClampMacro(FillColors, int, 0, 2);
+  vtkGetMacro(FillColors, int);
+  ///@}
+
   vtkSetClampMacro(Margin, double, 0.0, 50.0);
   vtkGetMacro(Margin, double);
   vtkSetClampMacro(Gap, double, 0.0, 50.0);
@@ -170,6 +185,8 @@ protected:
   bool Landscape = true;
   double Margin = 10.0;
   double Gap = 10.0;
+  bool FillFaces = false;
+  int FillColors = 0;
   unsigned long ErrorCode = 0;
 
 private:
@@ -182,6 +199,7 @@ private:
   bool ParseViews();
   bool LayOut();
   bool Paint(int format, std::string& bytes);
+  bool PaintFaces(cairo_t* cr, double height, std::string& error);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

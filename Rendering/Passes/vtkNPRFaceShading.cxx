@@ -9,7 +9,10 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
+#include "vtkNPRDrawingExporter.h"
+#include "vtkNPRPass.h"
 #include "vtkNPRToonPass.h"
+#include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
@@ -132,9 +135,26 @@ vtkSmartPointer<vtkUnsignedCharArray> vtkNPRToonFaceColors(
     toon->GetShade(Intensity(lights, n, centroid), shade);
     for (int c = 0; c < 3; ++c)
     {
-      const double value = ambient->GetComponent(cell, c) + diffuse->GetComponent(cell, c) * shade[c];
-      colors->SetValue(3 * cell + c, static_cast<unsigned char>(std::lround(std::clamp(value, 0.0, 255.0))));
+      const double value =
+        ambient->GetComponent(cell, c) + diffuse->GetComponent(cell, c) * shade[c];
+      colors->SetValue(
+        3 * cell + c, static_cast<unsigned char>(std::lround(std::clamp(value, 0.0, 255.0))));
     }
   }
   return colors;
+}
+
+vtkSmartPointer<vtkDataArray> vtkNPRFillColors(vtkPolyData* faces, int mode, vtkRenderer* renderer)
+{
+  if (mode == vtkNPRDrawingExporter::SURFACE_COLORS)
+  {
+    return faces->GetCellData()->GetArray("Colors");
+  }
+  if (mode != vtkNPRDrawingExporter::TOON_BANDS)
+  {
+    return nullptr;
+  }
+  vtkNPRPass* npr = vtkNPRPass::SafeDownCast(renderer->GetPass());
+  vtkNew<vtkNPRToonPass> bands; // the default bands where the renderer has no vtkNPRPass
+  return vtkNPRToonFaceColors(faces, renderer, npr ? npr->GetToonPass() : bands.Get());
 }

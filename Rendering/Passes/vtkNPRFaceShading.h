@@ -8,6 +8,7 @@
 
 #include "vtkSmartPointer.h" // for the colours
 
+class vtkDataArray;
 class vtkNPRToonPass;
 class vtkPolyData;
 class vtkRenderer;
@@ -20,6 +21,11 @@ class vtkUnsignedCharArray;
 // centroid. Null when the faces lack those arrays. Specular highlights are not filled.
 vtkSmartPointer<vtkUnsignedCharArray> vtkNPRToonFaceColors(
   vtkPolyData* faces, vtkRenderer* renderer, vtkNPRToonPass* toon);
+
+// The colours, one a face, that vtkNPRDrawingExporter::FillColors `mode` fills the faces with
+// for the renderer: SURFACE_COLORS the faces' Colors, TOON_BANDS vtkNPRToonFaceColors with the
+// renderer's vtkNPRPass's toon pass (else one of 3 bands); null for FACE_COLOR (one colour).
+vtkSmartPointer<vtkDataArray> vtkNPRFillColors(vtkPolyData* faces, int mode, vtkRenderer* renderer);
 
 #endif
 // VTK-HeaderTest-Exclude: vtkNPRFaceShading.h

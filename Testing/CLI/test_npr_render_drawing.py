@@ -117,14 +117,17 @@ svg = open(out("filled_toon.svg")).read() if os.path.isfile(out("filled_toon.svg
 fills = set(re.findall(r"fill:(rgb\([^)]*\))", svg))
 check(rc == 0 and len(fills) >= 3 and "<image" not in svg,
       "--fill-colors toon: the toon bands' colours, no raster (%d colours, %r)" % (len(fills), err.strip()))
+rc, _, err = run(part, "--sheet", "iso,front", "--fill-faces", "-o", out("filled_sheet.svg"))
+svg = open(out("filled_sheet.svg")).read() if os.path.isfile(out("filled_sheet.svg")) else ""
+check(rc == 0 and svg.count("fill:rgb(100%,100%,100%)") > 50,
+      "--sheet with --fill-faces: each view's faces filled (%r)" % err.strip())
 rc, _, err = run(part, "--style", "drawing", "--fill-faces", "--fill-colors", "surface",
                  "-o", out("filled_surface.pdf"))
 data = open(out("filled_surface.pdf"), "rb").read() if os.path.isfile(out("filled_surface.pdf")) else b""
 check(rc == 0 and data.startswith(b"%PDF"), "--fill-colors surface -o .pdf (%r)" % err.strip())
 for extra, expected in ((["--fill-faces", "-o", out("x.png")], "--fill-faces needs -o FILE"),
                         (["--fill-colors", "surface", "-o", out("x.svg")], "needs --fill-faces"),
-                        (["--fill-faces", "--fill-colors", "shiny", "-o", out("x.svg")], "not face, surface or toon"),
-                        (["--fill-faces", "--sheet", "front", "-o", out("x.svg")], "not available with --sheet")):
+                        (["--fill-faces", "--fill-colors", "shiny", "-o", out("x.svg")], "not face, surface or toon")):
     rc, _, err = run(part, *extra)
     check(rc == 2 and expected in err, "%s: exit 2 with '%s' (%r)" % (" ".join(extra[:2]), expected, err.strip()))
 
