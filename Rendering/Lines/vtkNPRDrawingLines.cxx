@@ -2,10 +2,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkNPRDrawingLines.h"
 
+#include "vtkActor.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkIntArray.h"
 #include "vtkNPRFeatureLines.h"
 #include "vtkNPRSceneFaces.h"
@@ -16,6 +18,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -61,6 +64,10 @@ unsigned char StrokeType(unsigned char bits)
   {
     return vtkNPRFeatureLines::CREASE;
   }
+  if (bits & vtkNPRFeatureLines::LINE)
+  {
+    return vtkNPRFeatureLines::LINE;
+  }
   return vtkNPRFeatureLines::NON_MANIFOLD;
 }
 
@@ -72,6 +79,7 @@ struct Piece
   vtkIdType NodeA, NodeB;
   unsigned char Type;
   bool Hidden;
+  int Mesh; // its segment's
 };
 
 // A stretch of one visibility along an edge's clipped part, in image fractions of it.
@@ -261,6 +269,7 @@ std::vector<Piece> MakePieces(const std::vector<vtkNPRSceneLines::Segment>& segm
       node = piece.NodeB;
       piece.Type = StrokeType(segment.Type);
       piece.Hidden = spans[i].Hidden;
+      piece.Mesh = segment.Mesh;
       if (!piece.Hidden || hiddenLines)
       {
         pieces.push_back(piece);
@@ -401,8 +410,14 @@ private:
     this->Lines->InsertNextCell(static_cast<vtkIdType>(this->Ids.size()), this->Ids.data());
     this->Types->InsertNextValue(first.Type);
     this->HiddenFlags->InsertNextValue(first.Hidden ? 1 : 0);
+    this->Meshes.push_back(first.Mesh);
   }
 
+public:
+  // Each stroke's mesh (its first piece's; -1 for a crossing).
+  std::vector<int> Meshes;
+
+private:
   const std::vector<Piece>& Pieces;
   const std::vector<vtkIdType> Next;
   std::vector<char> Used;
@@ -414,6 +429,44 @@ private:
   vtkNew<vtkUnsignedCharArray> Types;
   vtkNew<vtkUnsignedCharArray> HiddenFlags;
 };
+}
+
+namespace
+{
+// The strokes' "Colors" and "LineWidths": a LINE stroke's actor's colour and line width, black
+// and 0 for the others.
+void AddLineLooks(vtkPolyData* strokes, const std::vector<int>& meshes,
+  const std::vector<vtkNPRMeshInstance>& actors)
+{
+  vtkDataArray* types = strokes->GetCellData()->GetArray("FeatureType");
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("Colors");
+  colors->SetNumberOfComponents(3);
+  colors->SetNumberOfTuples(static_cast<vtkIdType>(meshes.size()));
+  vtkNew<vtkFloatArray> widths;
+  widths->SetName("LineWidths");
+  widths->SetNumberOfTuples(static_cast<vtkIdType>(meshes.size()));
+  for (size_t i = 0; i < meshes.size(); ++i)
+  {
+    double color[3] = { 0.0, 0.0, 0.0 };
+    double width = 0.0;
+    const int mesh = meshes[i];
+    if (types && types->GetComponent(static_cast<vtkIdType>(i), 0) == vtkNPRFeatureLines::LINE &&
+      mesh >= 0 && mesh < static_cast<int>(actors.size()))
+    {
+      actors[mesh].Actor->GetProperty()->GetColor(color);
+      width = actors[mesh].Actor->GetProperty()->GetLineWidth();
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      colors->SetValue(3 * static_cast<vtkIdType>(i) + c,
+        static_cast<unsigned char>(std::lround(255.0 * std::clamp(color[c], 0.0, 1.0))));
+    }
+    widths->SetValue(static_cast<vtkIdType>(i), static_cast<float>(width));
+  }
+  strokes->GetCellData()->AddArray(colors);
+  strokes->GetCellData()->AddArray(widths);
+}
 }
 
 struct vtkNPRDrawingLines::Internals
@@ -521,7 +574,9 @@ bool vtkNPRDrawingLines::Update()
   // Chain the pieces of one kind through the nodes where exactly two of that kind meet.
   start = Clock::now();
   vtkPolyData* strokes = internal.Strokes;
-  StrokeBuilder(pieces, view).Build(strokes);
+  StrokeBuilder builder(pieces, view);
+  builder.Build(strokes);
+  AddLineLooks(strokes, builder.Meshes, scene.GetMeshes());
   vtkNew<vtkIntArray> imageSize;
   imageSize->SetName("ImageSize");
   imageSize->SetNumberOfComponents(2);
@@ -537,5 +592,6 @@ void vtkNPRDrawingLines::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "HiddenLines: " << this->HiddenLines << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
+  os << indent << "LinePrimitives: " << this->LinePrimitives << "\n";
   os << indent << "NumberOfStrokes: " << this->Internal->StrokeCount << "\n";
 }

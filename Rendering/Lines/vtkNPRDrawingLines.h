@@ -34,9 +34,12 @@
  *   holds it ([0, 1], from the camera's projection);
  * - cell data "FeatureType" (vtkUnsignedCharArray): the stroke's kind, a single bit of
  *   vtkNPRFeatureLines::FeatureTypes: SILHOUETTE (also a smooth contour), BOUNDARY, INTERSECTION,
- *   CREASE or NON_MANIFOLD, the first of these an edge carries (an edge that is both silhouette
- *   and crease is a silhouette);
+ *   CREASE, NON_MANIFOLD or (with LinePrimitives) LINE, the first of these an edge carries (an
+ *   edge that is both silhouette and crease is a silhouette);
  * - cell data "Hidden" (vtkUnsignedCharArray): 1 for a hidden stroke, 0 for a visible one;
+ * - cell data "Colors" (vtkUnsignedCharArray, RGB) and "LineWidths" (vtkFloatArray, pixels at
+ *   72 DPI): a LINE stroke's actor's colour and line width; black and 0 for the others (whose
+ *   look is the style's);
  * - field data "ImageSize" (vtkIntArray, 2 components): the image's width and height.
  * Hidden pieces are output only with HiddenLines on.
  *
@@ -85,6 +88,20 @@ public:
   vtkSetMacro(HiddenLines, bool);
   vtkGetMacro(HiddenLines, bool);
   vtkBooleanMacro(HiddenLines, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Also output the line cells of the scene's meshes (an outline box, axes, streamlines drawn as
+   * lines; off by default): each segment of each polyline split where it passes behind a surface
+   * like the feature lines, chained through the mesh's points, as strokes of FeatureType LINE
+   * with their actor's colour and line width (cell data "Colors" and "LineWidths"). Vector
+   * files without the window's image take them so (vtkNPRDrawingExporter); the drawing style's
+   * image leaves them to VTK, which draws them over it.
+   */
+  vtkSetMacro(LinePrimitives, bool);
+  vtkGetMacro(LinePrimitives, bool);
+  vtkBooleanMacro(LinePrimitives, bool);
   ///@}
 
   ///@{

@@ -144,7 +144,8 @@ public:
     BOUNDARY = 4,
     NON_MANIFOLD = 8,
     SMOOTH_CONTOUR = 16,
-    INTERSECTION = 32 // not made here: vtkNPRReferenceMask's curves where surfaces cross
+    INTERSECTION = 32, // not made here: vtkNPRReferenceMask's curves where surfaces cross
+    LINE = 64 // not made here: a line cell of the scene (vtkNPRDrawingLines' LinePrimitives)
   };
 
   ///@{

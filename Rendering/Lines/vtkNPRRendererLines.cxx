@@ -49,6 +49,7 @@ void vtkNPRRendererLines::UpdateScene(int trianglesPerLocator)
   settings.NonManifoldEdges = this->LineSettings->GetNonManifoldEdges();
   settings.CreaseAngle = this->LineSettings->GetCreaseAngle();
   settings.SmoothContours = this->SmoothContours;
+  settings.LinePrimitives = this->LinePrimitives;
   settings.Intersections = settings.Creases && this->IntersectionCurves;
   this->Scene->Update(this->Renderer, settings, trianglesPerLocator);
   this->FeatureEdges = static_cast<vtkIdType>(this->Scene->GetSegments().size());

@@ -137,6 +137,7 @@ protected:
   double OcclusionEpsilon = 1e-6;
   bool IntersectionCurves = true;
   bool SmoothContours = false;
+  bool LinePrimitives = false; // vtkNPRDrawingLines': the scene's line cells as strokes
 
   vtkIdType FeatureEdges = 0;
   vtkIdType RayCasts = 0;

@@ -320,6 +320,15 @@ void vtkNPRSceneLines::Update(
   start = Clock::now();
   this->UpdateOccluders(actors, settings, trianglesPerLocator, nodes);
   this->LocatorTime = Seconds(start);
+  if (settings.LinePrimitives)
+  {
+    vtkIdType firstNode = 0;
+    for (const Segment& segment : this->Segments)
+    {
+      firstNode = std::max({ firstNode, segment.NodeA + 1, segment.NodeB + 1 });
+    }
+    this->AppendLinePrimitives(actors, firstNode);
+  }
 }
 
 vtkIdType vtkNPRSceneLines::UpdateLines(
@@ -354,7 +363,8 @@ vtkIdType vtkNPRSceneLines::UpdateLines(
     lines->SetFeatureAngle(settings.CreaseAngle);
     lines->SetSmoothContours(settings.SmoothContours);
     lines->Update();
-    this->AppendSegments(lines->GetOutput(), state, nodeOffset, pointOffset);
+    this->AppendSegments(
+      lines->GetOutput(), state, static_cast<int>(&state - actors.data()), nodeOffset, pointOffset);
     nodeOffset += lines->GetOutput()->GetNumberOfPoints();
     pointOffset += state.Mesh->GetPoints() ? state.Mesh->GetNumberOfPoints() : 0;
   }
@@ -362,8 +372,8 @@ vtkIdType vtkNPRSceneLines::UpdateLines(
   return nodeOffset;
 }
 
-void vtkNPRSceneLines::AppendSegments(
-  vtkPolyData* output, const vtkNPRMeshInstance& state, vtkIdType nodeOffset, vtkIdType pointOffset)
+void vtkNPRSceneLines::AppendSegments(vtkPolyData* output, const vtkNPRMeshInstance& state,
+  int mesh, vtkIdType nodeOffset, vtkIdType pointOffset)
 {
   auto* types = vtkUnsignedCharArray::SafeDownCast(output->GetCellData()->GetArray("FeatureType"));
   auto* triangles =
@@ -390,7 +400,50 @@ void vtkNPRSceneLines::AppendSegments(
       const vtkIdType corner = triangles ? triangles->GetTypedComponent(cell, k) : -1;
       segment.Triangle[k] = corner >= 0 ? pointOffset + corner : -1;
     }
+    segment.Mesh = mesh;
     this->Segments.push_back(segment);
+  }
+}
+
+void vtkNPRSceneLines::AppendLinePrimitives(
+  const std::vector<vtkNPRMeshInstance>& actors, vtkIdType firstNode)
+{
+  for (size_t mesh = 0; mesh < actors.size(); ++mesh)
+  {
+    const vtkNPRMeshInstance& state = actors[mesh];
+    vtkCellArray* cells = state.Mesh->GetLines();
+    vtkPoints* points = state.Mesh->GetPoints();
+    if (cells && points && cells->GetNumberOfCells() > 0)
+    {
+      auto iterator = vtk::TakeSmartPointer(cells->NewIterator());
+      for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+      {
+        vtkIdType size;
+        const vtkIdType* ids;
+        iterator->GetCurrentCell(size, ids);
+        for (vtkIdType k = 0; k + 1 < size; ++k) // a polyline's segments
+        {
+          Segment segment;
+          double a[3], b[3];
+          points->GetPoint(ids[k], a);
+          points->GetPoint(ids[k + 1], b);
+          vtkNPRTransformPoint(state.Matrix.data(), a, segment.A);
+          vtkNPRTransformPoint(state.Matrix.data(), b, segment.B);
+          if (!std::all_of(segment.A, segment.A + 3, [](double v) { return std::isfinite(v); }) ||
+            !std::all_of(segment.B, segment.B + 3, [](double v) { return std::isfinite(v); }))
+          {
+            continue;
+          }
+          segment.Type = vtkNPRFeatureLines::LINE;
+          segment.NodeA = firstNode + ids[k];
+          segment.NodeB = firstNode + ids[k + 1];
+          std::fill_n(segment.Triangle, 3, -1);
+          segment.Mesh = static_cast<int>(mesh);
+          this->Segments.push_back(segment);
+        }
+      }
+    }
+    firstNode += state.Mesh->GetNumberOfPoints();
   }
 }
 
@@ -436,6 +489,7 @@ void vtkNPRSceneLines::AppendCrossings(double creaseAngle, vtkIdType nodeOffset)
     segment.NodeA = nodeOffset + nodes[2 * i];
     segment.NodeB = nodeOffset + nodes[2 * i + 1];
     std::fill_n(segment.Triangle, 3, -1);
+    segment.Mesh = -1;
     this->Segments.push_back(segment);
   }
 }

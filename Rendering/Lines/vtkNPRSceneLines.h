@@ -65,19 +65,22 @@ public:
   {
     bool Silhouettes = true, Creases = true, Boundaries = true, NonManifoldEdges = true;
     bool SmoothContours = false;
-    bool Intersections = false; // crossing surfaces at more than CreaseAngle, as creases
+    bool Intersections = false;  // crossing surfaces at more than CreaseAngle, as creases
+    bool LinePrimitives = false; // the meshes' line cells, as LINE segments
     double CreaseAngle = 30.0;
   };
   // A feature edge in world coordinates; Nodes identify its end points across the scene (the
   // same mesh vertex of the same actor, or the same crossed edge of a smooth contour: the same
   // node). Triangle: for a smooth contour, the scene point ids (vtkNPROccluders's numbering)
-  // of the triangle it lies on; -1 otherwise.
+  // of the triangle it lies on; -1 otherwise. Mesh: the index of its mesh in GetMeshes(), -1 for
+  // a crossing of two.
   struct Segment
   {
     double A[3], B[3];
     unsigned char Type;
     vtkIdType NodeA, NodeB;
     vtkIdType Triangle[3];
+    int Mesh;
   };
 
   vtkNPRSceneLines();
@@ -90,6 +93,8 @@ public:
   void Update(vtkRenderer* renderer, const Settings& settings, int trianglesPerLocator);
 
   const std::vector<Segment>& GetSegments() const { return this->Segments; }
+  // The meshes of the last Update() (the actors' meshes as drawn).
+  const std::vector<vtkNPRMeshInstance>& GetMeshes() const { return this->LocatorState; }
   const vtkNPROccluders& GetOccluders() const { return this->Occluders; }
   vtkIdType GetNumberOfLocatorBuilds() const { return this->LocatorBuilds; }
   vtkIdType GetNumberOfAdjacencyBuilds() const;
@@ -107,8 +112,10 @@ private:
   // and the crossings' segments.
   vtkIdType UpdateLines(
     const std::vector<vtkNPRMeshInstance>& actors, vtkCamera* camera, const Settings& settings);
-  void AppendSegments(vtkPolyData* output, const vtkNPRMeshInstance& state, vtkIdType nodeOffset,
-    vtkIdType pointOffset);
+  void AppendSegments(vtkPolyData* output, const vtkNPRMeshInstance& state, int mesh,
+    vtkIdType nodeOffset, vtkIdType pointOffset);
+  // The meshes' line cells as LINE segments, their nodes from firstNode on.
+  void AppendLinePrimitives(const std::vector<vtkNPRMeshInstance>& actors, vtkIdType firstNode);
   void UpdateOccluders(const std::vector<vtkNPRMeshInstance>& actors, const Settings& settings,
     int trianglesPerLocator, vtkIdType nodeOffset);
   // The crossings at more than the crease angle as segments, their ends chained (nodes from

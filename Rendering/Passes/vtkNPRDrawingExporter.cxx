@@ -325,7 +325,8 @@ bool vtkNPRDrawingExporter::Write()
   {
     raster = GrabRaster(target.Renderer);
   }
-  if (!this->ComputeStrokes(target))
+  // Without the image under them the scene's own line cells (an outline, axes) are strokes too.
+  if (!this->ComputeStrokes(target, !raster))
   {
     return false;
   }
@@ -404,7 +405,7 @@ void vtkNPRDrawingExporter::ResolveStyle(Target& target)
   target.Lines = drawing ? drawing->GetDrawingLines() : this->Internal->OwnLines.Get();
 }
 
-bool vtkNPRDrawingExporter::ComputeStrokes(const Target& target)
+bool vtkNPRDrawingExporter::ComputeStrokes(const Target& target, bool linePrimitives)
 {
   const Clock::time_point start = Clock::now();
   const vtkNPRStrokeStyle& style = target.Style;
@@ -412,7 +413,10 @@ bool vtkNPRDrawingExporter::ComputeStrokes(const Target& target)
   lines->SetRenderer(target.Renderer);
   lines->SetSize(target.Width, target.Height);
   vtkNPRSelectStrokeLines(lines, style, target.Edges);
+  const bool passLines = lines->GetLinePrimitives();
+  lines->SetLinePrimitives(linePrimitives);
   const bool updated = lines->Update() && (!this->FillFaces || lines->UpdateFaces());
+  lines->SetLinePrimitives(passLines);
   if (lines != this->Internal->OwnLines.Get())
   {
     // A pass held by the renderer must not hold the renderer (a cycle, hence a leak).

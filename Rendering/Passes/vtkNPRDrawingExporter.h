@@ -25,13 +25,15 @@
  * - Faces (FillFaces): the visible faces as filled polygons, in the drawing style's FaceColor
  *   or each actor's own colours (FillColors), painted back to front over the background.
  * - Order and structure: background, raster or faces, hidden strokes, then the visible silhouettes,
- *   boundaries, creases, non-manifold edges and intersection curves. In an SVG file each of
+ *   boundaries, creases, non-manifold edges, intersection curves and, where no image is embedded,
+ *   the scene's own line cells (an outline box, axes: vtkNPRDrawingLines' LinePrimitives, hidden
+ *   where behind a surface, each in its actor's colour and line width). In an SVG file each of
  *   these classes of strokes is a `<g class="npr-hidden">`, `npr-silhouette`, `npr-boundary`,
- *   `npr-crease`, `npr-non-manifold`, `npr-intersection` group of `<path>` elements, one per
- *   stroke (hidden ones with a
- *   `stroke-dasharray`), so a style sheet or an editor can restyle a class. Cairo writes no
- *   classes itself: the groups are added to its output afterwards (if its output has not the
- *   expected form, the file is written without them and a warning says so). PDF and PostScript
+ *   `npr-crease`, `npr-non-manifold`, `npr-intersection`, `npr-line` group of `<path>` elements,
+ *   one per stroke (hidden ones with a `stroke-dasharray`), so a style sheet or an editor can
+ *   restyle a class. Cairo writes no classes itself: the groups are added to its output
+ *   afterwards (if its output has not the expected form, the file is written without them and a
+ *   warning says so). PDF and PostScript
  *   files have the same painting order, without groups.
  *
  * Errors (Write() returns false, GetErrorCode() is a vtkErrorCode and GetErrorMessage() says
@@ -183,9 +185,9 @@ public:
   ///@{
   /**
    * What the last Write() painted: the strokes of a class (0 hidden, 1 silhouette, 2 boundary,
-   * 3 crease, 4 non-manifold, 5 intersection) and in all; whether the SVG's groups were
-   * labelled; whether a raster was embedded; the polygons filled (FillFaces); the seconds
-   * computing the strokes (and the faces) and painting and writing the file.
+   * 3 crease, 4 non-manifold, 5 intersection, 6 the scene's line cells) and in all; whether the
+   * SVG's groups were labelled; whether a raster was embedded; the polygons filled (FillFaces); the
+   * seconds computing the strokes (and the faces) and painting and writing the file.
    */
   vtkIdType GetNumberOfStrokes(int strokeClass) const;
   vtkIdType GetNumberOfStrokes() const;
@@ -223,7 +225,7 @@ private:
   bool CheckPath(Target& target);
   bool FindRenderer(Target& target);
   void ResolveStyle(Target& target);
-  bool ComputeStrokes(const Target& target);
+  bool ComputeStrokes(const Target& target, bool linePrimitives);
   bool Paint(const Target& target, vtkImageData* raster, std::string& bytes);
   bool PaintFaces(cairo_t* cr, const Target& target, std::string& error);
   bool WriteFile(const std::string& path, const std::string& bytes);

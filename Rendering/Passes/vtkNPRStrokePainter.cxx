@@ -28,7 +28,7 @@ namespace
 {
 // The vtkNPRFeatureLines::FeatureTypes bits (Lines's header is not needed for four values).
 constexpr unsigned char SilhouetteBit = 1, CreaseBit = 2, BoundaryBit = 4, NonManifoldBit = 8,
-                        IntersectionBit = 32;
+                        IntersectionBit = 32, LineBit = 64;
 
 // The class of a visible stroke of this line type; -1 for an unknown type.
 int VisibleClass(unsigned char type)
@@ -45,6 +45,8 @@ int VisibleClass(unsigned char type)
       return NPR_STROKES_NON_MANIFOLD;
     case IntersectionBit:
       return NPR_STROKES_INTERSECTION;
+    case LineBit:
+      return NPR_STROKES_LINE;
     default:
       return -1;
   }
@@ -62,7 +64,7 @@ bool Drawn(const vtkNPRStrokeStyle& style, unsigned char type)
   {
     return style.Creases;
   }
-  return false;
+  return type == LineBit; // the scene's own lines, when the strokes have them
 }
 }
 
@@ -82,6 +84,8 @@ const char* vtkNPRStrokeClassName(int strokeClass)
       return "npr-non-manifold";
     case NPR_STROKES_INTERSECTION:
       return "npr-intersection";
+    case NPR_STROKES_LINE:
+      return "npr-line";
     default:
       return "";
   }
@@ -122,6 +126,7 @@ vtkNPRStrokeStyle vtkNPRMakeStrokeStyle(
   style.HiddenLineWidth = hiddenWidth * style.LineWidth;
   style.DashLength = dash * scale;
   style.GapLength = gap * scale;
+  style.Scale = scale;
   if (drawing)
   {
     style.TaperLength = drawing->GetTaperLength() * scale;
@@ -211,6 +216,26 @@ void SetPen(cairo_t* cr, const vtkNPRStrokeStyle& style, int strokeClass)
   }
   cairo_set_source_rgb(cr, color[0], color[1], color[2]);
   cairo_set_line_width(cr, width);
+}
+
+// A line cell's stroke: its actor's colour and line width (at least a hairline).
+void SetLinePen(cairo_t* cr, vtkPolyData* strokes, vtkIdType line, const vtkNPRStrokeStyle& style)
+{
+  const vtkIdType cell = strokes->GetNumberOfVerts() + line;
+  vtkDataArray* colors = strokes->GetCellData()->GetArray("Colors");
+  vtkDataArray* widths = strokes->GetCellData()->GetArray("LineWidths");
+  double rgb[3] = { 0.0, 0.0, 0.0 };
+  if (colors && colors->GetNumberOfComponents() >= 3 && cell < colors->GetNumberOfTuples())
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      rgb[c] = colors->GetComponent(cell, c) / 255.0;
+    }
+  }
+  const double width =
+    widths && cell < widths->GetNumberOfTuples() ? widths->GetComponent(cell, 0) : 1.0;
+  cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
+  cairo_set_line_width(cr, std::max(0.25, width * style.Scale));
 }
 
 // One stroke's path, through the point ids of a cell, with y flipped; false for an empty cell.
@@ -439,6 +464,10 @@ bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeSty
       vtkIdType size;
       const vtkIdType* ids;
       iterator->GetCellAtId(cell, size, ids);
+      if (strokeClass == NPR_STROKES_LINE)
+      {
+        SetLinePen(cr, strokes, cell, style);
+      }
       if (strokeClass != NPR_STROKES_HIDDEN && style.VariableWidth())
       {
         counts[strokeClass] +=

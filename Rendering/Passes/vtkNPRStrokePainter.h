@@ -34,6 +34,7 @@ struct vtkNPRStrokeStyle
   double HiddenLineWidth = 0.9; // pixels
   double DashLength = 6.0;      // pixels
   double GapLength = 4.0;       // pixels
+  double Scale = 1.0;           // pixels a point at 72 DPI: a line cell's LineWidths
   // The visible strokes' width along them (vtkNPRDrawingPass's TaperLength and CurvatureWidth,
   // vtkNPREdgePass's DepthFalloff): a factor from the distance to an open end, the bend and the
   // depth (between the clipping planes ClippingRange of a parallel or perspective camera).
@@ -76,10 +77,11 @@ enum vtkNPRStrokeClass
   NPR_STROKES_CREASE,       // visible creases
   NPR_STROKES_NON_MANIFOLD, // visible non-manifold edges
   NPR_STROKES_INTERSECTION, // visible curves where surfaces cross
+  NPR_STROKES_LINE,         // visible line cells of the scene, each in its actor's colour and width
   NPR_STROKE_CLASSES
 };
 // "npr-hidden", "npr-silhouette", "npr-boundary", "npr-crease", "npr-non-manifold",
-// "npr-intersection".
+// "npr-intersection", "npr-line".
 const char* vtkNPRStrokeClassName(int strokeClass);
 
 // How many strokes of each class were painted.

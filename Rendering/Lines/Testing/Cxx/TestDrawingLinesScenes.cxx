@@ -3,7 +3,7 @@
 // The strokes of a technical drawing (vtkNPRDrawingLines), part of the TestDrawingLines program: a
 // rod through a ring, each hiding part of the other's lines; a cylinder's rims as one closed
 // stroke each; the bunny's strokes chained and their visible points inside the reference mask;
-// bad input.
+// bad input; the scene's own line cells, hidden behind a surface.
 //
 // usage: TestDrawingLines CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprFeatureLineTesting.h"
@@ -29,6 +29,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -262,4 +263,99 @@ int DrawingErrors()
   return nprTestResult();
 }
 NPR_TEST_CASE("drawing-errors", DrawingErrors);
+
+// ---- The scene's own line cells (LinePrimitives) ----
+// A unit cube at the origin, a red 2 px line behind it along x (z = -1, from x -2 to 2) and a
+// blue one before it (z = 1), under a parallel camera on +z: the line behind is hidden where the
+// cube covers it, x in [-0.5, 0.5], the one before is whole; each stroke in its actor's colour
+// and width; none without LinePrimitives.
+int DrawingLinePrimitives()
+{
+  DrawingScene scene(400, 300);
+  vtkNew<vtkPolyDataMapper> cubeMapper;
+  cubeMapper->SetInputData(CubeSource());
+  vtkNew<vtkActor> cube;
+  cube->SetMapper(cubeMapper);
+  scene.Renderer->AddActor(cube);
+  for (const double z : { -1.0, 1.0 })
+  {
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(-2.0, 0.0, z);
+    points->InsertNextPoint(0.0, 0.0, z);
+    points->InsertNextPoint(2.0, 0.0, z);
+    vtkNew<vtkCellArray> cells;
+    const vtkIdType polyline[3] = { 0, 1, 2 };
+    cells->InsertNextCell(3, polyline);
+    vtkNew<vtkPolyData> line;
+    line->SetPoints(points);
+    line->SetLines(cells);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(line);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(z < 0.0 ? 1.0 : 0.0, 0.0, z < 0.0 ? 0.0 : 1.0);
+    actor->GetProperty()->SetLineWidth(2.0);
+    scene.Renderer->AddActor(actor);
+  }
+  vtkCamera* camera = scene.Camera();
+  camera->ParallelProjectionOn();
+  camera->SetPosition(0.0, 0.0, 10.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetParallelScale(1.5);
+  camera->SetClippingRange(5.0, 15.0);
+  scene.Lines->HiddenLinesOn();
+  const auto countLines = [](const std::vector<Stroke>& strokes)
+  {
+    return std::count_if(strokes.begin(), strokes.end(),
+      [](const Stroke& stroke) { return stroke.Type == vtkNPRFeatureLines::LINE; });
+  };
+  NPR_CHECK(countLines(scene.Strokes()) == 0, "line strokes without LinePrimitives");
+  scene.Lines->LinePrimitivesOn();
+  const std::vector<Stroke> strokes = scene.Strokes();
+  vtkPolyData* output = scene.Lines->GetStrokes();
+  vtkDataArray* colors = output->GetCellData()->GetArray("Colors");
+  vtkDataArray* widths = output->GetCellData()->GetArray("LineWidths");
+  NPR_CHECK(colors && widths, "no Colors or LineWidths");
+  // x of the image: 100 px a unit about pixel 200. Red strokes: visible from the ends to the
+  // cube's sides, hidden between; blue: one visible stroke end to end.
+  int red = 0, blue = 0, hiddenRed = 0;
+  double worst = 0.0;
+  vtkIdType cell = 0;
+  for (const Stroke& stroke : strokes)
+  {
+    const vtkIdType at = cell++;
+    if (stroke.Type != vtkNPRFeatureLines::LINE || !colors || !widths)
+    {
+      continue;
+    }
+    const bool isRed = colors->GetComponent(at, 0) == 255 && colors->GetComponent(at, 2) == 0;
+    NPR_CHECK(widths->GetComponent(at, 0) == 2.0, "a line stroke's width is not its actor's");
+    double low = 1e300, high = -1e300;
+    for (const Image2& p : stroke.Points)
+    {
+      low = std::min(low, p[0]);
+      high = std::max(high, p[0]);
+    }
+    if (!isRed)
+    {
+      ++blue;
+      worst = std::max({ worst, std::abs(low - 0.0), std::abs(high - 400.0) });
+      NPR_CHECK(!stroke.Hidden, "the line before the cube is hidden");
+      continue;
+    }
+    ++red;
+    hiddenRed += stroke.Hidden ? 1 : 0;
+    const double inner = stroke.Hidden
+      ? std::min(std::abs(low - 150.0), std::abs(high - 250.0))
+      : (low < 150.0 ? std::abs(high - 150.0) : std::abs(low - 250.0));
+    worst = std::max(worst, inner);
+  }
+  std::cout << countLines(strokes) << " line strokes: " << red << " red (" << hiddenRed
+            << " hidden), " << blue << " blue; farthest end " << worst << " px from the truth\n";
+  NPR_CHECK(red == 3 && hiddenRed == 1 && blue == 1,
+    red << " red strokes (" << hiddenRed << " hidden), " << blue << " blue: expected 3 (1), 1");
+  NPR_CHECK(worst < 0.01, "a stroke ends " << worst << " px from where the cube's side is");
+  return nprTestResult();
+}
+NPR_TEST_CASE("drawing-line-primitives", DrawingLinePrimitives);
 }

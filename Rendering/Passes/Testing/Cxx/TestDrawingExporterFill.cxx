@@ -5,7 +5,8 @@
 // - SURFACE_COLORS against VTK's own unlit render of a block, a pin through it and a sphere
 //   through both (the depth order where surfaces cross);
 // - FACE_COLOR against the drawing style's render of the same scene, lines and hidden lines on;
-//   without FillFaces the faces are not there (the comparison can fail);
+//   without FillFaces the faces are not there (the comparison can fail); an outline box is
+//   written as strokes of its colour (class npr-line), not where the image is embedded;
 // - TOON_BANDS against the toon style's render of flat faces (a cube and a faceted sphere).
 //
 // usage: TestDrawingExporter fill|fill-toon [DATA_DIR]
@@ -22,6 +23,7 @@
 #include "vtkNPRDrawingPass.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRPass.h"
+#include "vtkOutlineSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -195,6 +197,33 @@ int Fill()
   const double none =
     ExportAndCompare(drawing, render, false, vtkNPRDrawingExporter::FACE_COLOR, "fill_none.svg");
   NPR_CHECK(none > 0.1, "without FillFaces only " << 100.0 * none << " % differ");
+
+  // The scene's own lines: an outline box, as strokes of its colour where no image is embedded.
+  vtkNew<vtkOutlineSource> box;
+  box->SetBounds(-1.3, 1.6, -0.9, 0.9, -0.8, 0.6);
+  vtkNew<vtkPolyDataMapper> boxMapper;
+  boxMapper->SetInputConnection(box->GetOutputPort());
+  vtkNew<vtkActor> outline;
+  outline->SetMapper(boxMapper);
+  outline->GetProperty()->SetColor(0.0, 0.0, 1.0);
+  drawing->AddActor(outline);
+  drawingWindow->Render();
+  for (int embed : { 0, 1 })
+  {
+    vtkNew<vtkNPRDrawingExporter> exporter;
+    exporter->SetRenderer(drawing);
+    exporter->SetEmbedImage(embed);
+    const std::string svg = nprTestOutputPath("fill_outline.svg");
+    exporter->SetFileName(svg.c_str());
+    NPR_CHECK(exporter->Write(), "write: " << exporter->GetErrorMessage());
+    const std::string text = ReadFile(svg);
+    const vtkIdType lines = exporter->GetNumberOfStrokes(6);
+    std::cout << "outline, image " << embed << ": " << lines << " line strokes\n";
+    NPR_CHECK(embed ? lines == 0
+                    : lines >= 4 && text.find("<g class=\"npr-line\">") != std::string::npos &&
+          text.find("stroke:rgb(0%,0%,100%)") != std::string::npos,
+      (embed ? "line strokes over the image" : "the outline's blue strokes are missing"));
+  }
   drawing->SetPass(nullptr);
   return nprTestResult();
 }
