@@ -109,17 +109,19 @@ for extra, expected in ((["--sheet", "front,side", "-o", out("x.svg")], "unknown
 # the part's own colour (as a PDF), and the usage errors.
 rc, _, err = run(part, "--style", "drawing", "--fill-faces", "-o", out("filled.svg"))
 svg = open(out("filled.svg")).read() if os.path.isfile(out("filled.svg")) else ""
-check(rc == 0 and svg.count("fill:rgb(100%,100%,100%)") > 100 and "npr-silhouette" in svg,
+# Cairo 1.16 writes style="fill:rgb(100%,100%,100%)", 1.18 fill="rgb(100%, 100%, 100%)".
+WHITE_FILL = re.compile(r'fill(?::|=")rgb\(100%, ?100%, ?100%\)')
+check(rc == 0 and len(WHITE_FILL.findall(svg)) > 100 and "npr-silhouette" in svg,
       "--fill-faces: white filled paths under the strokes (%r)" % err.strip())
 rc, _, err = run(part, "--style", "toon", "--fill-faces", "--fill-colors", "toon",
                  "-o", out("filled_toon.svg"))
 svg = open(out("filled_toon.svg")).read() if os.path.isfile(out("filled_toon.svg")) else ""
-fills = set(re.findall(r"fill:(rgb\([^)]*\))", svg))
+fills = set(re.findall(r'fill(?::|=")(rgb\([^)]*\))', svg))
 check(rc == 0 and len(fills) >= 3 and "<image" not in svg,
       "--fill-colors toon: the toon bands' colours, no raster (%d colours, %r)" % (len(fills), err.strip()))
 rc, _, err = run(part, "--sheet", "iso,front", "--fill-faces", "-o", out("filled_sheet.svg"))
 svg = open(out("filled_sheet.svg")).read() if os.path.isfile(out("filled_sheet.svg")) else ""
-check(rc == 0 and svg.count("fill:rgb(100%,100%,100%)") > 50,
+check(rc == 0 and len(WHITE_FILL.findall(svg)) > 50,
       "--sheet with --fill-faces: each view's faces filled (%r)" % err.strip())
 rc, _, err = run(part, "--style", "drawing", "--fill-faces", "--fill-colors", "surface",
                  "-o", out("filled_surface.pdf"))

@@ -319,6 +319,14 @@ def export_drawing(target, filename, fill_faces=False, fill_colors="face"):
                          % (fill_colors,))
     exporter = vtkNPRDrawingExporter()
     exporter.SetRenderer(_renderer_of(target))
+    # PyVista's chain of passes holds the style's pass: the exporter is given its parts, and in
+    # the drawing style, or with the faces filled, no image is embedded under the lines.
+    npr = npr_pass(target)
+    drawing = npr is not None and npr.GetStyle() == vtkNPRPass.DRAWING
+    if npr is not None:
+        exporter.SetDrawingPass(npr.GetDrawingPass())
+        exporter.SetEdgePass(npr.GetEdgePass())
+    exporter.SetEmbedImage(0 if drawing or fill_faces else -1)
     exporter.SetFileName(str(filename))
     exporter.SetFillFaces(bool(fill_faces))
     exporter.SetFillColors(_FILL_COLORS[fill_colors])

@@ -221,7 +221,8 @@ int Fill()
     std::cout << "outline, image " << embed << ": " << lines << " line strokes\n";
     NPR_CHECK(embed ? lines == 0
                     : lines >= 4 && text.find("<g class=\"npr-line\">") != std::string::npos &&
-          text.find("stroke:rgb(0%,0%,100%)") != std::string::npos,
+          (text.find("stroke:rgb(0%,0%,100%)") != std::string::npos ||       // Cairo 1.16
+            text.find("stroke=\"rgb(0%, 0%, 100%)\"") != std::string::npos), // 1.18
       (embed ? "line strokes over the image" : "the outline's blue strokes are missing"));
   }
   drawing->SetPass(nullptr);
