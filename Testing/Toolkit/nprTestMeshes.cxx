@@ -146,6 +146,36 @@ void nprLookAtOrigin(vtkCamera* camera, const double eye[3], double far)
   camera->SetClippingRange(1.0, far);
 }
 
+void nprParallelFromFront(vtkCamera* camera, double scale, double nearPlane, double farPlane)
+{
+  const double eye[3] = { 0.0, 0.0, 10.0 };
+  nprLookAtOrigin(camera, eye, farPlane);
+  camera->SetClippingRange(nearPlane, farPlane);
+  camera->ParallelProjectionOn();
+  camera->SetParallelScale(scale);
+}
+
+vtkSmartPointer<vtkActor> nprNaNTriangleActor()
+{
+  vtkNew<vtkPolyData> broken;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  points->InsertNextPoint(std::nan(""), 1, 0);
+  points->InsertNextPoint(0, 1, 0);
+  broken->SetPoints(points);
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType good[3] = { 0, 1, 3 }, bad[3] = { 1, 2, 3 };
+  polys->InsertNextCell(3, good);
+  polys->InsertNextCell(3, bad);
+  broken->SetPolys(polys);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(broken);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
 void nprViewFromCorner(vtkCamera* camera, const double eye[3], bool parallel)
 {
   nprLookAtOrigin(camera, eye, 10.0);

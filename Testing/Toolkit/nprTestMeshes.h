@@ -53,6 +53,11 @@ vtkSmartPointer<vtkActor> nprAddSphere(vtkRenderer* renderer, const double cente
 
 // The camera at eye, looking at the origin, y up, clipping range 1..far.
 void nprLookAtOrigin(vtkCamera* camera, const double eye[3], double far);
+// A parallel camera on +z at (0, 0, 10) looking at the origin, y up, `scale` the half height it
+// sees, its clipping planes `nearPlane` and `farPlane` from the eye.
+void nprParallelFromFront(vtkCamera* camera, double scale, double nearPlane, double farPlane);
+// An actor of a mesh of two triangles, one with a NaN corner (bad input).
+vtkSmartPointer<vtkActor> nprNaNTriangleActor();
 
 // The cube tests' camera: at eye, looking at the origin, y up, a view angle of 30 degrees or a
 // parallel scale of 1, clipping range 1..10.

@@ -7,6 +7,7 @@
 // faces, wound either way; colours; bad input.
 //
 // usage: TestDrawingLines CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
+#include "nprTestMeshes.h"
 #include "nprTesting.h"
 
 #include "vtkActor.h"
@@ -77,6 +78,20 @@ double Hit(const Triangle& tri, const Vec& from, const Vec& d, double margin)
   return u > margin && v > margin && u + v < 1.0 - margin && t > 0.0 ? t : -1.0;
 }
 
+// An actor of the mesh coloured by the cell colours `ids` (direct RGB scalars).
+vtkSmartPointer<vtkActor> AddCellColored(
+  vtkRenderer* renderer, vtkPolyData* mesh, vtkUnsignedCharArray* ids)
+{
+  mesh->GetCellData()->SetScalars(ids);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(mesh);
+  mapper->SetScalarModeToUseCellData();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
+  return actor;
+}
+
 // A mesh of separate triangles, each cell coloured with its id (direct RGB scalars).
 vtkSmartPointer<vtkActor> AddTriangles(vtkRenderer* renderer, const std::vector<Triangle>& tris)
 {
@@ -95,14 +110,7 @@ vtkSmartPointer<vtkActor> AddTriangles(vtkRenderer* renderer, const std::vector<
   vtkNew<vtkPolyData> mesh;
   mesh->SetPoints(points);
   mesh->SetPolys(cells);
-  mesh->GetCellData()->SetScalars(ids);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(mesh);
-  mapper->SetScalarModeToUseCellData();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  renderer->AddActor(actor);
-  return actor;
+  return AddCellColored(renderer, mesh, ids);
 }
 
 // The faces' polygons in painting order: image corners and colour.
@@ -245,6 +253,29 @@ int CompareWithRays(vtkRenderer* renderer, const std::vector<Triangle>& tris,
   return wrong;
 }
 
+// The faces of the renderer's scene (UpdateFaces) against the rays (CompareWithRays), printed.
+struct RayComparison
+{
+  size_t Polygons;
+  vtkIdType Splits;
+  int Decided, Wrong;
+};
+RayComparison PaintAndCompare(
+  vtkRenderer* renderer, const std::vector<Triangle>& tris, const char* name)
+{
+  vtkNew<vtkNPRDrawingLines> lines;
+  lines->SetRenderer(renderer);
+  lines->SetSize(Width, Height);
+  NPR_CHECK(lines->UpdateFaces(), "UpdateFaces failed");
+  const std::vector<Painted> painted = ReadFaces(lines->GetFaces());
+  RayComparison found{ painted.size(), lines->GetNumberOfFaceSplits(), 0, 0 };
+  found.Wrong = CompareWithRays(renderer, tris, painted, found.Decided);
+  std::cout << name << ": " << tris.size() << " triangles, " << found.Polygons << " polygons ("
+            << found.Splits << " splits); " << found.Decided << " samples decided, " << found.Wrong
+            << " wrong\n";
+  return found;
+}
+
 // Random big triangles in [-1, 1]^3 that pass through each other (cycles included), and a
 // sphere's triangles through them.
 std::vector<Triangle> RandomScene()
@@ -298,19 +329,11 @@ int FacesOrder(bool parallel)
   camera->SetParallelProjection(parallel);
   camera->SetParallelScale(1.5);
   camera->SetClippingRange(0.5, 10.0);
-  vtkNew<vtkNPRDrawingLines> lines;
-  lines->SetRenderer(renderer);
-  lines->SetSize(Width, Height);
-  NPR_CHECK(lines->UpdateFaces(), "UpdateFaces failed");
-  const std::vector<Painted> painted = ReadFaces(lines->GetFaces());
-  int decided = 0;
-  const int wrong = CompareWithRays(renderer, tris, painted, decided);
-  std::cout << (parallel ? "parallel" : "perspective") << ": " << tris.size() << " triangles, "
-            << painted.size() << " polygons (" << lines->GetNumberOfFaceSplits() << " splits); "
-            << decided << " samples decided, " << wrong << " wrong\n";
-  NPR_CHECK(decided > Width * Height / 9 / 2, "too few samples decided: " << decided);
-  NPR_CHECK(wrong == 0, wrong << " samples show a triangle behind the first one hit");
-  NPR_CHECK(lines->GetNumberOfFaceSplits() > 0, "triangles that cross were not split");
+  const RayComparison found =
+    PaintAndCompare(renderer, tris, parallel ? "parallel" : "perspective");
+  NPR_CHECK(found.Decided > Width * Height / 9 / 2, "too few samples decided: " << found.Decided);
+  NPR_CHECK(found.Wrong == 0, found.Wrong << " samples show a triangle behind the first one hit");
+  NPR_CHECK(found.Splits > 0, "triangles that cross were not split");
   return nprTestResult();
 }
 NPR_TEST_CASE("drawing-faces-order", [] { return FacesOrder(false); });
@@ -382,34 +405,18 @@ int FacesOrderTorus()
         tris.push_back(t);
       }
     }
-    mesh->GetCellData()->SetScalars(ids);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(mesh);
-    mapper->SetScalarModeToUseCellData();
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    renderer->AddActor(actor);
+    AddCellColored(renderer, mesh, ids);
   }
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(0.5, -3.5, 1.0);
   camera->SetFocalPoint(0.6, 0.0, 0.0);
   camera->SetViewUp(0, 0, 1);
   renderer->ResetCameraClippingRange();
-  vtkNew<vtkNPRDrawingLines> lines;
-  lines->SetRenderer(renderer);
-  lines->SetSize(Width, Height);
-  NPR_CHECK(lines->UpdateFaces(), "UpdateFaces failed");
-  const std::vector<Painted> painted = ReadFaces(lines->GetFaces());
-  int decided = 0;
-  const int wrong = CompareWithRays(renderer, tris, painted, decided);
-  std::cout << "torus and sphere: " << tris.size() << " triangles, " << painted.size()
-            << " polygons (" << lines->GetNumberOfFaceSplits() << " splits); " << decided
-            << " samples decided, " << wrong << " wrong\n";
-  NPR_CHECK(decided > 2000, "too few samples decided: " << decided);
-  NPR_CHECK(wrong == 0, wrong << " samples show a face behind the first one hit");
-  NPR_CHECK(painted.size() < 0.75 * tris.size(),
-    painted.size() << " polygons of " << tris.size()
-                   << " triangles: the back faces were not left out");
+  const RayComparison found = PaintAndCompare(renderer, tris, "torus and sphere");
+  NPR_CHECK(found.Decided > 2000, "too few samples decided: " << found.Decided);
+  NPR_CHECK(found.Wrong == 0, found.Wrong << " samples show a face behind the first one hit");
+  NPR_CHECK(found.Polygons < 0.75 * tris.size(),
+    found.Polygons << " polygons of " << tris.size() << " triangles: back faces not left out");
   return nprTestResult();
 }
 NPR_TEST_CASE("drawing-faces-order-torus", FacesOrderTorus);
@@ -493,24 +500,8 @@ int FacesErrors()
   lines->SetSize(Width, Height);
   NPR_CHECK(
     lines->UpdateFaces() && lines->GetFaces()->GetNumberOfCells() == 0, "an empty scene has faces");
-  vtkNew<vtkPolyData> broken;
-  vtkNew<vtkPoints> points;
-  points->InsertNextPoint(0, 0, 0);
-  points->InsertNextPoint(1, 0, 0);
-  points->InsertNextPoint(std::nan(""), 1, 0);
-  points->InsertNextPoint(0, 1, 0);
-  broken->SetPoints(points);
-  vtkNew<vtkCellArray> polys;
-  const vtkIdType good[3] = { 0, 1, 3 }, bad[3] = { 1, 2, 3 };
-  polys->InsertNextCell(3, good);
-  polys->InsertNextCell(3, bad);
-  broken->SetPolys(polys);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(broken);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
   vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
+  renderer->AddActor(nprNaNTriangleActor());
   renderer->ResetCamera(0, 1, 0, 1, -0.5, 0.5);
   lines->SetRenderer(renderer);
   NPR_CHECK(lines->UpdateFaces() && lines->GetFaces()->GetNumberOfCells() == 1,

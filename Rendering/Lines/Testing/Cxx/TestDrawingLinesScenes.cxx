@@ -239,23 +239,7 @@ int DrawingErrors()
   DrawingScene scene(200, 100);
   NPR_CHECK(scene.Strokes().empty() && scene.Lines->GetStrokes()->GetNumberOfPoints() == 0,
     "an empty scene has strokes");
-  vtkNew<vtkPolyData> broken;
-  vtkNew<vtkPoints> points;
-  points->InsertNextPoint(0, 0, 0);
-  points->InsertNextPoint(1, 0, 0);
-  points->InsertNextPoint(std::nan(""), 1, 0);
-  points->InsertNextPoint(0, 1, 0);
-  broken->SetPoints(points);
-  vtkNew<vtkCellArray> polys;
-  const vtkIdType good[3] = { 0, 1, 3 }, bad[3] = { 1, 2, 3 };
-  polys->InsertNextCell(3, good);
-  polys->InsertNextCell(3, bad);
-  broken->SetPolys(polys);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(broken);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  scene.Renderer->AddActor(actor);
+  scene.Renderer->AddActor(nprNaNTriangleActor());
   scene.Renderer->ResetCamera(0, 1, 0, 1, -0.5, 0.5);
   std::cout << "expected: one VTK warning about a face with NaN coordinates\n";
   const std::vector<Stroke> strokes = scene.Strokes();
@@ -297,12 +281,7 @@ int DrawingLinePrimitives()
     actor->GetProperty()->SetLineWidth(2.0);
     scene.Renderer->AddActor(actor);
   }
-  vtkCamera* camera = scene.Camera();
-  camera->ParallelProjectionOn();
-  camera->SetPosition(0.0, 0.0, 10.0);
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetParallelScale(1.5);
-  camera->SetClippingRange(5.0, 15.0);
+  nprParallelFromFront(scene.Camera(), 1.5, 5.0, 15.0);
   scene.Lines->HiddenLinesOn();
   const auto countLines = [](const std::vector<Stroke>& strokes)
   {

@@ -14,6 +14,7 @@
 //
 // usage: TestLineWeightsDepth depth|taper
 #include "nprTestImages.h"
+#include "nprTestMeshes.h"
 #include "nprTesting.h"
 
 #include "vtkActor.h"
@@ -101,12 +102,7 @@ struct DepthScene : nprPassScene
       square->Update();
       AddMesh(this->Renderer, square->GetOutput());
     }
-    vtkCamera* camera = this->Camera();
-    camera->ParallelProjectionOn();
-    camera->SetPosition(0.0, 0.0, 10.0);
-    camera->SetFocalPoint(0.0, 0.0, 0.0);
-    camera->SetParallelScale(1.5);
-    camera->SetClippingRange(9.9, 20.1);
+    nprParallelFromFront(this->Camera(), 1.5, 9.9, 20.1);
     vtkNPREdgePass* edges = this->Edges();
     edges->SetLineWidth(4.0);
     edges->SetNearLineScale(2.0);
@@ -184,12 +180,7 @@ int Taper()
 {
   nprPassScene scene(400, 300);
   AddMesh(scene.Renderer, Roof());
-  vtkCamera* camera = scene.Camera();
-  camera->ParallelProjectionOn();
-  camera->SetPosition(0.0, 0.0, 10.0);
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetParallelScale(1.5);
-  camera->SetClippingRange(5.0, 15.0);
+  nprParallelFromFront(scene.Camera(), 1.5, 5.0, 15.0);
   scene.Pass->SetStyleToDrawing();
   scene.Edges()->SetLineWidth(4.0);
   scene.Edges()->ContoursOff();
