@@ -46,22 +46,8 @@ void AddMesh(vtkRenderer* renderer, vtkPolyData* mesh)
   renderer->AddActor(actor);
 }
 
-// The ink (1 - red / 255 summed) along row y from x0 to x1 of an image on a white ground.
-double InkAcross(vtkImageData* image, int y, int x0, int x1)
-{
-  const int width = image->GetDimensions()[0];
-  const int components = image->GetNumberOfScalarComponents();
-  const auto* rgb = static_cast<const unsigned char*>(image->GetScalarPointer());
-  double ink = 0.0;
-  for (int x = x0; x < x1; ++x)
-  {
-    ink += 1.0 - rgb[components * (y * width + x)] / 255.0;
-  }
-  return ink;
-}
-
-// The same down column x from y0 to y1.
-double InkDown(vtkImageData* image, int x, int y0, int y1)
+// The ink (1 - red / 255 summed) in the box [x0, x1) x [y0, y1) of an image on a white ground.
+double InkIn(vtkImageData* image, int x0, int x1, int y0, int y1)
 {
   const int width = image->GetDimensions()[0];
   const int components = image->GetNumberOfScalarComponents();
@@ -69,20 +55,22 @@ double InkDown(vtkImageData* image, int x, int y0, int y1)
   double ink = 0.0;
   for (int y = y0; y < y1; ++y)
   {
-    ink += 1.0 - rgb[components * (y * width + x)] / 255.0;
+    for (int x = x0; x < x1; ++x)
+    {
+      ink += 1.0 - rgb[components * (y * width + x)] / 255.0;
+    }
   }
   return ink;
 }
 
-// The ink in the box [x0, x1) x [y0, y1).
-double InkIn(vtkImageData* image, int x0, int x1, int y0, int y1)
+// Along row y from x0 to x1; down column x from y0 to y1.
+double InkAcross(vtkImageData* image, int y, int x0, int x1)
 {
-  double ink = 0.0;
-  for (int x = x0; x < x1; ++x)
-  {
-    ink += InkDown(image, x, y0, y1);
-  }
-  return ink;
+  return InkIn(image, x0, x1, y, y + 1);
+}
+double InkDown(vtkImageData* image, int x, int y0, int y1)
+{
+  return InkIn(image, x, x + 1, y0, y1);
 }
 
 // Two 2 x 2 squares facing +z, the left at z = 0 (near), the right at z = -10 (far), seen by a
