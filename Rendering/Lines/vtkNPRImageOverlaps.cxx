@@ -80,22 +80,21 @@ struct Grid
     return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(this->Size - 1)));
   }
 };
-}
 
-std::vector<char> vtkNPRMarkImageOverlaps(const std::vector<vtkNPRImageTriangle>& triangles)
+// The triangles' boxes and the box of them all; false when one is unprojected or not finite.
+bool BoxTriangles(
+  const std::vector<vtkNPRImageTriangle>& triangles, std::vector<Box>& boxes, Box& all)
 {
-  const size_t n = triangles.size();
-  std::vector<char> marks(n, 0);
-  std::vector<Box> boxes(n);
-  Box all = { { 1e300, 1e300 }, { -1e300, -1e300 } };
-  for (size_t i = 0; i < n; ++i)
+  boxes.resize(triangles.size());
+  all = { { 1e300, 1e300 }, { -1e300, -1e300 } };
+  for (size_t i = 0; i < triangles.size(); ++i)
   {
     boxes[i] = BoxOf(triangles[i]);
     const bool finite = std::isfinite(boxes[i].Low[0]) && std::isfinite(boxes[i].Low[1]) &&
       std::isfinite(boxes[i].High[0]) && std::isfinite(boxes[i].High[1]);
     if (triangles[i].Unprojected || !finite)
     {
-      return std::vector<char>(n, 1); // its image is unbounded: every triangle may be under it
+      return false;
     }
     for (int axis = 0; axis < 2; ++axis)
     {
@@ -103,85 +102,124 @@ std::vector<char> vtkNPRMarkImageOverlaps(const std::vector<vtkNPRImageTriangle>
       all.High[axis] = std::max(all.High[axis], boxes[i].High[axis]);
     }
   }
-  if (n < 2 || !(all.High[0] >= all.Low[0]))
+  return true;
+}
+
+// The grid's cells' triangles: cell c's are Members[First[c], First[c + 1]), counted then filled
+// (one array, no vector a cell). False when they would exceed EntriesPerTriangle a triangle.
+struct CellLists
+{
+  std::vector<std::uint32_t> First, Members;
+  bool Fill(const Grid& grid, const std::vector<Box>& boxes)
+  {
+    const size_t cells = static_cast<size_t>(grid.Size) * grid.Size;
+    this->First.assign(cells + 1, 0);
+    size_t entries = 0;
+    for (const Box& box : boxes)
+    {
+      int r[4];
+      grid.CellRange(box, r);
+      for (int y = r[1]; y <= r[3]; ++y)
+      {
+        for (int x = r[0]; x <= r[2]; ++x)
+        {
+          ++this->First[static_cast<size_t>(y) * grid.Size + x + 1];
+        }
+      }
+      entries += static_cast<size_t>(r[2] - r[0] + 1) * (r[3] - r[1] + 1);
+      if (entries > EntriesPerTriangle * boxes.size())
+      {
+        return false;
+      }
+    }
+    for (size_t c = 0; c < cells; ++c)
+    {
+      this->First[c + 1] += this->First[c];
+    }
+    this->Members.resize(entries);
+    std::vector<std::uint32_t> next(this->First.begin(), this->First.end() - 1);
+    for (size_t i = 0; i < boxes.size(); ++i)
+    {
+      int r[4];
+      grid.CellRange(boxes[i], r);
+      for (int y = r[1]; y <= r[3]; ++y)
+      {
+        for (int x = r[0]; x <= r[2]; ++x)
+        {
+          this->Members[next[static_cast<size_t>(y) * grid.Size + x]++] =
+            static_cast<std::uint32_t>(i);
+        }
+      }
+    }
+    return true;
+  }
+};
+
+// Marks the pairs of one cell that overlap; each pair once, in the cell of the low corner of
+// their boxes' common part. A crowded cell marks all its triangles.
+void MarkCell(size_t c, const CellLists& lists, const Grid& grid,
+  const std::vector<vtkNPRImageTriangle>& triangles, const std::vector<Box>& boxes,
+  std::vector<char>& marks)
+{
+  const std::uint32_t* begin = lists.Members.data() + lists.First[c];
+  const size_t count = lists.First[c + 1] - lists.First[c];
+  if (count > CrowdedCell)
+  {
+    std::for_each(begin, begin + count, [&](std::uint32_t i) { marks[i] = 1; });
+    return;
+  }
+  for (size_t a = 0; a < count; ++a)
+  {
+    for (size_t b = a + 1; b < count; ++b)
+    {
+      const std::uint32_t i = begin[a], j = begin[b];
+      const Box &p = boxes[i], &q = boxes[j];
+      if ((marks[i] && marks[j]) || p.High[0] <= q.Low[0] || q.High[0] <= p.Low[0] ||
+        p.High[1] <= q.Low[1] || q.High[1] <= p.Low[1])
+      {
+        continue;
+      }
+      const int cx = grid.Cell(std::max(p.Low[0], q.Low[0]), 0);
+      const int cy = grid.Cell(std::max(p.Low[1], q.Low[1]), 1);
+      if (static_cast<size_t>(cy) * grid.Size + cx == c &&
+        InteriorsOverlap(triangles[i], triangles[j]))
+      {
+        marks[i] = marks[j] = 1;
+      }
+    }
+  }
+}
+}
+
+std::vector<char> vtkNPRMarkImageOverlaps(const std::vector<vtkNPRImageTriangle>& triangles)
+{
+  const size_t n = triangles.size();
+  std::vector<Box> boxes;
+  Box all;
+  if (!BoxTriangles(triangles, boxes, all))
+  {
+    return std::vector<char>(n, 1); // an image unbounded: every triangle may be under it
+  }
+  std::vector<char> marks(n, 0);
+  if (n < 2)
   {
     return marks;
   }
-  Grid grid;
+  Grid grid; // about one triangle a cell
   grid.Size = static_cast<int>(std::clamp(std::sqrt(static_cast<double>(n)), 1.0, 2048.0));
   for (int axis = 0; axis < 2; ++axis)
   {
     grid.Origin[axis] = all.Low[axis];
     grid.CellSize[axis] = std::max((all.High[axis] - all.Low[axis]) / grid.Size, 1e-12);
   }
-  // The cells' triangles, counted then filled (one array, no vector a cell).
-  const size_t cells = static_cast<size_t>(grid.Size) * grid.Size;
-  std::vector<std::uint32_t> first(cells + 1, 0);
-  size_t entries = 0;
-  for (size_t i = 0; i < n; ++i)
+  CellLists lists;
+  if (!lists.Fill(grid, boxes))
   {
-    int r[4];
-    grid.CellRange(boxes[i], r);
-    for (int y = r[1]; y <= r[3]; ++y)
-    {
-      for (int x = r[0]; x <= r[2]; ++x)
-      {
-        ++first[static_cast<size_t>(y) * grid.Size + x + 1];
-        ++entries;
-      }
-    }
-    if (entries > EntriesPerTriangle * n)
-    {
-      return std::vector<char>(n, 1);
-    }
+    return std::vector<char>(n, 1); // huge triangles over every cell
   }
-  for (size_t c = 0; c < cells; ++c)
+  for (size_t c = 0; c + 1 < lists.First.size(); ++c)
   {
-    first[c + 1] += first[c];
-  }
-  std::vector<std::uint32_t> members(entries), fill(first.begin(), first.end() - 1);
-  for (size_t i = 0; i < n; ++i)
-  {
-    int r[4];
-    grid.CellRange(boxes[i], r);
-    for (int y = r[1]; y <= r[3]; ++y)
-    {
-      for (int x = r[0]; x <= r[2]; ++x)
-      {
-        members[fill[static_cast<size_t>(y) * grid.Size + x]++] = static_cast<std::uint32_t>(i);
-      }
-    }
-  }
-  // Each pair once: in the cell of the low corner of their boxes' common part.
-  for (size_t c = 0; c < cells; ++c)
-  {
-    const std::uint32_t* begin = members.data() + first[c];
-    const size_t count = first[c + 1] - first[c];
-    if (count > CrowdedCell)
-    {
-      std::for_each(begin, begin + count, [&](std::uint32_t i) { marks[i] = 1; });
-      continue;
-    }
-    for (size_t a = 0; a < count; ++a)
-    {
-      for (size_t b = a + 1; b < count; ++b)
-      {
-        const std::uint32_t i = begin[a], j = begin[b];
-        const Box &p = boxes[i], &q = boxes[j];
-        if ((marks[i] && marks[j]) || p.High[0] <= q.Low[0] || q.High[0] <= p.Low[0] ||
-          p.High[1] <= q.Low[1] || q.High[1] <= p.Low[1])
-        {
-          continue;
-        }
-        const int cx = grid.Cell(std::max(p.Low[0], q.Low[0]), 0);
-        const int cy = grid.Cell(std::max(p.Low[1], q.Low[1]), 1);
-        if (static_cast<size_t>(cy) * grid.Size + cx == c &&
-          InteriorsOverlap(triangles[i], triangles[j]))
-        {
-          marks[i] = marks[j] = 1;
-        }
-      }
-    }
+    MarkCell(c, lists, grid, triangles, boxes, marks);
   }
   return marks;
 }

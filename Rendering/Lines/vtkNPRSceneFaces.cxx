@@ -382,6 +382,70 @@ bool AppendPolygon(const std::vector<glm::dvec3>& polygon, const vtkNPRSceneView
 }
 }
 
+namespace
+{
+// The output's arrays, a polygon appended at a time.
+class FaceArrays
+{
+public:
+  FaceArrays()
+  {
+    this->Points->SetDataTypeToDouble();
+    this->Image->SetName("ImageCoordinates");
+    this->Image->SetNumberOfComponents(3);
+    for (auto* colors : { this->Unlit.Get(), this->Ambient.Get(), this->Diffuse.Get() })
+    {
+      colors->SetNumberOfComponents(3);
+    }
+    this->Unlit->SetName("Colors");
+    this->Ambient->SetName("AmbientColors");
+    this->Diffuse->SetName("DiffuseColors");
+    this->Normals->SetName("Normals");
+    this->Normals->SetNumberOfComponents(3);
+  }
+
+  // A piece of a candidate, clipped to the depth range; nothing if none of it shows.
+  void Append(std::vector<glm::dvec3> corners, const Candidate& from, const vtkNPRSceneView& view)
+  {
+    if (AppendPolygon(
+          ClipToDepthRange(std::move(corners), view), view, this->Points, this->Image, this->Polys))
+    {
+      this->Unlit->InsertNextTypedTuple(from.Fill.Unlit.data());
+      this->Ambient->InsertNextTypedTuple(from.Fill.Ambient.data());
+      this->Diffuse->InsertNextTypedTuple(from.Fill.Diffuse.data());
+      const std::array<float, 3> normal = FacingNormal(from.Corners.data(), view);
+      this->Normals->InsertNextTypedTuple(normal.data());
+    }
+  }
+
+  vtkIdType Store(vtkPolyData* output, const vtkNPRSceneView& view)
+  {
+    output->Initialize();
+    output->SetPoints(this->Points);
+    output->SetPolys(this->Polys);
+    output->GetPointData()->AddArray(this->Image);
+    output->GetCellData()->AddArray(this->Unlit);
+    output->GetCellData()->AddArray(this->Ambient);
+    output->GetCellData()->AddArray(this->Diffuse);
+    output->GetCellData()->SetNormals(this->Normals);
+    vtkNew<vtkIntArray> imageSize;
+    imageSize->SetName("ImageSize");
+    imageSize->SetNumberOfComponents(2);
+    const int size[2] = { view.Width, view.Height };
+    imageSize->InsertNextTypedTuple(size);
+    output->GetFieldData()->AddArray(imageSize);
+    return this->Polys->GetNumberOfCells();
+  }
+
+private:
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkCellArray> Polys;
+  vtkNew<vtkDoubleArray> Image;
+  vtkNew<vtkUnsignedCharArray> Unlit, Ambient, Diffuse;
+  vtkNew<vtkFloatArray> Normals;
+};
+}
+
 vtkNPRSceneFacesCounts vtkNPRSceneFaces(
   const std::vector<vtkNPRMeshInstance>& meshes, const vtkNPRSceneView& view, vtkPolyData* output)
 {
@@ -410,38 +474,12 @@ vtkNPRSceneFacesCounts vtkNPRSceneFaces(
   order.Build();
   counts.Splits = order.GetNumberOfSplits();
 
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> polys;
-  vtkNew<vtkDoubleArray> image;
-  image->SetName("ImageCoordinates");
-  image->SetNumberOfComponents(3);
-  vtkNew<vtkUnsignedCharArray> cellColors, ambient, diffuse;
-  for (auto* colors : { cellColors.Get(), ambient.Get(), diffuse.Get() })
-  {
-    colors->SetNumberOfComponents(3);
-  }
-  cellColors->SetName("Colors");
-  ambient->SetName("AmbientColors");
-  diffuse->SetName("DiffuseColors");
-  vtkNew<vtkFloatArray> normals;
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  const auto paint = [&](std::vector<glm::dvec3> corners, const Candidate& from)
-  {
-    if (AppendPolygon(ClipToDepthRange(std::move(corners), view), view, points, image, polys))
-    {
-      cellColors->InsertNextTypedTuple(from.Fill.Unlit.data());
-      ambient->InsertNextTypedTuple(from.Fill.Ambient.data());
-      diffuse->InsertNextTypedTuple(from.Fill.Diffuse.data());
-      const std::array<float, 3> normal = FacingNormal(from.Corners.data(), view);
-      normals->InsertNextTypedTuple(normal.data());
-    }
-  };
+  FaceArrays arrays;
   for (std::uint32_t i : free)
   {
     const double* x = candidates[i].Corners.data();
-    paint({ vtkNPRVector(x), vtkNPRVector(x + 3), vtkNPRVector(x + 6) }, candidates[i]);
+    arrays.Append(
+      { vtkNPRVector(x), vtkNPRVector(x + 3), vtkNPRVector(x + 6) }, candidates[i], view);
   }
   for (std::uint32_t polygon : order.BackToFront(view.Eye, view.Direction, view.Parallel))
   {
@@ -450,22 +488,8 @@ vtkNPRSceneFacesCounts vtkNPRSceneFaces(
     {
       order.GetCorner(polygon, static_cast<int>(k), glm::value_ptr(corners[k]));
     }
-    paint(std::move(corners), candidates[order.GetTag(polygon)]);
+    arrays.Append(std::move(corners), candidates[order.GetTag(polygon)], view);
   }
-  output->Initialize();
-  output->SetPoints(points);
-  output->SetPolys(polys);
-  output->GetPointData()->AddArray(image);
-  output->GetCellData()->AddArray(cellColors);
-  output->GetCellData()->AddArray(ambient);
-  output->GetCellData()->AddArray(diffuse);
-  output->GetCellData()->SetNormals(normals);
-  vtkNew<vtkIntArray> imageSize;
-  imageSize->SetName("ImageSize");
-  imageSize->SetNumberOfComponents(2);
-  const int size[2] = { view.Width, view.Height };
-  imageSize->InsertNextTypedTuple(size);
-  output->GetFieldData()->AddArray(imageSize);
-  counts.Polygons = polys->GetNumberOfCells();
+  counts.Polygons = arrays.Store(output, view);
   return counts;
 }
