@@ -4,14 +4,16 @@
 
     PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 \
         Documentation/images/drawing/isosurface_drawing.py -o isosurface.svg [--hidden-lines]
-        [--smooth-silhouettes]
+        [--smooth-silhouettes] [--fill-faces face|surface|toon] [--outline]
 
 The field is the density of three Gaussian sources (vtkGaussianSplatter, 130^3 samples), shown by
 two isosurfaces (vtkContourFilter): the outer one, at 0.15, cut open by the plane z = 0.3
 (vtkClipPolyData), and the inner one, at 0.6, one lobe around each source. The renderer draws
 them through vtkNPRPass in the drawing style (hidden lines and smooth silhouettes on request) and
-vtkNPRDrawingExporter
-writes the renderer's lines; the format comes from the extension (.svg, .pdf, .ps, .eps).
+vtkNPRDrawingExporter writes the renderer's lines, with --fill-faces the faces filled under them
+(the outer surface light blue, the inner one orange), and with --outline the field's outline box
+(its back edges hidden behind the surfaces); the format comes from the extension (.svg, .pdf,
+.ps, .eps).
 make_images.sh in this folder runs it for drawing.md's pictures.
 """
 import argparse
@@ -22,6 +24,7 @@ from vtknpr import vtkNPRDrawingExporter, vtkNPRPass, vtkNPRRenderWindowFactory
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPlane, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkClipPolyData, vtkContourFilter
+from vtkmodules.vtkFiltersModeling import vtkOutlineFilter
 from vtkmodules.vtkImagingHybrid import vtkGaussianSplatter
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL object factory overrides)
@@ -34,12 +37,15 @@ def parse_arguments():
     parser.add_argument("--hidden-lines", action="store_true", help="also draw the hidden lines, dashed")
     parser.add_argument("--smooth-silhouettes", action="store_true",
                         help="silhouettes as the smooth contours of the isosurfaces' normals")
+    parser.add_argument("--fill-faces", choices=("face", "surface", "toon"),
+                        help="fill the faces under the lines, in these colours")
+    parser.add_argument("--outline", action="store_true", help="draw the field's outline box")
     parser.add_argument("--azimuth", type=float, default=20.0)
     parser.add_argument("--elevation", type=float, default=35.0)
     return parser.parse_args()
 
 
-def isosurface_actor(field, level, clip_above=None):
+def isosurface_actor(field, level, color, clip_above=None):
     """The isosurface of `field` at `level`, without its part above z = clip_above if given."""
     contour = vtkContourFilter()
     contour.SetInputConnection(field.GetOutputPort())
@@ -59,10 +65,22 @@ def isosurface_actor(field, level, clip_above=None):
     mapper.SetInputConnection(port)
     actor = vtkActor()
     actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(*color)
     return actor
 
 
-def isosurface_renderer(azimuth, elevation):
+def outline_actor(field):
+    outline = vtkOutlineFilter()
+    outline.SetInputConnection(field.GetOutputPort())
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(outline.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(0.1, 0.2, 0.5)
+    return actor
+
+
+def isosurface_renderer(azimuth, elevation, outline):
     sources = vtkPoints()
     weights = vtkDoubleArray()
     for x, y, weight in ((-1.3, -0.7, 1.0), (1.3, -0.7, 1.0), (0.0, 1.3, 0.8)):
@@ -81,8 +99,10 @@ def isosurface_renderer(azimuth, elevation):
     field.CappingOff()
     renderer = vtkRenderer()
     renderer.SetBackground(1.0, 1.0, 1.0)
-    renderer.AddActor(isosurface_actor(field, 0.15, clip_above=0.3))
-    renderer.AddActor(isosurface_actor(field, 0.6))
+    renderer.AddActor(isosurface_actor(field, 0.15, (0.65, 0.8, 0.95), clip_above=0.3))
+    renderer.AddActor(isosurface_actor(field, 0.6, (1.0, 0.6, 0.25)))
+    if outline:
+        renderer.AddActor(outline_actor(field))
     renderer.ResetCamera()
     renderer.GetActiveCamera().Azimuth(azimuth)
     renderer.GetActiveCamera().Elevation(elevation)
@@ -98,7 +118,7 @@ def main():
     if window is None:
         sys.exit("isosurface_drawing: error: no headless render window")
     window.SetSize(width, height)
-    renderer = isosurface_renderer(args.azimuth, args.elevation)
+    renderer = isosurface_renderer(args.azimuth, args.elevation, args.outline)
     window.AddRenderer(renderer)
     npr = vtkNPRPass()
     npr.SetStyleToDrawing()
@@ -110,12 +130,17 @@ def main():
     exporter = vtkNPRDrawingExporter()
     exporter.SetRenderWindow(window)
     exporter.SetFileName(args.output)
+    if args.fill_faces:
+        exporter.FillFacesOn()
+        exporter.SetFillColors({"face": vtkNPRDrawingExporter.FACE_COLOR,
+                                "surface": vtkNPRDrawingExporter.SURFACE_COLORS,
+                                "toon": vtkNPRDrawingExporter.TOON_BANDS}[args.fill_faces])
     if not exporter.Write():
         sys.exit("isosurface_drawing: error: " + exporter.GetErrorMessage())
     lines = exporter.GetDrawingLines()
-    print("isosurface_drawing: wrote %s: %d strokes (%d hidden) from %d feature edges"
-          % (args.output, exporter.GetNumberOfStrokes(), exporter.GetNumberOfStrokes(0),
-             lines.GetNumberOfFeatureEdges()))
+    print("isosurface_drawing: wrote %s: %d strokes (%d hidden) from %d feature edges, %d faces"
+          " filled" % (args.output, exporter.GetNumberOfStrokes(), exporter.GetNumberOfStrokes(0),
+                       lines.GetNumberOfFeatureEdges(), exporter.GetNumberOfFilledFaces()))
     renderer.SetPass(None)
     npr.ReleaseGraphicsResources(window)
     return 0

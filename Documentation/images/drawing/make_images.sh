@@ -38,6 +38,8 @@ rasterise rotor_hidden
 # Filled faces: the CAD part's faces as filled regions under its lines.
 render cad_part_filled.svg $cad --style drawing --hidden-lines --fill-faces --background 0.82,0.86,0.9
 rasterise cad_part_filled
+render cad_part_toon_filled.svg $cad --style toon --fill-faces --fill-colors toon
+rasterise cad_part_toon_filled
 
 # A drawing sheet of the CAD part: four views on A4, rasterised at the page's size in points.
 render cad_part_sheet.svg Testing/Data/cad_part.vtp --sheet iso,front,top,right --hidden-lines
