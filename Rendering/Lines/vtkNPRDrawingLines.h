@@ -6,7 +6,8 @@
  *          technical drawing (hidden-line removal).
  *
  * For a renderer (its active camera and its visible, opaque vtkActors drawn by a
- * vtkPolyDataMapper, with their actor matrices: the scene vtkNPRReferenceMask sees) and an image
+ * vtkPolyDataMapper, or a vtkDataSetMapper of a vtkPolyData as PyVista's meshes are, with their
+ * actor matrices: the scene vtkNPRReferenceMask sees) and an image
  * size, Update() computes on the CPU, in double precision:
  * - the silhouette, crease, boundary and non-manifold edges of every actor (vtkNPRFeatureLines,
  *   one per actor, kept between updates), in world coordinates, clipped to the view frustum;
@@ -48,7 +49,7 @@
  * exact to the bisection's 1/1000 pixel, OcclusionEpsilon and double rounding; a smooth contour's
  * samples ignore the faces about its triangle, so a fold of the mesh within an edge length of
  * it does not hide it (vtkNPRReferenceMask). Not included, as in vtkNPRReferenceMask:
- * translucent actors, props that are not vtkActors with a vtkPolyDataMapper, mapper clipping
+ * translucent actors, props that are not vtkActors with those mappers, mapper clipping
  * planes. The actors inside assemblies and the drawn level of a vtkLODProp3D are included
  * (vtkNPRPropParts).
  *

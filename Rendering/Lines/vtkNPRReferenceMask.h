@@ -5,7 +5,8 @@
  * @brief   The ground truth of a line drawing: a renderer's visible feature lines, as a pixel mask.
  *
  * For a renderer (its active camera and its visible, opaque vtkActors drawn by a
- * vtkPolyDataMapper, with their actor matrices) and an image size, Update() computes on the CPU,
+ * vtkPolyDataMapper, or a vtkDataSetMapper of a vtkPolyData, with their actor matrices) and an
+ * image size, Update() computes on the CPU,
  * in double precision and without OpenGL:
  * - the feature lines of each actor's mesh, with a vtkNPRFeatureLines per actor (kept between
  *   updates, so each mesh's adjacency is built once): silhouettes for the camera taken into the
@@ -42,7 +43,7 @@
  * shorter than SampleSpacing between two samples can be missed, and a line crossing a pixel's
  * corner by less than that can be missed in that pixel. Not included: lines of translucent actors
  * (and translucent actors do not hide lines, as they do not in vtkNPREdgePass's G-buffer), props
- * that are not vtkActors with a vtkPolyDataMapper (volumes, images, glyph mappers) and mapper
+ * that are not vtkActors with those mappers (volumes, images, glyph mappers) and mapper
  * clipping planes; the parts of assemblies and a vtkLODProp3D's drawn level are included
  * (vtkNPRPropParts). Polygons are split into triangle fans
  * for the visibility test (exact for convex planar polygons).

@@ -11,6 +11,7 @@
 #include "vtkCellData.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkDataSetMapper.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNPRFeatureLines.h"
@@ -103,12 +104,14 @@ bool ShowsSurfaces(vtkActor* actor)
 }
 
 // One actor as it is drawn, with the matrix it is drawn with: visible, opaque, surfaces
-// (ShowsSurfaces) through a vtkPolyDataMapper; each polygonal leaf of a composite input
-// (ParaView's representations, vtkCompositePolyDataMapper2) is a mesh of its actor.
+// (ShowsSurfaces) through a vtkPolyDataMapper, or a vtkDataSetMapper of a vtkPolyData (PyVista's
+// meshes); each polygonal leaf of a composite input (ParaView's representations,
+// vtkCompositePolyDataMapper2) is a mesh of its actor.
 void AddDrawnMeshes(vtkActor* actor, vtkMatrix4x4* matrix, std::vector<vtkNPRMeshInstance>& meshes)
 {
-  auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
-  if (!mapper || !ShowsSurfaces(actor))
+  vtkMapper* mapper = actor->GetMapper();
+  if ((!vtkPolyDataMapper::SafeDownCast(mapper) && !vtkDataSetMapper::SafeDownCast(mapper)) ||
+    !ShowsSurfaces(actor))
   {
     return;
   }

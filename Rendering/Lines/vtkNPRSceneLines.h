@@ -26,7 +26,8 @@ class vtkRenderer;
 // window. False when there is none.
 bool vtkNPRImageSize(vtkRenderer* renderer, const int size[2], int& width, int& height);
 
-// The meshes of the renderer's visible, opaque vtkActors drawn by a vtkPolyDataMapper as surfaces,
+// The meshes of the renderer's visible, opaque vtkActors drawn by a vtkPolyDataMapper (or a
+// vtkDataSetMapper of a vtkPolyData) as surfaces,
 // those inside assemblies included (vtkNPRPropParts), each polygonal leaf of a composite input a
 // mesh of its actor; their inputs brought up to date.
 std::vector<vtkNPRMeshInstance> vtkNPRDrawnMeshes(vtkRenderer* renderer);
@@ -86,10 +87,10 @@ public:
   vtkNPRSceneLines();
   ~vtkNPRSceneLines();
 
-  // The visible, opaque vtkActors of the renderer drawn by a vtkPolyDataMapper (their inputs
-  // brought up to date; each polygonal leaf of a composite input), their feature lines for the
-  // renderer's camera in world coordinates, and the occlusion structure (built again only when the
-  // actors, meshes or matrices changed).
+  // The visible, opaque vtkActors of the renderer drawn by a vtkPolyDataMapper or vtkDataSetMapper
+  // (their inputs brought up to date; each polygonal leaf of a composite input), their feature
+  // lines for the renderer's camera in world coordinates, and the occlusion structure (built again
+  // only when the actors, meshes or matrices changed).
   void Update(vtkRenderer* renderer, const Settings& settings, int trianglesPerLocator);
 
   const std::vector<Segment>& GetSegments() const { return this->Segments; }

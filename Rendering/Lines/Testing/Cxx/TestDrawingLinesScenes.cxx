@@ -7,6 +7,7 @@
 //
 // usage: TestDrawingLines CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprFeatureLineTesting.h"
+#include "nprTestMeshes.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -15,6 +16,7 @@
 #include "vtkCellData.h"
 #include "vtkCylinderSource.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetMapper.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
@@ -337,4 +339,39 @@ int DrawingLinePrimitives()
   return nprTestResult();
 }
 NPR_TEST_CASE("drawing-line-primitives", DrawingLinePrimitives);
+
+// A mesh drawn by a vtkDataSetMapper (as PyVista draws its meshes) has the strokes and faces of
+// the same mesh drawn by a vtkPolyDataMapper.
+int DrawingDataSetMapper()
+{
+  std::vector<size_t> strokes, faces;
+  for (int dataSet = 0; dataSet < 2; ++dataSet)
+  {
+    DrawingScene scene(300, 200);
+    vtkSmartPointer<vtkMapper> mapper;
+    if (dataSet)
+    {
+      mapper = vtkSmartPointer<vtkDataSetMapper>::New();
+    }
+    else
+    {
+      mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    }
+    mapper->SetInputDataObject(CubeSource());
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    scene.Renderer->AddActor(actor);
+    const double eye[3] = { 2.0, 1.5, 3.0 };
+    nprViewFromCorner(scene.Camera(), eye, false);
+    strokes.push_back(scene.Strokes().size());
+    NPR_CHECK(scene.Lines->UpdateFaces(), "UpdateFaces failed");
+    faces.push_back(static_cast<size_t>(scene.Lines->GetFaces()->GetNumberOfCells()));
+  }
+  std::cout << "vtkPolyDataMapper: " << strokes[0] << " strokes, " << faces[0]
+            << " faces; vtkDataSetMapper: " << strokes[1] << ", " << faces[1] << "\n";
+  NPR_CHECK(strokes[0] > 0 && faces[0] > 0 && strokes[1] == strokes[0] && faces[1] == faces[0],
+    "the vtkDataSetMapper's cube has other strokes or faces");
+  return nprTestResult();
+}
+NPR_TEST_CASE("drawing-dataset-mapper", DrawingDataSetMapper);
 }
