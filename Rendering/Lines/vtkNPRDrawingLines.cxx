@@ -12,6 +12,7 @@
 #include "vtkNPRFeatureLines.h"
 #include "vtkNPRSceneFaces.h"
 #include "vtkNPRSceneLines.h"
+#include "vtkNPRScenePoints.h"
 #include "vtkNPRVectors.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -472,6 +473,7 @@ void AddLineLooks(vtkPolyData* strokes, const std::vector<int>& meshes,
 struct vtkNPRDrawingLines::Internals
 {
   vtkNew<vtkPolyData> Strokes;
+  vtkNew<vtkPolyData> Points;
   vtkNew<vtkPolyData> Faces;
   vtkIdType FaceSplits = 0;
   double FacesTime = 0.0;
@@ -491,6 +493,11 @@ vtkNPRDrawingLines::~vtkNPRDrawingLines() = default;
 vtkPolyData* vtkNPRDrawingLines::GetStrokes()
 {
   return this->Internal->Strokes;
+}
+
+vtkPolyData* vtkNPRDrawingLines::GetVisiblePoints()
+{
+  return this->Internal->Points;
 }
 
 vtkPolyData* vtkNPRDrawingLines::GetFaces()
@@ -551,6 +558,7 @@ bool vtkNPRDrawingLines::Update()
   internal.StrokeCount = 0;
   internal.ChainTime = 0.0;
   internal.Strokes->Initialize();
+  internal.Points->Initialize();
   int width, height;
   if (!this->StartUpdate(width, height))
   {
@@ -569,6 +577,12 @@ bool vtkNPRDrawingLines::Update()
     segments, view, scene.GetOccluders(), this->SampleSpacing, this->OcclusionEpsilon);
   this->RayCasts = visibility.RayCasts;
   const std::vector<Piece> pieces = MakePieces(segments, view, visibility, this->HiddenLines);
+  if (this->PointPrimitives)
+  {
+    this->RayCasts +=
+      vtkNPRScenePoints(scene.GetMeshes(), vtkNPRDrawnMeshes(this->Renderer, vtkNPRDrawnAs::Points),
+        view, scene.GetOccluders(), this->OcclusionEpsilon, internal.Points);
+  }
   this->VisibilityTime = Seconds(start);
 
   // Chain the pieces of one kind through the nodes where exactly two of that kind meet.
@@ -593,5 +607,6 @@ void vtkNPRDrawingLines::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "HiddenLines: " << this->HiddenLines << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "LinePrimitives: " << this->LinePrimitives << "\n";
+  os << indent << "PointPrimitives: " << this->PointPrimitives << "\n";
   os << indent << "NumberOfStrokes: " << this->Internal->StrokeCount << "\n";
 }

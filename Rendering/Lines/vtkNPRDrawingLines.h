@@ -107,6 +107,19 @@ public:
 
   ///@{
   /**
+   * Also compute the scene's point primitives the camera sees (off by default), as
+   * GetVisiblePoints(): the vertex cells of the meshes drawn as surfaces, and the points of
+   * the meshes drawn with the Points representation (a point cloud), each inside the view and
+   * not behind a surface (the lines' ray test, at the point); a hidden point is left out. Vector
+   * files without the window's image draw them so (vtkNPRDrawingExporter).
+   */
+  vtkSetMacro(PointPrimitives, bool);
+  vtkGetMacro(PointPrimitives, bool);
+  vtkBooleanMacro(PointPrimitives, bool);
+  ///@}
+
+  ///@{
+  /**
    * The largest distance in pixels between the visibility samples of an edge (default 1,
    * clamped to [0.05, 16]).
    */
@@ -123,6 +136,16 @@ public:
    * The strokes of the last Update() (see the class description).
    */
   vtkPolyData* GetStrokes();
+
+  /**
+   * The visible point primitives of the last Update() with PointPrimitives on (else empty): a
+   * vtkPolyData of one vertex cell a point, points in world coordinates, point data
+   * "ImageCoordinates" (as the strokes'), cell data "Colors" (unsigned char RGB: the point's
+   * mapped scalar colour or its actor's colour), "PointSizes" (float: the actor's PointSize,
+   * pixels at 72 DPI) and "RoundPoints" (unsigned char: 1 where the actor renders points as
+   * spheres).
+   */
+  vtkPolyData* GetVisiblePoints();
 
   /**
    * Computes the faces a vector drawing fills (vtkNPRDrawingExporter's FillFaces), for the
@@ -173,6 +196,7 @@ protected:
   ~vtkNPRDrawingLines() override;
 
   bool HiddenLines = false;
+  bool PointPrimitives = false;
   double SampleSpacing = 1.0;
 
 private:

@@ -29,6 +29,38 @@
 #include <cmath>
 #include <cstdint>
 
+vtkSmartPointer<vtkUnsignedCharArray> vtkNPRMapScalars(
+  vtkActor* actor, vtkPolyData* mesh, bool& perCell)
+{
+  perCell = false;
+  vtkMapper* mapper = actor->GetMapper();
+  if (!mapper || !mapper->GetScalarVisibility())
+  {
+    return nullptr;
+  }
+  int cellFlag = 0;
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(mesh, mapper->GetScalarMode(),
+    mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
+  if (!scalars || cellFlag > 1) // field data colours are left to the property's colour
+  {
+    return nullptr;
+  }
+  vtkScalarsToColors* table = mapper->GetLookupTable();
+  if (!mapper->GetUseLookupTableScalarRange())
+  {
+    table->SetRange(mapper->GetScalarRange()); // as the mapper does before it draws
+  }
+  auto colors = vtk::TakeSmartPointer(
+    table->MapScalars(scalars, mapper->GetColorMode(), mapper->GetArrayComponent(), VTK_RGBA));
+  perCell = cellFlag == 1;
+  const vtkIdType needed = perCell ? mesh->GetNumberOfCells() : mesh->GetNumberOfPoints();
+  if (colors && (colors->GetNumberOfTuples() < needed || colors->GetNumberOfComponents() < 3))
+  {
+    return nullptr; // scalars not one a point or a cell: the property's colour
+  }
+  return colors;
+}
+
 namespace
 {
 using Color = std::array<unsigned char, 3>;
@@ -78,33 +110,9 @@ FaceColors::FaceColors(vtkActor* actor, vtkPolyData* mesh)
     ToColor(property->GetAmbientColor(), this->Ambient),
     ToColor(property->GetDiffuseColor(), this->Diffuse) };
   this->FirstFaceCell = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
-  vtkMapper* mapper = actor->GetMapper();
-  if (!mapper || !mapper->GetScalarVisibility())
-  {
-    return;
-  }
-  int cellFlag = 0;
-  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(mesh, mapper->GetScalarMode(),
-    mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
-  if (!scalars || cellFlag > 1) // field data colours are left to the property's colour
-  {
-    return;
-  }
-  vtkScalarsToColors* table = mapper->GetLookupTable();
-  if (!mapper->GetUseLookupTableScalarRange())
-  {
-    table->SetRange(mapper->GetScalarRange()); // as the mapper does before it draws
-  }
-  this->Colors = vtk::TakeSmartPointer(
-    table->MapScalars(scalars, mapper->GetColorMode(), mapper->GetArrayComponent(), VTK_RGBA));
-  this->PerCell = cellFlag == 1;
+  this->Colors = vtkNPRMapScalars(actor, mesh, this->PerCell);
   // Direct colours keep their own components (VTK 9.1 returns RGB scalars as RGBA or RGB).
   this->Stride = this->Colors ? this->Colors->GetNumberOfComponents() : 4;
-  const vtkIdType needed = this->PerCell ? mesh->GetNumberOfCells() : mesh->GetNumberOfPoints();
-  if (this->Colors && (this->Colors->GetNumberOfTuples() < needed || this->Stride < 3))
-  {
-    this->Colors = nullptr; // scalars not one a point or a cell: the property's colour
-  }
 }
 
 Shades FaceColors::Of(

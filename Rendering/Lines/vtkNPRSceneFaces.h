@@ -9,12 +9,21 @@
 #define vtkNPRSceneFaces_h
 
 #include "vtkNPROccluders.h" // for vtkNPRMeshInstance
+#include "vtkSmartPointer.h" // for the mapped colours
 #include "vtkType.h"         // for vtkIdType
 
 #include <vector> // for the meshes
 
 class vtkPolyData;
+class vtkUnsignedCharArray;
 struct vtkNPRSceneView;
+
+// The colours the actor's mapper maps the mesh's scalars to (vtkMapper::MapScalars, RGB or RGBA,
+// one a point or, with `perCell` set, one a cell in the mesh's cell order), as VTK draws them;
+// null when it colours by its property (ScalarVisibility off, no scalars, field data scalars, or
+// too few of them). Shared by the faces and the points of a vector drawing.
+vtkSmartPointer<vtkUnsignedCharArray> vtkNPRMapScalars(
+  vtkActor* actor, vtkPolyData* mesh, bool& perCell);
 
 // What vtkNPRSceneFaces did: the scene's triangles, those left out (outside the frustum, the back
 // faces of closed meshes, culled by their property, edge-on or degenerate), the pieces made by

@@ -103,15 +103,24 @@ bool ShowsSurfaces(vtkActor* actor)
     !vtkPointGaussianMapper::SafeDownCast(actor->GetMapper());
 }
 
+// Whether the actor draws its meshes' points as its points (the Points representation), not
+// splats.
+bool ShowsPoints(vtkActor* actor)
+{
+  return actor->GetProperty()->GetRepresentation() == VTK_POINTS &&
+    !vtkPointGaussianMapper::SafeDownCast(actor->GetMapper());
+}
+
 // One actor as it is drawn, with the matrix it is drawn with: visible, opaque, surfaces
-// (ShowsSurfaces) through a vtkPolyDataMapper, or a vtkDataSetMapper of a vtkPolyData (PyVista's
-// meshes); each polygonal leaf of a composite input (ParaView's representations,
-// vtkCompositePolyDataMapper2) is a mesh of its actor.
-void AddDrawnMeshes(vtkActor* actor, vtkMatrix4x4* matrix, std::vector<vtkNPRMeshInstance>& meshes)
+// (ShowsSurfaces; or points, ShowsPoints, for a point cloud) through a vtkPolyDataMapper, or a
+// vtkDataSetMapper of a vtkPolyData (PyVista's meshes); each polygonal leaf of a composite input
+// (ParaView's representations, vtkCompositePolyDataMapper2) is a mesh of its actor.
+void AddDrawnMeshes(vtkActor* actor, vtkMatrix4x4* matrix, vtkNPRDrawnAs drawnAs,
+  std::vector<vtkNPRMeshInstance>& meshes)
 {
   vtkMapper* mapper = actor->GetMapper();
   if ((!vtkPolyDataMapper::SafeDownCast(mapper) && !vtkDataSetMapper::SafeDownCast(mapper)) ||
-    !ShowsSurfaces(actor))
+    !(drawnAs == vtkNPRDrawnAs::Surfaces ? ShowsSurfaces(actor) : ShowsPoints(actor)))
   {
     return;
   }
@@ -148,7 +157,7 @@ void AddDrawnMeshes(vtkActor* actor, vtkMatrix4x4* matrix, std::vector<vtkNPRMes
 }
 }
 
-std::vector<vtkNPRMeshInstance> vtkNPRDrawnMeshes(vtkRenderer* renderer)
+std::vector<vtkNPRMeshInstance> vtkNPRDrawnMeshes(vtkRenderer* renderer, vtkNPRDrawnAs drawnAs)
 {
   std::vector<vtkNPRMeshInstance> meshes;
   vtkPropCollection* props = renderer->GetViewProps();
@@ -165,7 +174,7 @@ std::vector<vtkNPRMeshInstance> vtkNPRDrawnMeshes(vtkRenderer* renderer)
       auto* actor = vtkActor::SafeDownCast(part.Prop);
       if (actor && part.Matrix)
       {
-        AddDrawnMeshes(actor, part.Matrix, meshes);
+        AddDrawnMeshes(actor, part.Matrix, drawnAs, meshes);
       }
     }
   }

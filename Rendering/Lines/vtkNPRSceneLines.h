@@ -26,11 +26,20 @@ class vtkRenderer;
 // window. False when there is none.
 bool vtkNPRImageSize(vtkRenderer* renderer, const int size[2], int& width, int& height);
 
+// How the actors vtkNPRDrawnMeshes() lists draw their meshes: as surfaces (the Surface
+// representation), or as point clouds (the Points representation).
+enum class vtkNPRDrawnAs
+{
+  Surfaces,
+  Points
+};
+
 // The meshes of the renderer's visible, opaque vtkActors drawn by a vtkPolyDataMapper (or a
-// vtkDataSetMapper of a vtkPolyData) as surfaces,
+// vtkDataSetMapper of a vtkPolyData) as surfaces (or, with vtkNPRDrawnAs::Points, as points),
 // those inside assemblies included (vtkNPRPropParts), each polygonal leaf of a composite input a
 // mesh of its actor; their inputs brought up to date.
-std::vector<vtkNPRMeshInstance> vtkNPRDrawnMeshes(vtkRenderer* renderer);
+std::vector<vtkNPRMeshInstance> vtkNPRDrawnMeshes(
+  vtkRenderer* renderer, vtkNPRDrawnAs drawnAs = vtkNPRDrawnAs::Surfaces);
 
 // The camera of a frame as the image sees it.
 struct vtkNPRSceneView

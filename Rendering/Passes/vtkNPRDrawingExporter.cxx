@@ -10,6 +10,8 @@
 #include "vtkNPRDrawingPass.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRFaceShading.h"
+#include "vtkNPRFillPainter.h"
+#include "vtkNPROverlays.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkNPRStrokePainter.h"
@@ -21,7 +23,6 @@
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
 #include "vtkSmartPointer.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <cairo.h>
 
@@ -121,19 +122,6 @@ bool LabelClasses(std::string& svg, const vtkNPRStrokeCounts& counts)
   return true;
 }
 
-// The renderer's part of its window, rendered again.
-vtkSmartPointer<vtkImageData> GrabRaster(vtkRenderer* renderer)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(renderer->GetRenderWindow());
-  grab->SetViewport(renderer->GetViewport());
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->ShouldRerenderOn();
-  grab->Update();
-  return grab->GetOutput();
-}
-
 // Paints the raster over the whole width x height of `cr`.
 void PaintRaster(cairo_t* cr, vtkImageData* raster, int width, int height)
 {
@@ -168,6 +156,7 @@ struct vtkNPRDrawingExporter::Internals
   vtkNew<vtkNPRDrawingLines> OwnLines;       // when there is no drawing pass
   vtkSmartPointer<vtkNPRDrawingLines> Lines; // those of the last Write()
   std::string ErrorMessage;
+  vtkNPROverlays Overlays; // the 2D props of the last Write() without a raster
   vtkNPRStrokeCounts Counts{};
   vtkIdType FilledFaces = 0;
   bool Labelled = false;
@@ -254,6 +243,16 @@ vtkIdType vtkNPRDrawingExporter::GetNumberOfStrokes() const
   return total;
 }
 
+vtkIdType vtkNPRDrawingExporter::GetNumberOfTexts() const
+{
+  return this->Internal->Overlays.GetNumberOfTexts();
+}
+
+vtkIdType vtkNPRDrawingExporter::GetNumberOfImagedOverlays() const
+{
+  return this->Internal->Overlays.GetNumberOfImageProps();
+}
+
 vtkIdType vtkNPRDrawingExporter::GetNumberOfFilledFaces() const
 {
   return this->Internal->FilledFaces;
@@ -323,9 +322,15 @@ bool vtkNPRDrawingExporter::Write()
   if (target.Renderer->GetRenderWindow() &&
     (this->EmbedImage == 1 || (this->EmbedImage == -1 && !target.DrawingStyle && !this->FillFaces)))
   {
-    raster = GrabRaster(target.Renderer);
+    raster = vtkNPRGrabViewport(target.Renderer);
   }
-  // Without the image under them the scene's own line cells (an outline, axes) are strokes too.
+  // Without the image under them the scene's own line and point cells (an outline, axes, a
+  // point cloud) are vector too, and so are its 2D props (text, scalar bars) over them.
+  internal.Overlays = vtkNPROverlays();
+  if (!raster && this->Overlays)
+  {
+    internal.Overlays.Capture(target.Renderer);
+  }
   if (!this->ComputeStrokes(target, !raster))
   {
     return false;
@@ -413,10 +418,12 @@ bool vtkNPRDrawingExporter::ComputeStrokes(const Target& target, bool linePrimit
   lines->SetRenderer(target.Renderer);
   lines->SetSize(target.Width, target.Height);
   vtkNPRSelectStrokeLines(lines, style, target.Edges);
-  const bool passLines = lines->GetLinePrimitives();
+  const bool passLines = lines->GetLinePrimitives(), passPoints = lines->GetPointPrimitives();
   lines->SetLinePrimitives(linePrimitives);
+  lines->SetPointPrimitives(linePrimitives);
   const bool updated = lines->Update() && (!this->FillFaces || lines->UpdateFaces());
   lines->SetLinePrimitives(passLines);
+  lines->SetPointPrimitives(passPoints);
   if (lines != this->Internal->OwnLines.Get())
   {
     // A pass held by the renderer must not hold the renderer (a cycle, hence a leak).
@@ -448,7 +455,11 @@ bool vtkNPRDrawingExporter::Paint(const Target& target, vtkImageData* raster, st
   std::string error, unused;
   const bool painted = (!this->FillFaces || this->PaintFaces(cr, target, error)) &&
     vtkNPRPaintStrokes(
-      cr, internal.Lines->GetStrokes(), target.Style, target.Height, internal.Counts, error);
+      cr, internal.Lines->GetStrokes(), target.Style, target.Height, internal.Counts, error) &&
+    vtkNPRPaintPoints(cr, internal.Lines->GetVisiblePoints(), target.Style.Scale, target.Height,
+      internal.Counts[NPR_STROKES_POINT], error) &&
+    internal.Overlays.Paint(
+      cr, target.Width, target.Height, internal.Counts[NPR_STROKES_TEXT], error);
   cairo_destroy(cr);
   const bool finished = vtkNPRFinishVectorSurface(surface, painted ? error : unused);
   if (!painted || !finished)
@@ -496,6 +507,7 @@ void vtkNPRDrawingExporter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FillFaces: " << this->FillFaces << "\n";
   os << indent << "FillColors: " << this->FillColors << "\n";
   os << indent << "FillSeam: " << this->FillSeam << "\n";
+  os << indent << "Overlays: " << this->Overlays << "\n";
   os << indent << "ErrorCode: " << this->ErrorCode << "\n";
   os << indent << "ErrorMessage: " << this->Internal->ErrorMessage << "\n";
 }

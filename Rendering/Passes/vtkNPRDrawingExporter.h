@@ -27,13 +27,20 @@
  * - Order and structure: background, raster or faces, hidden strokes, then the visible silhouettes,
  *   boundaries, creases, non-manifold edges, intersection curves and, where no image is embedded,
  *   the scene's own line cells (an outline box, axes: vtkNPRDrawingLines' LinePrimitives, hidden
- *   where behind a surface, each in its actor's colour and line width). In an SVG file each of
- *   these classes of strokes is a `<g class="npr-hidden">`, `npr-silhouette`, `npr-boundary`,
- *   `npr-crease`, `npr-non-manifold`, `npr-intersection`, `npr-line` group of `<path>` elements,
- *   one per stroke (hidden ones with a `stroke-dasharray`), so a style sheet or an editor can
- *   restyle a class. Cairo writes no classes itself: the groups are added to its output
- *   afterwards (if its output has not the expected form, the file is written without them and a
- *   warning says so). PDF and PostScript
+ *   where behind a surface, each in its actor's colour and line width), its point primitives
+ *   (vertex cells and point clouds: PointPrimitives; squares of the actor's PointSize, discs
+ *   where it renders points as spheres, in the point's colour; a hidden point is left out) and,
+ *   with Overlays on, its 2D props over everything: text (vtkTextActor, or a vtkActor2D of a
+ *   vtkTextMapper) as the glyph outlines VTK's text renderer gives, and every other 2D prop (a
+ *   scalar bar, a corner annotation, a logo) as one embedded image of its own pixels, with
+ *   their coverage, so that faces and lines stay vector under it. In an SVG file each of
+ *   these classes is a `<g class="npr-hidden">`, `npr-silhouette`, `npr-boundary`,
+ *   `npr-crease`, `npr-non-manifold`, `npr-intersection`, `npr-line`, `npr-point`, `npr-text`
+ *   group of `<path>` elements, one per stroke, point or text (hidden strokes with a
+ *   `stroke-dasharray`; a text's background box and frame are paths of its group too), so a
+ *   style sheet or an editor can restyle a class; the image of the other 2D props is last. Cairo
+ * writes no classes itself: the groups are added to its output afterwards (if its output has not
+ * the expected form, the file is written without them and a warning says so). PDF and PostScript
  *   files have the same painting order, without groups.
  *
  * Errors (Write() returns false, GetErrorCode() is a vtkErrorCode and GetErrorMessage() says
@@ -144,6 +151,18 @@ public:
 
   ///@{
   /**
+   * Paint the renderer's 2D props (text, scalar bars, legends) over the drawing when no image
+   * is embedded (on by default; with an embedded image they are part of it): text as vector
+   * outlines, the other props as an image of their pixels (the window is rendered twice more
+   * with only those props, and once again to show its picture).
+   */
+  vtkSetMacro(Overlays, bool);
+  vtkGetMacro(Overlays, bool);
+  vtkBooleanMacro(Overlays, bool);
+  ///@}
+
+  ///@{
+  /**
    * Embed the window's image under the lines: -1 (the default) when the renderer's style is
    * not "drawing"
    * and FillFaces is off, 0 never, 1 always.
@@ -184,13 +203,17 @@ public:
 
   ///@{
   /**
-   * What the last Write() painted: the strokes of a class (0 hidden, 1 silhouette, 2 boundary,
-   * 3 crease, 4 non-manifold, 5 intersection, 6 the scene's line cells) and in all; whether the
-   * SVG's groups were labelled; whether a raster was embedded; the polygons filled (FillFaces); the
-   * seconds computing the strokes (and the faces) and painting and writing the file.
+   * What the last Write() painted: the paths of a class (0 hidden, 1 silhouette, 2 boundary,
+   * 3 crease, 4 non-manifold, 5 intersection strokes, 6 the scene's line cells, 7 its points,
+   * 8 the texts' paths) and in all; the texts and the 2D props in the embedded image
+   * (Overlays); whether the SVG's groups were labelled; whether a raster was embedded; the
+   * polygons filled (FillFaces); the seconds computing the strokes (and the faces) and painting
+   * and writing the file.
    */
   vtkIdType GetNumberOfStrokes(int strokeClass) const;
   vtkIdType GetNumberOfStrokes() const;
+  vtkIdType GetNumberOfTexts() const;
+  vtkIdType GetNumberOfImagedOverlays() const;
   vtkIdType GetNumberOfFilledFaces() const;
   bool GetClassesLabelled() const;
   bool GetImageEmbedded() const;
@@ -212,6 +235,7 @@ protected:
   bool FillFaces = false;
   int FillColors = FACE_COLOR;
   double FillSeam = 1.0;
+  bool Overlays = true;
   unsigned long ErrorCode = 0;
 
 private:

@@ -9,6 +9,7 @@
 #include "vtkNPRDrawingLines.h"
 #include "vtkNPRDrawingPass.h"
 #include "vtkNPRFaceShading.h"
+#include "vtkNPRFillPainter.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRPassUtilities.h"
 #include "vtkNPRStrokePainter.h"

@@ -11,6 +11,7 @@
 #include "vtkNPRDrawingPass.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRPassUtilities.h"
+#include "vtkNPRVectorFile.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
@@ -86,6 +87,10 @@ const char* vtkNPRStrokeClassName(int strokeClass)
       return "npr-intersection";
     case NPR_STROKES_LINE:
       return "npr-line";
+    case NPR_STROKES_POINT:
+      return "npr-point";
+    case NPR_STROKES_TEXT:
+      return "npr-text";
     default:
       return "";
   }
@@ -238,36 +243,6 @@ void SetLinePen(cairo_t* cr, vtkPolyData* strokes, vtkIdType line, const vtkNPRS
   cairo_set_line_width(cr, std::max(0.25, width * style.Scale));
 }
 
-// One stroke's path, through the point ids of a cell, with y flipped; false for an empty cell.
-bool TraceStroke(
-  cairo_t* cr, vtkIdType size, const vtkIdType* ids, vtkDataArray* coordinates, double height)
-{
-  if (size < 1)
-  {
-    return false;
-  }
-  // A closed loop repeats its first point id last.
-  const bool closed = size >= 3 && ids[size - 1] == ids[0];
-  const vtkIdType last = closed ? size - 1 : size;
-  for (vtkIdType k = 0; k < last; ++k)
-  {
-    const double x = coordinates->GetComponent(ids[k], 0);
-    const double y = height - coordinates->GetComponent(ids[k], 1);
-    if (k == 0)
-    {
-      cairo_move_to(cr, x, y);
-    }
-    else
-    {
-      cairo_line_to(cr, x, y);
-    }
-  }
-  if (closed)
-  {
-    cairo_close_path(cr);
-  }
-  return true;
-}
 }
 
 namespace
@@ -473,7 +448,7 @@ bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeSty
         counts[strokeClass] +=
           FillStroke(cr, size, ids, coordinates, height, cairo_get_line_width(cr), style);
       }
-      else if (TraceStroke(cr, size, ids, coordinates, height))
+      else if (vtkNPRTraceStroke(cr, size, ids, coordinates, height))
       {
         cairo_stroke(cr); // one path per stroke: an SVG <path> each
         ++counts[strokeClass];
@@ -481,76 +456,7 @@ bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeSty
     }
   }
   cairo_restore(cr);
-  if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
-  {
-    error = std::string("Cairo: ") + cairo_status_to_string(cairo_status(cr));
-    return false;
-  }
-  return true;
-}
-
-bool vtkNPRPaintFaces(cairo_t* cr, vtkPolyData* faces, const double* color, vtkDataArray* colors,
-  double seam, double height, vtkIdType& painted, std::string& error)
-{
-  painted = 0;
-  vtkCellArray* polys = faces ? faces->GetPolys() : nullptr;
-  if (!polys || polys->GetNumberOfCells() == 0)
-  {
-    return true;
-  }
-  vtkDataArray* coordinates = faces->GetPointData()->GetArray("ImageCoordinates");
-  if (!coordinates || coordinates->GetNumberOfComponents() < 2 ||
-    (!color &&
-      (!colors || colors->GetNumberOfComponents() < 3 ||
-        colors->GetNumberOfTuples() < polys->GetNumberOfCells())))
-  {
-    error = "the faces lack their ImageCoordinates or their colours";
-    return false;
-  }
-  cairo_save(cr);
-  cairo_set_dash(cr, nullptr, 0, 0.0);
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-  cairo_set_line_width(cr, seam);
-  if (color)
-  {
-    cairo_set_source_rgb(cr, color[0], color[1], color[2]);
-  }
-  auto iterator = vtk::TakeSmartPointer(polys->NewIterator());
-  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    iterator->GetCurrentCell(size, ids);
-    if (size < 3)
-    {
-      continue;
-    }
-    if (!color)
-    {
-      const vtkIdType cell = iterator->GetCurrentCellId();
-      cairo_set_source_rgb(cr, colors->GetComponent(cell, 0) / 255.0,
-        colors->GetComponent(cell, 1) / 255.0, colors->GetComponent(cell, 2) / 255.0);
-    }
-    TraceStroke(cr, size, ids, coordinates, height);
-    cairo_close_path(cr);
-    if (seam > 0.0)
-    {
-      cairo_fill_preserve(cr);
-      cairo_stroke(cr);
-    }
-    else
-    {
-      cairo_fill(cr);
-    }
-    ++painted;
-  }
-  cairo_restore(cr);
-  if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
-  {
-    error = std::string("Cairo: ") + cairo_status_to_string(cairo_status(cr));
-    return false;
-  }
-  return true;
+  return vtkNPRCairoSucceeded(cr, error);
 }
 
 bool vtkNPRRasterizeStrokes(vtkPolyData* strokes, const vtkNPRStrokeStyle& style, int width,
@@ -597,4 +503,34 @@ bool vtkNPRRasterizeStrokes(vtkPolyData* strokes, const vtkNPRStrokeStyle& style
   }
   cairo_surface_destroy(surface);
   return ok;
+}
+
+bool vtkNPRTraceStroke(
+  cairo_t* cr, vtkIdType size, const vtkIdType* ids, vtkDataArray* coordinates, double height)
+{
+  if (size < 1)
+  {
+    return false;
+  }
+  // A closed loop repeats its first point id last.
+  const bool closed = size >= 3 && ids[size - 1] == ids[0];
+  const vtkIdType last = closed ? size - 1 : size;
+  for (vtkIdType k = 0; k < last; ++k)
+  {
+    const double x = coordinates->GetComponent(ids[k], 0);
+    const double y = height - coordinates->GetComponent(ids[k], 1);
+    if (k == 0)
+    {
+      cairo_move_to(cr, x, y);
+    }
+    else
+    {
+      cairo_line_to(cr, x, y);
+    }
+  }
+  if (closed)
+  {
+    cairo_close_path(cr);
+  }
+  return true;
 }

@@ -61,6 +61,11 @@ vtkNPRStrokeStyle vtkNPRMakeStrokeStyle(
 void vtkNPRSelectStrokeLines(
   vtkNPRDrawingLines* lines, const vtkNPRStrokeStyle& style, vtkNPREdgePass* edges);
 
+// Adds one stroke's path to `cr`: through the ImageCoordinates of the point ids of a cell, y
+// flipped (`height` - y), closed where the last id is the first (a loop). False for an empty cell.
+bool vtkNPRTraceStroke(
+  cairo_t* cr, vtkIdType size, const vtkIdType* ids, vtkDataArray* coordinates, double height);
+
 // Rasterises the strokes (ImageCoordinates, FeatureType, Hidden) over a transparent image of
 // width x height: premultiplied RGBA, 8 bits each, row 0 at the bottom (OpenGL's order).
 // False, with `error` set, when Cairo fails.
@@ -78,10 +83,12 @@ enum vtkNPRStrokeClass
   NPR_STROKES_NON_MANIFOLD, // visible non-manifold edges
   NPR_STROKES_INTERSECTION, // visible curves where surfaces cross
   NPR_STROKES_LINE,         // visible line cells of the scene, each in its actor's colour and width
+  NPR_STROKES_POINT,        // visible point primitives of the scene (vtkNPRPaintPoints)
+  NPR_STROKES_TEXT,         // the 2D text over the scene, as glyph outlines (vtkNPROverlays)
   NPR_STROKE_CLASSES
 };
 // "npr-hidden", "npr-silhouette", "npr-boundary", "npr-crease", "npr-non-manifold",
-// "npr-intersection", "npr-line".
+// "npr-intersection", "npr-line", "npr-point", "npr-text".
 const char* vtkNPRStrokeClassName(int strokeClass);
 
 // How many strokes of each class were painted.
@@ -98,16 +105,6 @@ using vtkNPRStrokeCounts = std::array<vtkIdType, NPR_STROKE_CLASSES>;
 // lack ImageCoordinates, FeatureType or Hidden, or Cairo fails.
 bool vtkNPRPaintStrokes(cairo_t* cr, vtkPolyData* strokes, const vtkNPRStrokeStyle& style,
   double height, vtkNPRStrokeCounts& counts, std::string& error);
-
-// Paints the faces of vtkNPRDrawingLines::GetFaces() onto `cr` (user space as for the strokes) in
-// their order, back to front: each polygon filled in `color` (RGB in [0, 1]), or with a null
-// `color` in its tuple of `colors` (RGB in [0, 255], one a face), and stroked in the same colour
-// with `seam` pixels (0: not stroked), which closes the hairline gaps anti-aliasing leaves
-// between neighbouring pieces. One path a polygon. Sets `painted` to how many were painted.
-// False, with `error` set, when the faces lack ImageCoordinates, there are too few colours, or
-// Cairo fails.
-bool vtkNPRPaintFaces(cairo_t* cr, vtkPolyData* faces, const double* color, vtkDataArray* colors,
-  double seam, double height, vtkIdType& painted, std::string& error);
 
 #endif
 // VTK-HeaderTest-Exclude: vtkNPRStrokePainter.h

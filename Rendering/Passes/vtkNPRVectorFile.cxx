@@ -83,6 +83,16 @@ cairo_surface_t* vtkNPRCreateVectorSurface(
   return surface;
 }
 
+bool vtkNPRCairoSucceeded(cairo_t* cr, std::string& error)
+{
+  if (cairo_status(cr) == CAIRO_STATUS_SUCCESS)
+  {
+    return true;
+  }
+  error = std::string("Cairo: ") + cairo_status_to_string(cairo_status(cr));
+  return false;
+}
+
 bool vtkNPRFinishVectorSurface(cairo_surface_t* surface, std::string& error)
 {
   cairo_surface_finish(surface);

@@ -19,6 +19,9 @@ int vtkNPRCheckVectorPath(const char* path, unsigned long& code, std::string& er
 cairo_surface_t* vtkNPRCreateVectorSurface(
   int format, std::string& bytes, double width, double height);
 
+// True when `cr` is in no error state; false, with `error` ("Cairo: " and its status), when it is.
+bool vtkNPRCairoSucceeded(cairo_t* cr, std::string& error);
+
 // Finishes and destroys the surface; false, with `error`, when Cairo failed.
 bool vtkNPRFinishVectorSurface(cairo_surface_t* surface, std::string& error);
 

@@ -59,3 +59,12 @@ for flags in "" --hidden-lines --smooth-silhouettes "--smooth-silhouettes --hidd
     "$out/isosurface_drawing.py" --size "$size" $flags -o "$out/$name.svg"
   rasterise "$name"
 done
+
+# The same scene annotated: the outer surface coloured by height with its scalar bar, points above
+# the sources and a title, faces filled in their colours under the outline box.
+echo "python3 Documentation/images/drawing/isosurface_drawing.py --size $size --fill-faces surface --outline --annotate -o isosurface_annotated.svg"
+PYTHONPATH="$python_path${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 \
+  "$out/isosurface_drawing.py" --size "$size" --fill-faces surface --outline --annotate \
+  -o "$out/isosurface_annotated.svg"
+rasterise isosurface_annotated
+rm "$out/isosurface_annotated.svg" # 27 MB: only the picture is kept

@@ -13,6 +13,9 @@
 //   drawing-style the renderer in the drawing style: the export uses the pass's lines (no second
 //                 edge table or occluders) and writes the same SVG as a new drawing pass's lines
 //                 (TestDrawingExporterStyle.cxx)
+//   points        vertex cells and a point cloud as painted points, against the render
+//   overlays      2D text as glyph outlines and a scalar bar as an image, against the render
+//                 (TestDrawingExporterOverlays.cxx)
 // Programs: RSVG_CONVERT and PDFTOPPM (compile definitions; the accuracy cases need them).
 //
 // usage: TestDrawingExporter CASE [DATA_DIR]
@@ -38,6 +41,23 @@ std::string nprDrawingExporter::ReadFile(const std::string& path)
   std::ostringstream text;
   text << file.rdbuf();
   return text.str();
+}
+
+vtkSmartPointer<vtkImageData> nprDrawingExporter::Rasterise(
+  const std::string& path, int width, int height)
+{
+  const bool pdf = path.size() > 4 && path.compare(path.size() - 4, 4, ".pdf") == 0;
+  const std::string png = path.substr(0, path.size() - 4) + (pdf ? "_pdf" : "_svg");
+  const std::string size =
+    std::to_string(width) + (pdf ? " -scale-to-y " : " -h ") + std::to_string(height);
+  const std::string command = pdf
+    ? std::string(PDFTOPPM) + " -png -singlefile -scale-to-x " + size + " '" + path + "' '" + png +
+      "'"
+    : std::string(RSVG_CONVERT) + " -w " + size + " -o '" + png + ".png' '" + path + "'";
+  NPR_CHECK(std::system(command.c_str()) == 0, "failed: " << command);
+  vtkSmartPointer<vtkImageData> image = nprReadPNG(png + ".png");
+  NPR_CHECK(image, "no image " << png << ".png");
+  return image;
 }
 
 size_t nprDrawingExporter::Count(const std::string& text, const std::string& what)
@@ -83,27 +103,12 @@ int Accuracy(bool pdf)
   exporter->SetRenderer(scene.Renderer);
   exporter->SetEmbedImage(0); // the lines alone, on the white background
   const std::string path = nprTestOutputPath(pdf ? "drawing_cad.pdf" : "drawing_cad.svg");
-  const std::string png = nprTestOutputPath(pdf ? "drawing_cad_pdf" : "drawing_cad_svg");
   exporter->SetFileName(path.c_str());
   NPR_CHECK(exporter->Write(), "write: " << exporter->GetErrorMessage());
   std::cout << path << ": " << exporter->GetNumberOfStrokes() << " strokes, "
             << std::filesystem::file_size(path) << " bytes, strokes " << exporter->GetStrokesTime()
             << " s, painting and writing " << exporter->GetWriteTime() << " s\n";
-  std::string command;
-  if (pdf)
-  {
-    command = std::string(PDFTOPPM) + " -png -singlefile -scale-to-x " +
-      std::to_string(ImageWidth) + " -scale-to-y " + std::to_string(ImageHeight) + " '" + path +
-      "' '" + png + "'";
-  }
-  else
-  {
-    command = std::string(RSVG_CONVERT) + " -w " + std::to_string(ImageWidth) + " -h " +
-      std::to_string(ImageHeight) + " -o '" + png + ".png' '" + path + "'";
-  }
-  NPR_CHECK(std::system(command.c_str()) == 0, "failed: " << command);
-  vtkSmartPointer<vtkImageData> image = nprReadPNG(png + ".png");
-  NPR_CHECK(image, "no image " << png << ".png");
+  vtkSmartPointer<vtkImageData> image = Rasterise(path, ImageWidth, ImageHeight);
   if (!image)
   {
     return nprTestResult();

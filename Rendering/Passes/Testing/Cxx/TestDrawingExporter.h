@@ -7,6 +7,9 @@
 
 #include "nprTesting.h"
 
+#include "vtkImageData.h"
+#include "vtkSmartPointer.h"
+
 #include <string>
 
 namespace nprDrawingExporter
@@ -15,6 +18,10 @@ constexpr int ImageWidth = 800, ImageHeight = 600;
 
 // The bytes of a file (empty where it cannot be read).
 std::string ReadFile(const std::string& path);
+
+// A written .svg (rsvg-convert) or .pdf (pdftoppm) file rasterised at width x height, row 0 at
+// the bottom; null, after a failed check, when the program fails.
+vtkSmartPointer<vtkImageData> Rasterise(const std::string& path, int width, int height);
 
 // How often what occurs in text.
 size_t Count(const std::string& text, const std::string& what);

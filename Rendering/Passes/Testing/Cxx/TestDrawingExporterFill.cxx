@@ -84,16 +84,6 @@ void BuildScene(vtkRenderer* renderer)
   camera->Zoom(1.2);
 }
 
-// The SVG rasterised at the image's size.
-vtkSmartPointer<vtkImageData> Rasterise(const std::string& svg)
-{
-  const std::string png = svg.substr(0, svg.size() - 4) + ".png";
-  const std::string command = std::string(RSVG_CONVERT) + " -w " + std::to_string(Width) + " -h " +
-    std::to_string(Height) + " -o '" + png + "' '" + svg + "'";
-  NPR_CHECK(std::system(command.c_str()) == 0, "failed: " << command);
-  return nprReadPNG(png);
-}
-
 // The share of the render's inner pixels (a 5 x 5 square of one colour about them: away from
 // lines and borders) whose colour in `file` differs by more than 8 of 255 in a channel.
 double DifferingShare(vtkImageData* render, vtkImageData* file, int& inner)
@@ -148,7 +138,7 @@ double ExportAndCompare(
   NPR_CHECK(exporter->Write(), "write: " << exporter->GetErrorMessage());
   NPR_CHECK(fill == (exporter->GetNumberOfFilledFaces() > 0),
     exporter->GetNumberOfFilledFaces() << " faces filled");
-  vtkSmartPointer<vtkImageData> file = Rasterise(svg);
+  vtkSmartPointer<vtkImageData> file = Rasterise(svg, Width, Height);
   if (!file || !render)
   {
     return 1.0;
