@@ -248,7 +248,8 @@ def case_screenshot():
 
 def case_export():
     """export_drawing writes the drawing style's lines as SVG, with fill_faces the faces too, in
-    the sphere's own colour with fill_colors="surface"; bad fill_colors is a ValueError."""
+    the sphere's own colour with fill_colors="surface"; bad fill_colors is a ValueError; the
+    plotter's points, text and scalar bar go into the file too."""
     p = plotter()
     p.add_mesh(pv.Sphere(theta_resolution=32, phi_resolution=16), color="red")
     enable_npr(p, "drawing")
@@ -268,6 +269,22 @@ def case_export():
         check(False, "fill_colors='shiny' was accepted")
     except ValueError:
         pass
+    # A mesh coloured by scalars (its scalar bar), a text and three points beside the sphere: the
+    # points as vector discs, the text as outlines, the scalar bar as the file's one image.
+    p.add_mesh(pv.Sphere(center=(0.0, 1.2, 0.0)).elevation(), scalars="Elevation")
+    p.add_text("vtkNPR", position=(10, 10), font_size=12)
+    p.add_mesh(pv.PolyData([[1.2, 0.0, 0.0], [1.2, 0.4, 0.0], [1.2, -0.4, 0.0]]), color="blue",
+               point_size=8, render_points_as_spheres=True)
+    p.reset_camera()
+    p.render()
+    annotated = os.path.join(folder, "annotated.svg")
+    exporter = export_drawing(p, annotated, fill_faces=True, fill_colors="surface")
+    text = open(annotated).read()
+    check(exporter.GetNumberOfStrokes(7) == 3 and exporter.GetNumberOfTexts() == 1
+          and exporter.GetNumberOfImagedOverlays() >= 1 and text.count("<image") == 1,
+          "annotated: %d points, %d texts, %d 2D props in the image, %d images"
+          % (exporter.GetNumberOfStrokes(7), exporter.GetNumberOfTexts(),
+             exporter.GetNumberOfImagedOverlays(), text.count("<image")))
     p.close()
 
 
