@@ -65,9 +65,10 @@ unsigned char StrokeType(unsigned char bits)
   {
     return vtkNPRFeatureLines::CREASE;
   }
-  if (bits & vtkNPRFeatureLines::LINE)
+  if (bits & (vtkNPRFeatureLines::LINE | vtkNPRFeatureLines::MESH_EDGE))
   {
-    return vtkNPRFeatureLines::LINE;
+    return bits & vtkNPRFeatureLines::LINE ? vtkNPRFeatureLines::LINE
+                                           : vtkNPRFeatureLines::MESH_EDGE;
   }
   return vtkNPRFeatureLines::NON_MANIFOLD;
 }
@@ -434,8 +435,9 @@ private:
 
 namespace
 {
-// The strokes' "Colors" and "LineWidths": a LINE stroke's actor's colour and line width, black
-// and 0 for the others.
+// The strokes' "Colors" and "LineWidths": a LINE stroke's actor's colour and line width (a
+// MESH_EDGE stroke's: its EdgeColor on a surface, its colour on a wireframe), black and 0 for the
+// others.
 void AddLineLooks(vtkPolyData* strokes, const std::vector<int>& meshes,
   const std::vector<vtkNPRMeshInstance>& actors)
 {
@@ -452,11 +454,16 @@ void AddLineLooks(vtkPolyData* strokes, const std::vector<int>& meshes,
     double color[3] = { 0.0, 0.0, 0.0 };
     double width = 0.0;
     const int mesh = meshes[i];
-    if (types && types->GetComponent(static_cast<vtkIdType>(i), 0) == vtkNPRFeatureLines::LINE &&
-      mesh >= 0 && mesh < static_cast<int>(actors.size()))
+    const int type =
+      types ? static_cast<int>(types->GetComponent(static_cast<vtkIdType>(i), 0)) : 0;
+    if ((type == vtkNPRFeatureLines::LINE || type == vtkNPRFeatureLines::MESH_EDGE) && mesh >= 0 &&
+      mesh < static_cast<int>(actors.size()))
     {
-      actors[mesh].Actor->GetProperty()->GetColor(color);
-      width = actors[mesh].Actor->GetProperty()->GetLineWidth();
+      vtkProperty* property = actors[mesh].Actor->GetProperty();
+      const bool edgeColor =
+        type == vtkNPRFeatureLines::MESH_EDGE && property->GetRepresentation() == VTK_SURFACE;
+      (edgeColor ? property->GetEdgeColor(color) : property->GetColor(color));
+      width = property->GetLineWidth();
     }
     for (int c = 0; c < 3; ++c)
     {
@@ -590,7 +597,7 @@ bool vtkNPRDrawingLines::Update()
   vtkPolyData* strokes = internal.Strokes;
   StrokeBuilder builder(pieces, view);
   builder.Build(strokes);
-  AddLineLooks(strokes, builder.Meshes, scene.GetMeshes());
+  AddLineLooks(strokes, builder.Meshes, scene.GetLineMeshes());
   vtkNew<vtkIntArray> imageSize;
   imageSize->SetName("ImageSize");
   imageSize->SetNumberOfComponents(2);

@@ -35,12 +35,14 @@
  *   holds it ([0, 1], from the camera's projection);
  * - cell data "FeatureType" (vtkUnsignedCharArray): the stroke's kind, a single bit of
  *   vtkNPRFeatureLines::FeatureTypes: SILHOUETTE (also a smooth contour), BOUNDARY, INTERSECTION,
- *   CREASE, NON_MANIFOLD or (with LinePrimitives) LINE, the first of these an edge carries (an
+ *   CREASE, NON_MANIFOLD or (with LinePrimitives) LINE or MESH_EDGE, the first of these an edge
+ *   carries (an
  *   edge that is both silhouette and crease is a silhouette);
  * - cell data "Hidden" (vtkUnsignedCharArray): 1 for a hidden stroke, 0 for a visible one;
  * - cell data "Colors" (vtkUnsignedCharArray, RGB) and "LineWidths" (vtkFloatArray, pixels at
- *   72 DPI): a LINE stroke's actor's colour and line width; black and 0 for the others (whose
- *   look is the style's);
+ *   72 DPI): a LINE stroke's actor's colour and line width (a MESH_EDGE stroke's: the edge colour
+ *   of a surface's, the colour of a wireframe's); black and 0 for the others (whose look is the
+ *   style's);
  * - field data "ImageSize" (vtkIntArray, 2 components): the image's width and height.
  * Hidden pieces are output only with HiddenLines on.
  *
@@ -96,7 +98,11 @@ public:
    * Also output the line cells of the scene's meshes (an outline box, axes, streamlines drawn as
    * lines; off by default): each segment of each polyline split where it passes behind a surface
    * like the feature lines, chained through the mesh's points, as strokes of FeatureType LINE
-   * with their actor's colour and line width (cell data "Colors" and "LineWidths"). Vector
+   * with their actor's colour and line width (cell data "Colors" and "LineWidths"); and the
+   * polygon edges that actors drawn with the Wireframe representation, or with EdgeVisibility
+   * on, draw: each edge once, as strokes of FeatureType MESH_EDGE in the wireframe's colour or
+   * the surface's EdgeColor (a wireframe hides nothing; a surface's own edges are not hidden by
+   * it). Vector
    * files without the window's image take them so (vtkNPRDrawingExporter); the drawing style's
    * image leaves them to VTK, which draws them over it.
    */

@@ -145,7 +145,9 @@ public:
     NON_MANIFOLD = 8,
     SMOOTH_CONTOUR = 16,
     INTERSECTION = 32, // not made here: vtkNPRReferenceMask's curves where surfaces cross
-    LINE = 64 // not made here: a line cell of the scene (vtkNPRDrawingLines' LinePrimitives)
+    LINE = 64, // not made here: a line cell of the scene (vtkNPRDrawingLines' LinePrimitives)
+    MESH_EDGE =
+      128 // not made here: a polygon edge a Wireframe representation or EdgeVisibility draws
   };
 
   ///@{

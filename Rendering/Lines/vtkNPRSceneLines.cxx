@@ -95,6 +95,37 @@ std::vector<vtkIdType> NumberCrossingEnds(const std::vector<const vtkNPROccluder
   return nodes;
 }
 
+// Calls edge(a, b) for each side of each polygon of the mesh (its closing side too) and each
+// side of each triangle of its strips, as a wireframe draws them; shared sides come once a face.
+template <typename Edge>
+void ForEachPolygonEdge(vtkPolyData* mesh, Edge&& edge)
+{
+  vtkIdType size;
+  const vtkIdType* ids;
+  auto polygons = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (polygons->GoToFirstCell(); !polygons->IsDoneWithTraversal(); polygons->GoToNextCell())
+  {
+    polygons->GetCurrentCell(size, ids);
+    for (vtkIdType k = 0; size > 1 && k < size; ++k)
+    {
+      edge(ids[k], ids[(k + 1) % size]);
+    }
+  }
+  auto strips = vtk::TakeSmartPointer(mesh->GetStrips()->NewIterator());
+  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell())
+  {
+    strips->GetCurrentCell(size, ids);
+    for (vtkIdType k = 0; k + 1 < size; ++k)
+    {
+      edge(ids[k], ids[k + 1]);
+      if (k + 2 < size)
+      {
+        edge(ids[k], ids[k + 2]);
+      }
+    }
+  }
+}
+
 // Whether the actor shows surfaces: not a point cloud or a wireframe (the Points and Wireframe
 // representations, vtkPointGaussianMapper splats), which has no outline or creases of its own.
 bool ShowsSurfaces(vtkActor* actor)
@@ -111,8 +142,23 @@ bool ShowsPoints(vtkActor* actor)
     !vtkPointGaussianMapper::SafeDownCast(actor->GetMapper());
 }
 
+// Whether the actor draws its meshes as the representation asks.
+bool DrawnAs(vtkActor* actor, vtkNPRDrawnAs drawnAs)
+{
+  switch (drawnAs)
+  {
+    case vtkNPRDrawnAs::Surfaces:
+      return ShowsSurfaces(actor);
+    case vtkNPRDrawnAs::Points:
+      return ShowsPoints(actor);
+    default:
+      return actor->GetProperty()->GetRepresentation() == VTK_WIREFRAME &&
+        !vtkPointGaussianMapper::SafeDownCast(actor->GetMapper());
+  }
+}
+
 // One actor as it is drawn, with the matrix it is drawn with: visible, opaque, surfaces
-// (ShowsSurfaces; or points, ShowsPoints, for a point cloud) through a vtkPolyDataMapper, or a
+// (ShowsSurfaces; or points or wireframes: DrawnAs) through a vtkPolyDataMapper, or a
 // vtkDataSetMapper of a vtkPolyData (PyVista's meshes); each polygonal leaf of a composite input
 // (ParaView's representations, vtkCompositePolyDataMapper2) is a mesh of its actor.
 void AddDrawnMeshes(vtkActor* actor, vtkMatrix4x4* matrix, vtkNPRDrawnAs drawnAs,
@@ -120,7 +166,7 @@ void AddDrawnMeshes(vtkActor* actor, vtkMatrix4x4* matrix, vtkNPRDrawnAs drawnAs
 {
   vtkMapper* mapper = actor->GetMapper();
   if ((!vtkPolyDataMapper::SafeDownCast(mapper) && !vtkDataSetMapper::SafeDownCast(mapper)) ||
-    !(drawnAs == vtkNPRDrawnAs::Surfaces ? ShowsSurfaces(actor) : ShowsPoints(actor)))
+    !DrawnAs(actor, drawnAs))
   {
     return;
   }
@@ -332,14 +378,19 @@ void vtkNPRSceneLines::Update(
   start = Clock::now();
   this->UpdateOccluders(actors, settings, trianglesPerLocator, nodes);
   this->LocatorTime = Seconds(start);
+  this->LineMeshes = actors;
   if (settings.LinePrimitives)
   {
+    const std::vector<vtkNPRMeshInstance> wireframes =
+      vtkNPRDrawnMeshes(renderer, vtkNPRDrawnAs::Wireframe);
+    this->LineMeshes.insert(this->LineMeshes.end(), wireframes.begin(), wireframes.end());
     vtkIdType firstNode = 0;
     for (const Segment& segment : this->Segments)
     {
       firstNode = std::max({ firstNode, segment.NodeA + 1, segment.NodeB + 1 });
     }
-    this->AppendLinePrimitives(actors, firstNode);
+    firstNode = this->AppendLinePrimitives(this->LineMeshes, firstNode);
+    this->AppendMeshEdges(this->LineMeshes, actors.size(), firstNode);
   }
 }
 
@@ -417,7 +468,7 @@ void vtkNPRSceneLines::AppendSegments(vtkPolyData* output, const vtkNPRMeshInsta
   }
 }
 
-void vtkNPRSceneLines::AppendLinePrimitives(
+vtkIdType vtkNPRSceneLines::AppendLinePrimitives(
   const std::vector<vtkNPRMeshInstance>& actors, vtkIdType firstNode)
 {
   for (size_t mesh = 0; mesh < actors.size(); ++mesh)
@@ -456,6 +507,54 @@ void vtkNPRSceneLines::AppendLinePrimitives(
       }
     }
     firstNode += state.Mesh->GetNumberOfPoints();
+  }
+  return firstNode;
+}
+
+void vtkNPRSceneLines::AppendMeshEdges(
+  const std::vector<vtkNPRMeshInstance>& meshes, size_t firstWireframe, vtkIdType firstNode)
+{
+  for (size_t mesh = 0; mesh < meshes.size(); ++mesh)
+  {
+    const vtkNPRMeshInstance& state = meshes[mesh];
+    vtkPoints* points = state.Mesh->GetPoints();
+    const vtkIdType count = points ? points->GetNumberOfPoints() : 0;
+    if (points && (mesh >= firstWireframe || state.Actor->GetProperty()->GetEdgeVisibility()))
+    {
+      // Each edge once: its two point ids, the smaller first, sorted.
+      std::vector<std::pair<vtkIdType, vtkIdType>> edges;
+      ForEachPolygonEdge(state.Mesh,
+        [&](vtkIdType a, vtkIdType b)
+        {
+          if (a != b && a >= 0 && b >= 0 && a < count && b < count)
+          {
+            edges.emplace_back(std::min(a, b), std::max(a, b));
+          }
+        });
+      std::sort(edges.begin(), edges.end());
+      edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+      for (const auto& edge : edges)
+      {
+        Segment segment;
+        double a[3], b[3];
+        points->GetPoint(edge.first, a);
+        points->GetPoint(edge.second, b);
+        vtkNPRTransformPoint(state.Matrix.data(), a, segment.A);
+        vtkNPRTransformPoint(state.Matrix.data(), b, segment.B);
+        if (!std::all_of(segment.A, segment.A + 3, [](double v) { return std::isfinite(v); }) ||
+          !std::all_of(segment.B, segment.B + 3, [](double v) { return std::isfinite(v); }))
+        {
+          continue;
+        }
+        segment.Type = vtkNPRFeatureLines::MESH_EDGE;
+        segment.NodeA = firstNode + edge.first;
+        segment.NodeB = firstNode + edge.second;
+        std::fill_n(segment.Triangle, 3, -1);
+        segment.Mesh = static_cast<int>(mesh);
+        this->Segments.push_back(segment);
+      }
+    }
+    firstNode += count;
   }
 }
 

@@ -27,15 +27,17 @@ class vtkRenderer;
 bool vtkNPRImageSize(vtkRenderer* renderer, const int size[2], int& width, int& height);
 
 // How the actors vtkNPRDrawnMeshes() lists draw their meshes: as surfaces (the Surface
-// representation), or as point clouds (the Points representation).
+// representation), as point clouds (the Points representation) or as the edges of their polygons
+// (the Wireframe representation).
 enum class vtkNPRDrawnAs
 {
   Surfaces,
-  Points
+  Points,
+  Wireframe
 };
 
 // The meshes of the renderer's visible, opaque vtkActors drawn by a vtkPolyDataMapper (or a
-// vtkDataSetMapper of a vtkPolyData) as surfaces (or, with vtkNPRDrawnAs::Points, as points),
+// vtkDataSetMapper of a vtkPolyData) as surfaces (or as points, or as wireframes: vtkNPRDrawnAs),
 // those inside assemblies included (vtkNPRPropParts), each polygonal leaf of a composite input a
 // mesh of its actor; their inputs brought up to date.
 std::vector<vtkNPRMeshInstance> vtkNPRDrawnMeshes(
@@ -75,15 +77,17 @@ public:
   {
     bool Silhouettes = true, Creases = true, Boundaries = true, NonManifoldEdges = true;
     bool SmoothContours = false;
-    bool Intersections = false;  // crossing surfaces at more than CreaseAngle, as creases
-    bool LinePrimitives = false; // the meshes' line cells, as LINE segments
+    bool Intersections = false; // crossing surfaces at more than CreaseAngle, as creases
+    // The meshes' line cells as LINE segments, and the polygon edges of the wireframe meshes and
+    // of the surfaces with EdgeVisibility as MESH_EDGE segments.
+    bool LinePrimitives = false;
     double CreaseAngle = 30.0;
   };
   // A feature edge in world coordinates; Nodes identify its end points across the scene (the
   // same mesh vertex of the same actor, or the same crossed edge of a smooth contour: the same
   // node). Triangle: for a smooth contour, the scene point ids (vtkNPROccluders's numbering)
-  // of the triangle it lies on; -1 otherwise. Mesh: the index of its mesh in GetMeshes(), -1 for
-  // a crossing of two.
+  // of the triangle it lies on; -1 otherwise. Mesh: the index of its mesh in GetLineMeshes(), -1
+  // for a crossing of two.
   struct Segment
   {
     double A[3], B[3];
@@ -105,6 +109,9 @@ public:
   const std::vector<Segment>& GetSegments() const { return this->Segments; }
   // The meshes of the last Update() (the actors' meshes as drawn).
   const std::vector<vtkNPRMeshInstance>& GetMeshes() const { return this->LocatorState; }
+  // The meshes the segments' Mesh indices refer to: GetMeshes(), then (with LinePrimitives) the
+  // meshes drawn as wireframes.
+  const std::vector<vtkNPRMeshInstance>& GetLineMeshes() const { return this->LineMeshes; }
   const vtkNPROccluders& GetOccluders() const { return this->Occluders; }
   vtkIdType GetNumberOfLocatorBuilds() const { return this->LocatorBuilds; }
   vtkIdType GetNumberOfAdjacencyBuilds() const;
@@ -124,8 +131,14 @@ private:
     const std::vector<vtkNPRMeshInstance>& actors, vtkCamera* camera, const Settings& settings);
   void AppendSegments(vtkPolyData* output, const vtkNPRMeshInstance& state, int mesh,
     vtkIdType nodeOffset, vtkIdType pointOffset);
-  // The meshes' line cells as LINE segments, their nodes from firstNode on.
-  void AppendLinePrimitives(const std::vector<vtkNPRMeshInstance>& actors, vtkIdType firstNode);
+  // The meshes' line cells as LINE segments, their nodes from firstNode on; returns the next
+  // free node.
+  vtkIdType AppendLinePrimitives(
+    const std::vector<vtkNPRMeshInstance>& actors, vtkIdType firstNode);
+  // Each polygon edge of the wireframe meshes (those from firstWireframe on) and of the surfaces
+  // with EdgeVisibility, once, as a MESH_EDGE segment; nodes from firstNode on.
+  void AppendMeshEdges(
+    const std::vector<vtkNPRMeshInstance>& meshes, size_t firstWireframe, vtkIdType firstNode);
   void UpdateOccluders(const std::vector<vtkNPRMeshInstance>& actors, const Settings& settings,
     int trianglesPerLocator, vtkIdType nodeOffset);
   // The crossings at more than the crease angle as segments, their ends chained (nodes from
@@ -143,6 +156,7 @@ private:
   std::map<MeshKey, LinesEntry> Lines;
   std::vector<Segment> Segments;
   std::vector<vtkNPRMeshInstance> LocatorState; // what the occluders were built from
+  std::vector<vtkNPRMeshInstance> LineMeshes;   // LocatorState, then the wireframe meshes
   int LocatorTrianglesPerLocator = 0;
   vtkNPROccluders Occluders;
   vtkIdType LocatorBuilds = 0;

@@ -27,9 +27,10 @@
  * - Order and structure: background, raster or faces, hidden strokes, then the visible silhouettes,
  *   boundaries, creases, non-manifold edges, intersection curves and, where no image is embedded,
  *   the scene's own line cells (an outline box, axes: vtkNPRDrawingLines' LinePrimitives, hidden
- *   where behind a surface, each in its actor's colour and line width), its point primitives
- *   (vertex cells and point clouds: PointPrimitives; squares of the actor's PointSize, discs
- *   where it renders points as spheres, in the point's colour; a hidden point is left out) and,
+ *   where behind a surface, each in its actor's colour and line width) and the polygon edges of
+ *   its wireframes and of its surfaces with EdgeVisibility (in their EdgeColor), its point
+ * primitives (vertex cells and point clouds: PointPrimitives; squares of the actor's PointSize,
+ * discs where it renders points as spheres, in the point's colour; a hidden point is left out) and,
  *   with Overlays on, its 2D props over everything: text (vtkTextActor, or a vtkActor2D of a
  *   vtkTextMapper) as the glyph outlines VTK's text renderer gives, and every other 2D prop (a
  *   scalar bar, a corner annotation, a logo) as one embedded image of its own pixels, with

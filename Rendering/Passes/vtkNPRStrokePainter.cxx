@@ -27,9 +27,9 @@
 
 namespace
 {
-// The vtkNPRFeatureLines::FeatureTypes bits (Lines's header is not needed for four values).
+// The vtkNPRFeatureLines::FeatureTypes bits (Lines's header is not needed for a few values).
 constexpr unsigned char SilhouetteBit = 1, CreaseBit = 2, BoundaryBit = 4, NonManifoldBit = 8,
-                        IntersectionBit = 32, LineBit = 64;
+                        IntersectionBit = 32, LineBit = 64, MeshEdgeBit = 128;
 
 // The class of a visible stroke of this line type; -1 for an unknown type.
 int VisibleClass(unsigned char type)
@@ -47,6 +47,7 @@ int VisibleClass(unsigned char type)
     case IntersectionBit:
       return NPR_STROKES_INTERSECTION;
     case LineBit:
+    case MeshEdgeBit:
       return NPR_STROKES_LINE;
     default:
       return -1;
@@ -65,7 +66,8 @@ bool Drawn(const vtkNPRStrokeStyle& style, unsigned char type)
   {
     return style.Creases;
   }
-  return type == LineBit; // the scene's own lines, when the strokes have them
+  return type == LineBit ||
+    type == MeshEdgeBit; // the scene's own lines, when the strokes have them
 }
 }
 

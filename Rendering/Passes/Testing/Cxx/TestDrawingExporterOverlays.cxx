@@ -11,7 +11,10 @@
 //   image of its pixels; the window's picture is the same after the export as before it, with
 //   and without a vtkNPRPass; Overlays off leaves them out; the PDF has the texts too.
 //
-// usage: TestDrawingExporter points|overlays [DATA_DIR]
+// - "wireframe": the polygon edges of a surface with EdgeVisibility (its EdgeColor) and of a
+//   wireframe (its colour), hidden where VTK hides them, against the render's pixels of each.
+//
+// usage: TestDrawingExporter points|overlays|wireframe [DATA_DIR]
 #include "TestDrawingExporter.h"
 #include "nprTestImages.h"
 
@@ -19,6 +22,7 @@
 #include "vtkActor2D.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCubeSource.h"
 #include "vtkElevationFilter.h"
 #include "vtkImageData.h"
 #include "vtkLookupTable.h"
@@ -251,6 +255,68 @@ int Points()
   return nprTestResult();
 }
 NPR_TEST_CASE("points", Points);
+
+// A sphere drawn with its edges (EdgeVisibility, blue) and a cube as a wireframe (red) around
+// it: the edges are strokes of their colours (class npr-line), the sphere's back edges and the
+// cube's edges behind the sphere left out, as in the render.
+int Wireframe()
+{
+  vtkSmartPointer<vtkRenderWindow> window = nprCreateTestWindow(Width, Height, nullptr);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(0.8);
+  sphere->SetThetaResolution(12);
+  sphere->SetPhiResolution(8);
+  sphere->Update();
+  vtkActor* edged = AddActor(renderer, sphere->GetOutput(), 0.8, 0.8, 0.8);
+  edged->GetProperty()->EdgeVisibilityOn();
+  edged->GetProperty()->SetEdgeColor(0.0, 0.0, 1.0);
+  edged->GetProperty()->SetLineWidth(2.0);
+  vtkNew<vtkCubeSource> cube;
+  cube->SetXLength(2.2);
+  cube->SetYLength(1.4);
+  cube->SetZLength(1.4);
+  cube->Update();
+  vtkActor* wireframe = AddActor(renderer, cube->GetOutput(), 1.0, 0.0, 0.0);
+  wireframe->GetProperty()->SetRepresentationToWireframe();
+  wireframe->GetProperty()->SetLineWidth(2.0);
+  Frame(renderer, 1.0);
+  renderer->GetActiveCamera()->Azimuth(30.0);
+  renderer->GetActiveCamera()->Elevation(20.0);
+  renderer->ResetCameraClippingRange();
+  window->Render();
+  vtkSmartPointer<vtkImageData> render = nprCaptureImage(window);
+  nprSavePNG(render, nprTestOutputPath("wireframe_render.png")); // beside the file's raster
+
+  vtkNew<vtkNPRPass> linesOff; // the file's faces and the scene's own lines alone
+  linesOff->GetEdgePass()->SetSilhouettes(false);
+  linesOff->GetEdgePass()->SetCreases(false);
+  renderer->SetPass(linesOff);
+  vtkNew<vtkNPRDrawingExporter> exporter;
+  vtkSmartPointer<vtkImageData> file = Export(renderer, "wireframe.svg", exporter);
+  renderer->SetPass(nullptr);
+  std::cout << "wireframe: " << exporter->GetNumberOfStrokes(6) << " line strokes\n";
+  NPR_CHECK(exporter->GetNumberOfStrokes(6) >= 12, exporter->GetNumberOfStrokes(6) << " strokes");
+  if (!file || !render)
+  {
+    return nprTestResult();
+  }
+  const Colour blue = [](int r, int g, int b) { return b > r + 80 && b > g + 80; };
+  const Colour red = [](int r, int g, int b) { return r > g + 80 && r > b + 80; };
+  const std::pair<const char*, Colour> colours[] = { { "sphere edges", blue },
+    { "wireframe", red } };
+  for (const auto& entry : colours)
+  {
+    int inRender, inFile;
+    const double f1 = Match(render, file, entry.second, Box(), inRender, inFile);
+    std::cout << entry.first << " pixels: render " << inRender << ", file " << inFile
+              << ", F1 within 1 px " << f1 << "\n";
+    NPR_CHECK(inRender > 200 && f1 >= 0.9, entry.first << ": F1 " << f1 << " (0.9 required)");
+  }
+  return nprTestResult();
+}
+NPR_TEST_CASE("wireframe", Wireframe);
 
 // The overlays' scene: a sphere coloured by elevation with its scalar bar on the right, and three
 // texts in the corners, over the background.
