@@ -323,6 +323,11 @@ bool vtkNPRDrawingExporter::Write()
     (this->EmbedImage == 1 || (this->EmbedImage == -1 && !target.DrawingStyle && !this->FillFaces)))
   {
     raster = vtkNPRGrabViewport(target.Renderer);
+    if (raster->GetNumberOfPoints() == 0)
+    {
+      vtkWarningMacro(<< target.Path << ": the window's image could not be read: none is embedded");
+      raster = nullptr;
+    }
   }
   // Without the image under them the scene's own line and point cells (an outline, axes, a
   // point cloud) are vector too, and so are its 2D props (text, scalar bars) over them.

@@ -9,6 +9,7 @@
 #include "vtkNPRVectorFile.h"
 #include "vtkNew.h"
 #include "vtkPath.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkProp3D.h"
 #include "vtkPropCollection.h"
@@ -21,7 +22,7 @@
 #include "vtkTextMapper.h"
 #include "vtkTextProperty.h"
 #include "vtkTextRenderer.h"
-#include "vtkWindowToImageFilter.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <cairo.h>
 
@@ -31,14 +32,28 @@
 
 vtkSmartPointer<vtkImageData> vtkNPRGrabViewport(vtkRenderer* renderer)
 {
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(renderer->GetRenderWindow());
-  grab->SetViewport(renderer->GetViewport());
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->ShouldRerenderOn();
-  grab->Update();
-  return grab->GetOutput();
+  // Rendered without a swap, so that the back buffer keeps the frame (and a window on screen
+  // keeps showing its own picture), then read. Not through vtkWindowToImageFilter: it crashes on
+  // PyVista's windows (VTK 9.3 and 9.6, even without rendering again).
+  vtkRenderWindow* window = renderer->GetRenderWindow();
+  const vtkTypeBool swap = window->GetSwapBuffers();
+  window->SwapBuffersOff();
+  window->Render();
+  window->SetSwapBuffers(swap);
+  const int* origin = renderer->GetOrigin();
+  const int* size = renderer->GetSize();
+  const int x0 = origin[0], y0 = origin[1], width = size[0], height = size[1];
+  vtkNew<vtkUnsignedCharArray> pixels;
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  if (width <= 0 || height <= 0 ||
+    !window->GetPixelData(x0, y0, x0 + width - 1, y0 + height - 1, 0, pixels, 0) ||
+    pixels->GetNumberOfTuples() != static_cast<vtkIdType>(width) * height)
+  {
+    return image; // empty: nothing to embed
+  }
+  image->SetDimensions(width, height, 1);
+  image->GetPointData()->SetScalars(pixels);
+  return image;
 }
 
 namespace
