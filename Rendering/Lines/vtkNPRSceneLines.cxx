@@ -126,6 +126,32 @@ void ForEachPolygonEdge(vtkPolyData* mesh, Edge&& edge)
   }
 }
 
+// Appends the segment between points a and b of a mesh, in world coordinates, as a line of the
+// scene (`type` LINE or MESH_EDGE; nodes the mesh's point ids from firstNode on); nothing where a
+// point is not finite.
+void AppendPrimitive(const vtkNPRMeshInstance& state, int mesh, vtkIdType a, vtkIdType b,
+  unsigned char type, vtkIdType firstNode, std::vector<vtkNPRSceneLines::Segment>& segments)
+{
+  vtkNPRSceneLines::Segment segment;
+  double x[3];
+  state.Mesh->GetPoints()->GetPoint(a, x);
+  vtkNPRTransformPoint(state.Matrix.data(), x, segment.A);
+  state.Mesh->GetPoints()->GetPoint(b, x);
+  vtkNPRTransformPoint(state.Matrix.data(), x, segment.B);
+  auto finite = [](const double p[3])
+  { return std::all_of(p, p + 3, [](double v) { return std::isfinite(v); }); };
+  if (!finite(segment.A) || !finite(segment.B))
+  {
+    return;
+  }
+  segment.Type = type;
+  segment.NodeA = firstNode + a;
+  segment.NodeB = firstNode + b;
+  std::fill_n(segment.Triangle, 3, -1);
+  segment.Mesh = mesh;
+  segments.push_back(segment);
+}
+
 // Whether the actor shows surfaces: not a point cloud or a wireframe (the Points and Wireframe
 // representations, vtkPointGaussianMapper splats), which has no outline or creases of its own.
 bool ShowsSurfaces(vtkActor* actor)
@@ -486,23 +512,8 @@ vtkIdType vtkNPRSceneLines::AppendLinePrimitives(
         iterator->GetCurrentCell(size, ids);
         for (vtkIdType k = 0; k + 1 < size; ++k) // a polyline's segments
         {
-          Segment segment;
-          double a[3], b[3];
-          points->GetPoint(ids[k], a);
-          points->GetPoint(ids[k + 1], b);
-          vtkNPRTransformPoint(state.Matrix.data(), a, segment.A);
-          vtkNPRTransformPoint(state.Matrix.data(), b, segment.B);
-          if (!std::all_of(segment.A, segment.A + 3, [](double v) { return std::isfinite(v); }) ||
-            !std::all_of(segment.B, segment.B + 3, [](double v) { return std::isfinite(v); }))
-          {
-            continue;
-          }
-          segment.Type = vtkNPRFeatureLines::LINE;
-          segment.NodeA = firstNode + ids[k];
-          segment.NodeB = firstNode + ids[k + 1];
-          std::fill_n(segment.Triangle, 3, -1);
-          segment.Mesh = static_cast<int>(mesh);
-          this->Segments.push_back(segment);
+          AppendPrimitive(state, static_cast<int>(mesh), ids[k], ids[k + 1],
+            vtkNPRFeatureLines::LINE, firstNode, this->Segments);
         }
       }
     }
@@ -535,23 +546,8 @@ void vtkNPRSceneLines::AppendMeshEdges(
       edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
       for (const auto& edge : edges)
       {
-        Segment segment;
-        double a[3], b[3];
-        points->GetPoint(edge.first, a);
-        points->GetPoint(edge.second, b);
-        vtkNPRTransformPoint(state.Matrix.data(), a, segment.A);
-        vtkNPRTransformPoint(state.Matrix.data(), b, segment.B);
-        if (!std::all_of(segment.A, segment.A + 3, [](double v) { return std::isfinite(v); }) ||
-          !std::all_of(segment.B, segment.B + 3, [](double v) { return std::isfinite(v); }))
-        {
-          continue;
-        }
-        segment.Type = vtkNPRFeatureLines::MESH_EDGE;
-        segment.NodeA = firstNode + edge.first;
-        segment.NodeB = firstNode + edge.second;
-        std::fill_n(segment.Triangle, 3, -1);
-        segment.Mesh = static_cast<int>(mesh);
-        this->Segments.push_back(segment);
+        AppendPrimitive(state, static_cast<int>(mesh), edge.first, edge.second,
+          vtkNPRFeatureLines::MESH_EDGE, firstNode, this->Segments);
       }
     }
     firstNode += count;
