@@ -386,7 +386,7 @@ struct OverlayScene
 
 // The bar's pixels: the share of its box's pixels in the file that differ from the render by
 // more than 24 in a channel.
-double BarDifference(OverlayScene& scene, vtkImageData* render, vtkImageData* file)
+double BarDifference(vtkImageData* render, vtkImageData* file)
 {
   const int x0 = static_cast<int>(0.82 * Width), x1 = static_cast<int>(0.98 * Width);
   const int y0 = static_cast<int>(0.1 * Height), y1 = static_cast<int>(0.9 * Height);
@@ -403,7 +403,6 @@ double BarDifference(OverlayScene& scene, vtkImageData* render, vtkImageData* fi
       differing += worst > 24 ? 1 : 0;
     }
   }
-  (void)scene;
   return static_cast<double>(differing) / all;
 }
 
@@ -448,7 +447,7 @@ int Overlays()
     NPR_CHECK(
       inRender > 50 && f1 >= 0.95, std::get<0>(text) << ": F1 " << f1 << " (0.95 required)");
   }
-  const double bar = BarDifference(scene, render, file);
+  const double bar = BarDifference(render, file);
   std::cout << "scalar bar: " << 100.0 * bar << " % of its box's pixels differ\n";
   NPR_CHECK(bar <= 0.01, 100.0 * bar << " % of the bar's pixels differ (1 % allowed)");
 
