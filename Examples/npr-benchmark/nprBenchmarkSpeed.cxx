@@ -162,6 +162,11 @@ std::vector<SpeedMethod> MakeMethods()
   };
   methods.push_back({ "edges-silhouettes", "vtkNPRPass edges, silhouettes only", edgesWith(true) });
   methods.push_back({ "edges-floor", "vtkNPRPass edges, every line type off", edgesWith(false) });
+  // The composite before it was drawn over the blocks near lines alone: one full-screen pass.
+  auto fullComposite = NPRStyle("edges");
+  vtkNPRPass::SafeDownCast(fullComposite)->GetEdgePass()->SkipLineFreeBlocksOff();
+  methods.push_back(
+    { "edges-full-composite", "vtkNPRPass edges, composite over every pixel", fullComposite });
   // The bound under the floor: the G-buffer drawn as the edge style draws it (normals, ids) and
   // nothing shown from it, so the floor's difference to it is the copy into the window.
   methods.push_back(

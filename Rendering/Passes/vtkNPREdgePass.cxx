@@ -5,6 +5,7 @@
 #include "vtkCamera.h"
 #include "vtkMath.h"
 #include "vtkNPRGBufferPass.h"
+#include "vtkNPRLineBlocks.h"
 #include "vtkNPRLineFilter.h"
 #include "vtkNPROpenGL.h"
 #include "vtkNPRPassUtilities.h"
@@ -70,6 +71,7 @@ struct vtkNPREdgePass::Internals
   vtkNPRQuadProgram Coverage;  // each type's coverage and depth, for vtkNPRSketchPass
   std::string CompositeSource;
   vtkNPRRenderTarget Target;
+  vtkNPRLineBlocks Blocks; // SkipLineFreeBlocks
   vtkNPRQuadProgram Limit; // MaximumLineFraction
   vtkTextureObject* LineTexture = nullptr;
   vtkTextureObject* LimitedLineTexture = nullptr; // the line image the limit drew
@@ -87,6 +89,20 @@ struct vtkNPREdgePass::Internals
   bool LineImageValid = false;
   bool WarnedAboutEncoding = false;
   vtkNPRLineFilter Filter;
+
+  // The composite's shader with its shared snippets in place.
+  const std::string& GetCompositeSource()
+  {
+    if (this->CompositeSource.empty())
+    {
+      this->CompositeSource = vtkNPREdgeCompositeFS;
+      vtkShaderProgram::Substitute(this->CompositeSource, "//NPR::LineColor", vtkNPRLineColor);
+      vtkShaderProgram::Substitute(this->CompositeSource, "//NPR::WindowDepth", vtkNPRWindowDepth);
+      vtkShaderProgram::Substitute(
+        this->CompositeSource, "//NPR::NearestDepth", vtkNPRNearestDepth);
+    }
+    return this->CompositeSource;
+  }
 };
 
 vtkStandardNewMacro(vtkNPREdgePass);
@@ -352,7 +368,7 @@ void vtkNPREdgePass::SetDetectUniforms(vtkShaderProgram* program, int encoding)
   }
 }
 
-std::string vtkNPREdgePass::GetCompositeDefines(vtkRenderer* renderer, int output)
+std::string vtkNPREdgePass::GetCompositeDefines(vtkRenderer* renderer, int output, bool lines)
 {
   Internals& internal = *this->Internal;
   double widths[4];
@@ -366,7 +382,7 @@ std::string vtkNPREdgePass::GetCompositeDefines(vtkRenderer* renderer, int outpu
     internal.Filter.Compute(widths);
   }
   std::ostringstream defines;
-  defines << "#define NPR_LINES " << (this->GetDrawsLines() ? 1 : 0) << "\n#define NPR_TAPS "
+  defines << "#define NPR_LINES " << (lines ? 1 : 0) << "\n#define NPR_TAPS "
           << internal.Filter.Taps.size() / 3 << "\n#define NPR_RADIUS "
           << internal.Filter.Radius + 1 << "\n#define NPR_ANTIALIAS "
           << (this->AntiAliasing ? 1 : 0) << "\n#define NPR_OUTPUT " << output
@@ -397,7 +413,8 @@ std::string vtkNPREdgePass::GetCompositeKey(vtkRenderer* renderer)
   std::ostringstream key;
   key.precision(17);
   // The line image's settings and content change its update count.
-  key << this->GetCompositeDefines(renderer, OutputComposite) << this->NumberOfLineImageUpdates;
+  key << this->GetCompositeDefines(renderer, OutputComposite, this->GetDrawsLines())
+      << this->NumberOfLineImageUpdates << " " << this->SkipLineFreeBlocks;
   for (const double width : this->Internal->Filter.Widths) // as GetCompositeDefines computed them
   {
     key << " " << width;
@@ -422,41 +439,108 @@ bool vtkNPREdgePass::DrawLines(const vtkRenderState* state, const int origin[2],
   Internals& internal = *this->Internal;
   vtkRenderer* renderer = state->GetRenderer();
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  if (internal.CompositeSource.empty())
-  {
-    internal.CompositeSource = vtkNPREdgeCompositeFS;
-    vtkShaderProgram::Substitute(internal.CompositeSource, "//NPR::LineColor", vtkNPRLineColor);
-    vtkShaderProgram::Substitute(internal.CompositeSource, "//NPR::WindowDepth", vtkNPRWindowDepth);
-    vtkShaderProgram::Substitute(
-      internal.CompositeSource, "//NPR::NearestDepth", vtkNPRNearestDepth);
-  }
-  vtkNPRQuadProgram& composite =
-    output == OutputLineCoverage ? internal.Coverage : internal.Composite;
-  vtkShaderProgram* program =
-    composite.Ready(window, internal.CompositeSource, this->GetCompositeDefines(renderer, output));
-  if (!program)
-  {
-    vtkErrorMacro("the line composite shader did not compile");
-    return false;
-  }
+  const std::string defines = this->GetCompositeDefines(renderer, output, this->GetDrawsLines());
   vtkNPRGBufferPass* gbuffer = this->GBufferPass;
   vtkTextureObject* color = gbuffer->GetColorTexture();
   vtkTextureObject* depth = gbuffer->GetDepthTexture();
   const bool lines = this->GetDrawsLines();
+  // The blocks first: marking them binds and releases the line image.
+  const bool overBlocks =
+    output == OutputComposite && this->SkipsLineFreeBlocks() && this->UpdateLineBlocks(window);
   color->Activate();
   depth->Activate();
   if (lines)
   {
     internal.DrawnLines()->Activate();
   }
-  this->SetCompositeUniforms(program, origin, renderer);
-  composite.Render();
+  bool drawn = false;
+  if (overBlocks)
+  {
+    drawn = this->DrawOverBlocks(window, renderer, origin, defines);
+  }
+  else
+  {
+    vtkNPRQuadProgram& composite =
+      output == OutputLineCoverage ? internal.Coverage : internal.Composite;
+    vtkShaderProgram* program = composite.Ready(window, internal.GetCompositeSource(), defines);
+    if (program)
+    {
+      this->SetCompositeUniforms(program, origin, renderer);
+      composite.Render();
+      drawn = true;
+    }
+  }
   color->Deactivate();
   depth->Deactivate();
   if (lines)
   {
     internal.DrawnLines()->Deactivate();
   }
+  if (!drawn)
+  {
+    vtkErrorMacro("the line composite shader did not compile");
+  }
+  return drawn;
+}
+
+bool vtkNPREdgePass::SkipsLineFreeBlocks() const
+{
+  // Only where a pixel that no line value reaches comes out as the surfaces' copy: its coverage,
+  // clamp(0.5 - level / slope), is zero (a margin for the shader's single precision).
+  const vtkNPRLineFilter& filter = this->Internal->Filter;
+  auto zeroWithoutLine = [](const float level[4], const float slope[4])
+  {
+    for (int kind = 0; kind < 4; ++kind)
+    {
+      if (!(level[kind] > 0.0f && slope[kind] > 0.0f && level[kind] / slope[kind] > 0.5001f))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  bool zero = zeroWithoutLine(filter.CoverageLevel, filter.CoverageSlope);
+  for (int step = 0; zero && filter.HasFalloff() && step < vtkNPRLineFilter::FalloffSteps; ++step)
+  {
+    zero = zeroWithoutLine(filter.FalloffLevels[step], filter.FalloffSlopes[step]);
+  }
+  return this->SkipLineFreeBlocks && this->GetDrawsLines() && (zero || !this->AntiAliasing);
+}
+
+bool vtkNPREdgePass::UpdateLineBlocks(vtkOpenGLRenderWindow* window)
+{
+  Internals& internal = *this->Internal;
+  // A filtered line value needs a texel within the farthest tap's bilinear reach.
+  float farthest = 0.0f;
+  for (size_t i = 0; i < internal.Filter.Taps.size(); i += 3)
+  {
+    farthest = std::max(
+      { farthest, std::abs(internal.Filter.Taps[i]), std::abs(internal.Filter.Taps[i + 1]) });
+  }
+  const int reach = static_cast<int>(std::ceil(farthest)) + 1;
+  return internal.Blocks.Update(window, internal.DrawnLines(), this->NumberOfLineImageUpdates,
+    reach, this->GBufferPass->GetContentRectangle());
+}
+
+bool vtkNPREdgePass::DrawOverBlocks(vtkOpenGLRenderWindow* window, vtkRenderer* renderer,
+  const int origin[2], const std::string& lineDefines)
+{
+  Internals& internal = *this->Internal;
+  // The lines' composite near them, the surfaces' copy (the composite without lines) elsewhere.
+  const std::string& source = internal.GetCompositeSource();
+  const std::string copyDefines = this->GetCompositeDefines(renderer, OutputComposite, false);
+  for (const bool near : { true, false })
+  {
+    vtkShaderProgram* program =
+      internal.Blocks.Ready(window, source, near ? lineDefines : copyDefines);
+    if (!program)
+    {
+      return false;
+    }
+    this->SetCompositeUniforms(program, origin, renderer);
+    internal.Blocks.Draw(program, near);
+  }
+  ++this->NumberOfBlockComposites;
   return true;
 }
 
@@ -528,6 +612,7 @@ void vtkNPREdgePass::ReleaseGraphicsResources(vtkWindow* window)
   ReleaseLineTexture(internal.LineTexture, window);
   ReleaseLineTexture(internal.LimitedLineTexture, window);
   internal.Target.ReleaseGraphicsResources(window);
+  internal.Blocks.ReleaseGraphicsResources(window);
   internal.LineImageValid = false;
 }
 
@@ -559,5 +644,7 @@ void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
      << this->PackedThreshold << " blur " << this->PackedBlur << "\n";
   os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";
   os << indent << "CoverageOnly: " << this->CoverageOnly << "\n";
+  os << indent << "SkipLineFreeBlocks: " << this->SkipLineFreeBlocks << "\n";
   os << indent << "NumberOfLineImageUpdates: " << this->NumberOfLineImageUpdates << "\n";
+  os << indent << "NumberOfBlockComposites: " << this->NumberOfBlockComposites << "\n";
 }

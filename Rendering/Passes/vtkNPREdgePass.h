@@ -381,6 +381,24 @@ public:
   // KeepUnchangedComposite (vtkNPRImageEffectPass): lines only; CoverageOnly and
   // RenderLineCoverage() always draw.
 
+  ///@{
+  /**
+   * Composite the lines only over the 16 x 16 pixel blocks a line can reach, and copy the
+   * surfaces elsewhere (on by default). The picture is the same bit for bit; what changes is
+   * the cost: the line composite's code runs only where lines are. Off: one full-screen
+   * composite. Lines over the shaded colour only; CoverageOnly and RenderLineCoverage() draw
+   * everything, and so does a line width whose mapping covers pixels without a line value.
+   */
+  vtkSetMacro(SkipLineFreeBlocks, bool);
+  vtkGetMacro(SkipLineFreeBlocks, bool);
+  vtkBooleanMacro(SkipLineFreeBlocks, bool);
+  ///@}
+
+  /**
+   * Number of composites drawn over the blocks near lines (SkipLineFreeBlocks).
+   */
+  vtkGetMacro(NumberOfBlockComposites, int);
+
 protected:
   vtkNPREdgePass();
   ~vtkNPREdgePass() override;
@@ -428,7 +446,9 @@ protected:
   bool PackedBlur = false;
   bool AntiAliasing = true;
   bool CoverageOnly = false;
+  bool SkipLineFreeBlocks = true;
   int NumberOfLineImageUpdates = 0;
+  int NumberOfBlockComposites = 0;
 
 private:
   vtkNPREdgePass(const vtkNPREdgePass&) = delete;
@@ -448,8 +468,13 @@ private:
   void DrawLineImage(
     vtkOpenGLRenderWindow* window, vtkTextureObject* image, vtkNPRQuadProgram& program);
   // The composite of the lines (and colour and depth, or the mask, or the coverage).
-  std::string GetCompositeDefines(vtkRenderer* renderer, int output);
+  std::string GetCompositeDefines(vtkRenderer* renderer, int output, bool lines);
   bool DrawLines(const vtkRenderState* state, const int origin[2], int output);
+  // SkipLineFreeBlocks: whether this composite can, and the composite drawn so.
+  bool SkipsLineFreeBlocks() const;
+  bool UpdateLineBlocks(vtkOpenGLRenderWindow* window);
+  bool DrawOverBlocks(vtkOpenGLRenderWindow* window, vtkRenderer* renderer, const int origin[2],
+    const std::string& lineDefines);
   void SetCompositeUniforms(vtkShaderProgram* program, const int origin[2], vtkRenderer* renderer);
 
   struct Internals;

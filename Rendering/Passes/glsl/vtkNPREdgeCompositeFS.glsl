@@ -55,20 +55,21 @@ float nprFalloffPosition(float window)
 void main()
 {
   vec4 coverage = vec4(0.0);
-#if !NPR_LINES
   if (texCoord.x < -1.0)
   {
     discard; // never: texCoord is read so that VTK does not warn about an unread input
   }
-#endif
+  ivec2 p = ivec2(gl_FragCoord.xy) - viewportOrigin;
 #if NPR_LINES
+  // The taps from the pixel's centre as its window position gives it, not from texCoord: the
+  // same value whether the full-screen quad or vtkNPRLineBlocks' block quads are drawn.
+  vec2 centre = vec2(p) + 0.5;
   vec4 lines = vec4(0.0);
   for (int i = 0; i < NPR_TAPS; ++i)
   {
-    lines += taps[i].z * texture(lineTexture, texCoord + taps[i].xy * texelSize);
+    lines += taps[i].z * texture(lineTexture, (centre + taps[i].xy) * texelSize);
   }
 #endif
-  ivec2 p = ivec2(gl_FragCoord.xy) - viewportOrigin;
   float depth = texelFetch(depthTexture, p, 0).r;
 #if NPR_LINES
   vec4 level = coverageLevel;

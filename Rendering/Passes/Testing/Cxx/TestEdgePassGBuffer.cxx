@@ -4,7 +4,8 @@
 // frame reuses the G-buffer and the line image, every kind of change redraws once, a line setting
 // recomputes the lines only; only the channels the lines need are written, and nothing for an
 // empty renderer or the shaded style; an unchanged frame copies back the kept composite, bit for
-// bit, and only where that is safe, in every style that composites (edges, sketch, drawing).
+// bit, and only where that is safe, in every style that composites (edges, sketch, drawing); the
+// composite drawn over the blocks near lines alone is the full one, bit for bit.
 //
 // usage: TestEdgePassGBuffer CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprTesting.h"
@@ -18,6 +19,7 @@
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
 #include "vtkNPRImageEffectPass.h"
+#include "vtkNPRModelReader.h"
 #include "vtkNPRPass.h"
 #include "vtkNPRSketchPass.h"
 #include "vtkNew.h"
@@ -288,6 +290,80 @@ int KeptCompositeDrawing()
       { "hidden lines", [](Scene& s) { s.Pass->GetDrawingPass()->HiddenLinesOn(); } } } });
 }
 NPR_TEST_CASE("kept-composite-drawing", KeptCompositeDrawing);
+
+// ---- The composite over the blocks near lines alone (SkipLineFreeBlocks) ----
+// Every setting that changes where or how wide lines are drawn, on a real mesh and a cube in a
+// renderer whose viewport starts inside the window and whose size is no multiple of the blocks':
+// the frame drawn over the blocks is the full-screen composite's, bit for bit, colour and depth.
+int LineFreeBlocks()
+{
+  Scene scene(333, 217);
+  scene.Renderer->SetViewport(0.07, 0.11, 0.96, 1.0);
+  vtkNew<vtkNPRModelReader> reader;
+  reader->SetFileName((nprTestDataDir() + "/bunny.ply").c_str());
+  nprAddActor(scene.Renderer, reader->GetOutputPort(), nprGrey);
+  const double corner[3] = { 0.06, 0.02, -0.05 };
+  nprAddCube(scene.Renderer, corner, 0.05, nprGrey);
+  scene.Renderer->ResetCamera();
+  scene.Camera()->Azimuth(30);
+  scene.Camera()->Elevation(15);
+  scene.Renderer->ResetCameraClippingRange();
+  vtkNPREdgePass* edges = scene.Edges();
+  edges->KeepUnchangedCompositeOff();
+  const std::vector<std::pair<const char*, std::function<void()>>> settings = {
+    { "the defaults", [] {} },
+    { "17 px silhouettes, 3 px creases",
+      [edges]
+      {
+        edges->SetSilhouetteLineWidth(17.0);
+        edges->SetCreaseLineWidth(3.0);
+      } },
+    { "depth falloff", [edges] { edges->DepthFalloffOn(); } },
+    { "surface line shade", [edges] { edges->SetSurfaceLineShade(0.5); } },
+    { "width limit", [edges] { edges->SetMaximumLineFraction(0.2); } },
+    { "suggestive contours, smooth silhouettes",
+      [edges]
+      {
+        edges->SuggestiveContoursOn();
+        edges->SmoothSilhouettesOn();
+      } },
+    { "no anti-aliasing", [edges] { edges->AntiAliasingOff(); } },
+    { "parallel projection", [&scene] { scene.Camera()->ParallelProjectionOn(); } },
+  };
+  const nprImageTolerance exact = { 0, 0.0 };
+  for (const auto& setting : settings)
+  {
+    setting.second(); // on top of the ones before
+    edges->SkipLineFreeBlocksOff();
+    const int overBlocks = edges->GetNumberOfBlockComposites();
+    auto full = scene.Render();
+    const std::vector<float> fullDepths = WindowDepths(scene);
+    NPR_CHECK(edges->GetNumberOfBlockComposites() == overBlocks,
+      setting.first << ": SkipLineFreeBlocksOff still drew over blocks");
+    edges->SkipLineFreeBlocksOn();
+    auto blocks = scene.Render();
+    const std::vector<float> blockDepths = WindowDepths(scene);
+    NPR_CHECK(edges->GetNumberOfBlockComposites() == overBlocks + 1,
+      setting.first << ": the composite was not drawn over blocks");
+    const nprImageDifference difference = nprCompareImages(blocks, full, exact);
+    NPR_CHECK(difference.DifferingPixels == 0,
+      setting.first << ": " << difference.DifferingPixels
+                    << " pixels differ from the full composite");
+    NPR_CHECK(blockDepths == fullDepths, setting.first << ": the depths differ");
+    long long dark = 0; // the lines: there is something to compare
+    for (int y = 0; y < scene.Height; ++y)
+    {
+      for (int x = 0; x < scene.Width; ++x)
+      {
+        dark += nprPixel(blocks, x, y, 0) < 60 ? 1 : 0;
+      }
+    }
+    std::cout << setting.first << ": " << dark << " line pixels, the same over blocks\n";
+    NPR_CHECK(dark > 300, setting.first << ": only " << dark << " line pixels");
+  }
+  return nprTestResult();
+}
+NPR_TEST_CASE("line-free-blocks", LineFreeBlocks);
 
 // Where what lies under the composite is not the renderer's own clear, nothing is kept: a
 // renderer on a layer above another, and a multisampled window (blits resolve, never restore).
