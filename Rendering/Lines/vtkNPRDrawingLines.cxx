@@ -29,6 +29,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace
@@ -486,6 +487,7 @@ struct vtkNPRDrawingLines::Internals
   double FacesTime = 0.0;
   vtkIdType StrokeCount = 0;
   double ChainTime = 0.0;
+  std::vector<std::string> LeftOut; // the props' parts the last Update() drew nothing of
 };
 
 vtkStandardNewMacro(vtkNPRDrawingLines);
@@ -549,6 +551,18 @@ vtkIdType vtkNPRDrawingLines::GetNumberOfStrokes() const
   return this->Internal->StrokeCount;
 }
 
+vtkIdType vtkNPRDrawingLines::GetNumberOfPropsLeftOut() const
+{
+  return static_cast<vtkIdType>(this->Internal->LeftOut.size());
+}
+
+const char* vtkNPRDrawingLines::GetPropLeftOut(vtkIdType index) const
+{
+  const std::vector<std::string>& leftOut = this->Internal->LeftOut;
+  return index >= 0 && index < static_cast<vtkIdType>(leftOut.size()) ? leftOut[index].c_str()
+                                                                      : nullptr;
+}
+
 double vtkNPRDrawingLines::GetChainTime() const
 {
   return this->Internal->ChainTime;
@@ -566,11 +580,13 @@ bool vtkNPRDrawingLines::Update()
   internal.ChainTime = 0.0;
   internal.Strokes->Initialize();
   internal.Points->Initialize();
+  internal.LeftOut.clear();
   int width, height;
   if (!this->StartUpdate(width, height))
   {
     return false;
   }
+  internal.LeftOut = vtkNPRPropsNotDrawn(this->Renderer);
 
   this->UpdateScene(16384);
   const vtkNPRSceneLines& scene = this->GetScene();

@@ -190,6 +190,18 @@ public:
   double GetChainTime() const; // seconds chaining the pieces into strokes
   ///@}
 
+  ///@{
+  /**
+   * The parts of the renderer's visible 3D props (assemblies' parts included) that the last
+   * Update() drew nothing of, neither lines nor faces nor points: volumes, image slices,
+   * translucent actors, actors of other mappers or of non-polygonal data. How many, and each
+   * one's description in drawing order ("vtkVolume", "translucent vtkActor", "vtkActor of a
+   * vtkUnstructuredGrid", "vtkActor drawn by vtkGlyph3DMapper"); null past the last.
+   */
+  vtkIdType GetNumberOfPropsLeftOut() const;
+  const char* GetPropLeftOut(vtkIdType index) const;
+  ///@}
+
   /**
    * Bytes held between updates: each mesh's edge table (vtkNPRFeatureLines::
    * GetAdjacencyMemorySize()) and the occlusion structure; the meshes' own points and cells,

@@ -21,6 +21,7 @@
 #include "vtkPointGaussianMapper.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkProp3D.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -251,6 +252,71 @@ std::vector<vtkNPRMeshInstance> vtkNPRDrawnMeshes(vtkRenderer* renderer, vtkNPRD
     }
   }
   return meshes;
+}
+
+namespace
+{
+// A class's name as the user made it: VTK's object factory makes vtkOpenGLActor of vtkActor.
+std::string UserClassName(vtkObject* object)
+{
+  std::string name = object->GetClassName();
+  return name.rfind("vtkOpenGL", 0) == 0 ? "vtk" + name.substr(9) : name;
+}
+
+// What a part that no drawn mesh comes from is, for a message.
+std::string DescribeNotDrawn(vtkProp* part)
+{
+  const std::string name = UserClassName(part);
+  auto* actor = vtkActor::SafeDownCast(part);
+  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
+  if (!mapper)
+  {
+    return name;
+  }
+  if (!vtkPolyDataMapper::SafeDownCast(mapper) && !vtkDataSetMapper::SafeDownCast(mapper))
+  {
+    return name + " drawn by " + UserClassName(mapper);
+  }
+  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+  if (input && !vtkPolyData::SafeDownCast(input) && !vtkCompositeDataSet::SafeDownCast(input))
+  {
+    return name + " of a " + input->GetClassName();
+  }
+  return actor->HasTranslucentPolygonalGeometry() ? "translucent " + name : name;
+}
+}
+
+std::vector<std::string> vtkNPRPropsNotDrawn(vtkRenderer* renderer)
+{
+  std::vector<std::string> notDrawn;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (!prop->GetVisibility() || !vtkProp3D::SafeDownCast(prop))
+    {
+      continue; // 2D props are the overlays'
+    }
+    for (const vtkNPRPropPart& part : vtkNPRPropParts(prop))
+    {
+      std::vector<vtkNPRMeshInstance> meshes;
+      auto* actor = vtkActor::SafeDownCast(part.Prop);
+      for (const vtkNPRDrawnAs drawnAs :
+        { vtkNPRDrawnAs::Surfaces, vtkNPRDrawnAs::Points, vtkNPRDrawnAs::Wireframe })
+      {
+        if (actor && part.Matrix)
+        {
+          AddDrawnMeshes(actor, part.Matrix, drawnAs, meshes);
+        }
+      }
+      if (meshes.empty())
+      {
+        notDrawn.push_back(DescribeNotDrawn(part.Prop));
+      }
+    }
+  }
+  return notDrawn;
 }
 
 bool vtkNPRImageSize(vtkRenderer* renderer, const int size[2], int& width, int& height)

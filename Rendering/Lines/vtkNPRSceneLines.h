@@ -14,6 +14,7 @@
 
 #include <cstddef> // for size_t
 #include <map>     // for the actors' lines
+#include <string>  // for the props' descriptions
 #include <utility> // for std::pair
 #include <vector>  // for the segments
 
@@ -42,6 +43,13 @@ enum class vtkNPRDrawnAs
 // mesh of its actor; their inputs brought up to date.
 std::vector<vtkNPRMeshInstance> vtkNPRDrawnMeshes(
   vtkRenderer* renderer, vtkNPRDrawnAs drawnAs = vtkNPRDrawnAs::Surfaces);
+
+// The parts of the renderer's visible 3D props (vtkProp3D, assemblies' parts included) that
+// vtkNPRDrawnMeshes() lists in no representation: what the scene's lines, faces and points leave
+// out (volumes, image slices, translucent actors, other mappers' and non-polygonal data), each
+// described by its class ("translucent vtkActor", "vtkActor of a vtkUnstructuredGrid",
+// "vtkActor drawn by vtkGlyph3DMapper", "vtkVolume"), in drawing order.
+std::vector<std::string> vtkNPRPropsNotDrawn(vtkRenderer* renderer);
 
 // The camera of a frame as the image sees it.
 struct vtkNPRSceneView

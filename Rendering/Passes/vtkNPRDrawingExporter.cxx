@@ -32,7 +32,9 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -159,6 +161,7 @@ struct vtkNPRDrawingExporter::Internals
   vtkNPROverlays Overlays; // the 2D props of the last Write() without a raster
   vtkNPRStrokeCounts Counts{};
   vtkIdType FilledFaces = 0;
+  vtkIdType LeftOut = 0; // 3D props not drawn in a figure without the window's image
   bool Labelled = false;
   bool Embedded = false;
   double StrokesTime = 0.0, WriteTime = 0.0;
@@ -258,6 +261,11 @@ vtkIdType vtkNPRDrawingExporter::GetNumberOfFilledFaces() const
   return this->Internal->FilledFaces;
 }
 
+vtkIdType vtkNPRDrawingExporter::GetNumberOfPropsLeftOut() const
+{
+  return this->Internal->LeftOut;
+}
+
 bool vtkNPRDrawingExporter::GetClassesLabelled() const
 {
   return this->Internal->Labelled;
@@ -306,7 +314,7 @@ bool vtkNPRDrawingExporter::Write()
   this->ErrorCode = vtkErrorCode::NoError;
   internal.ErrorMessage.clear();
   internal.Counts.fill(0);
-  internal.FilledFaces = 0;
+  internal.FilledFaces = internal.LeftOut = 0;
   internal.Labelled = internal.Embedded = false;
   internal.StrokesTime = internal.WriteTime = 0.0;
 
@@ -339,6 +347,10 @@ bool vtkNPRDrawingExporter::Write()
   if (!this->ComputeStrokes(target, !raster))
   {
     return false;
+  }
+  if (!raster)
+  {
+    this->ReportPropsLeftOut(target);
   }
   // Painting, into memory: the file is written only once everything succeeded.
   const Clock::time_point start = Clock::now();
@@ -490,6 +502,41 @@ bool vtkNPRDrawingExporter::PaintFaces(cairo_t* cr, const Target& target, std::s
   return vtkNPRPaintFaces(cr, faces, this->FillColors == FACE_COLOR ? target.FaceColor : nullptr,
     vtkNPRFillColors(faces, this->FillColors, target.Renderer), this->FillSeam, target.Height,
     this->Internal->FilledFaces, error);
+}
+
+void vtkNPRDrawingExporter::ReportPropsLeftOut(const Target& target)
+{
+  // Each kind once, with its count, in drawing order.
+  std::vector<std::pair<std::string, int>> kinds;
+  vtkNPRDrawingLines* lines = this->Internal->Lines;
+  for (vtkIdType i = 0; i < lines->GetNumberOfPropsLeftOut(); ++i)
+  {
+    const std::string name = lines->GetPropLeftOut(i);
+    auto kind = std::find_if(kinds.begin(), kinds.end(),
+      [&name](const std::pair<std::string, int>& k) { return k.first == name; });
+    if (kind == kinds.end())
+    {
+      kinds.emplace_back(name, 1);
+    }
+    else
+    {
+      ++kind->second;
+    }
+    ++this->Internal->LeftOut;
+  }
+  if (kinds.empty())
+  {
+    return;
+  }
+  std::ostringstream list;
+  for (size_t i = 0; i < kinds.size(); ++i)
+  {
+    list << (i ? ", " : "") << (kinds[i].second > 1 ? std::to_string(kinds[i].second) + " x " : "")
+         << kinds[i].first;
+  }
+  vtkWarningMacro(<< target.Path << ": left out of the vector figure, which has no image of the "
+                  << "window under it: " << list.str()
+                  << " (EmbedImage 1 embeds the window's image, where they show)");
 }
 
 bool vtkNPRDrawingExporter::WriteFile(const std::string& path, const std::string& bytes)

@@ -208,14 +208,17 @@ public:
    * 3 crease, 4 non-manifold, 5 intersection strokes, 6 the scene's line cells, 7 its points,
    * 8 the texts' paths) and in all; the texts and the 2D props in the embedded image
    * (Overlays); whether the SVG's groups were labelled; whether a raster was embedded; the
-   * polygons filled (FillFaces); the seconds computing the strokes (and the faces) and painting
-   * and writing the file.
+   * polygons filled (FillFaces); the 3D props (or assembly parts) left out of a figure without
+   * the window's image, which Write() names in a warning (volumes, image slices, translucent
+   * actors, other mappers than polygonal data's: EmbedImage 1 shows them as pixels); the seconds
+   * computing the strokes (and the faces) and painting and writing the file.
    */
   vtkIdType GetNumberOfStrokes(int strokeClass) const;
   vtkIdType GetNumberOfStrokes() const;
   vtkIdType GetNumberOfTexts() const;
   vtkIdType GetNumberOfImagedOverlays() const;
   vtkIdType GetNumberOfFilledFaces() const;
+  vtkIdType GetNumberOfPropsLeftOut() const;
   bool GetClassesLabelled() const;
   bool GetImageEmbedded() const;
   double GetStrokesTime() const;
@@ -251,6 +254,8 @@ private:
   bool FindRenderer(Target& target);
   void ResolveStyle(Target& target);
   bool ComputeStrokes(const Target& target, bool linePrimitives);
+  // Counts and names in a warning the 3D props a figure without the window's image leaves out.
+  void ReportPropsLeftOut(const Target& target);
   bool Paint(const Target& target, vtkImageData* raster, std::string& bytes);
   bool PaintFaces(cairo_t* cr, const Target& target, std::string& error);
   bool WriteFile(const std::string& path, const std::string& bytes);

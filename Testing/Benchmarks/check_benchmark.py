@@ -150,6 +150,7 @@ SPEED_METHODS = (
     "plain VTK frame", "vtkNPRPass edges", "vtkNPRPass toon+edges", "vtkNPRPass sketch",
     "vtkNPRPass toon", "vtkNPRPass inked", "vtkNPRPass drawing",
     "vtkNPRPass edges, silhouettes only", "vtkNPRPass edges, every line type off",
+    "vtkNPRPass edges, composite over every pixel",
     "vtkNPRGBufferPass alone (drawn, not shown)",
     "vtkNPRPass edges, creases from face normals", "vtkNPRPass edges, smooth silhouettes on",
     "vtkNPRPass edges, suggestive contours on", "vtkNPRPass inked, 1 px wireframe",

@@ -312,10 +312,10 @@ int LineFreeBlocks()
   edges->KeepUnchangedCompositeOff();
   const std::vector<std::pair<const char*, std::function<void()>>> settings = {
     { "the defaults", [] {} },
-    { "17 px silhouettes, 3 px creases",
+    { "16 px silhouettes, 3 px creases",
       [edges]
       {
-        edges->SetSilhouetteLineWidth(17.0);
+        edges->SetSilhouetteLineWidth(16.0);
         edges->SetCreaseLineWidth(3.0);
       } },
     { "depth falloff", [edges] { edges->DepthFalloffOn(); } },
