@@ -7,7 +7,7 @@
 // Private to NPR::Passes.
 //
 // @code
-// blocks.Update(window, lineTexture, reach, contentRectangle);
+// blocks.Update(window, lineTexture, lineImageVersion, reach, contentRectangle);
 // vtkShaderProgram* program = blocks.Ready(window, fragmentSource, defines);
 // // ... the program's own textures and uniforms ...
 // blocks.Draw(program, true); // only the blocks marked near a line
