@@ -509,6 +509,7 @@ void vtkNPRDrawingExporter::ReportPropsLeftOut(const Target& target)
   // Each kind once, with its count, in drawing order.
   std::vector<std::pair<std::string, int>> kinds;
   vtkNPRDrawingLines* lines = this->Internal->Lines;
+  this->Internal->LeftOut = lines->GetNumberOfPropsLeftOut();
   for (vtkIdType i = 0; i < lines->GetNumberOfPropsLeftOut(); ++i)
   {
     const std::string name = lines->GetPropLeftOut(i);
@@ -522,7 +523,6 @@ void vtkNPRDrawingExporter::ReportPropsLeftOut(const Target& target)
     {
       ++kind->second;
     }
-    ++this->Internal->LeftOut;
   }
   if (kinds.empty())
   {

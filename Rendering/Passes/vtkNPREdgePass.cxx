@@ -532,7 +532,7 @@ bool vtkNPREdgePass::DrawOverBlocks(vtkOpenGLRenderWindow* window, vtkRenderer* 
   for (const bool near : { true, false })
   {
     vtkShaderProgram* program =
-      internal.Blocks.Ready(window, source, near ? lineDefines : copyDefines);
+      internal.Blocks.Ready(window, near, source, near ? lineDefines : copyDefines);
     if (!program)
     {
       return false;

@@ -30,6 +30,10 @@ struct vtkNPRLineBlocks::Internals
   int Image[2] = { 0, 0 };
   unsigned long Version = 0;
   int Reach = -1;
+  // The programs drawn over the near blocks [1] and the others [0], and their defines: built
+  // when the defines change, only bound otherwise.
+  vtkShaderProgram* Programs[2] = { nullptr, nullptr };
+  std::string Defines[2];
 };
 
 vtkNPRLineBlocks::vtkNPRLineBlocks()
@@ -116,13 +120,21 @@ bool vtkNPRLineBlocks::Mark(vtkOpenGLRenderWindow* window, vtkNPRQuadProgram& ma
 }
 
 vtkShaderProgram* vtkNPRLineBlocks::Ready(
-  vtkOpenGLRenderWindow* window, const std::string& fragment, const std::string& defines)
+  vtkOpenGLRenderWindow* window, bool near, const std::string& fragment, const std::string& defines)
 {
-  std::string source = fragment;
-  vtkShaderProgram::Substitute(source, "//NPR::Defines", defines);
-  // The cache finds a program it built from the same sources again.
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(vtkNPRLineBlocksVS, source.c_str(), "");
+  Internals& internal = *this->Internal;
+  vtkShaderProgram*& program = internal.Programs[near ? 1 : 0];
+  if (program && internal.Defines[near ? 1 : 0] == defines)
+  {
+    program = window->GetShaderCache()->ReadyShaderProgram(program);
+  }
+  else
+  {
+    std::string source = fragment;
+    vtkShaderProgram::Substitute(source, "//NPR::Defines", defines);
+    program = window->GetShaderCache()->ReadyShaderProgram(vtkNPRLineBlocksVS, source.c_str(), "");
+    internal.Defines[near ? 1 : 0] = defines;
+  }
   return program && program->GetCompiled() ? program : nullptr;
 }
 
@@ -165,4 +177,5 @@ void vtkNPRLineBlocks::ReleaseGraphicsResources(vtkWindow* window)
     }
   }
   internal.Reach = -1;
+  internal.Programs[0] = internal.Programs[1] = nullptr; // the window's shader cache had them
 }

@@ -8,7 +8,7 @@
 //
 // @code
 // blocks.Update(window, lineTexture, lineImageVersion, reach, contentRectangle);
-// vtkShaderProgram* program = blocks.Ready(window, fragmentSource, defines);
+// vtkShaderProgram* program = blocks.Ready(window, true, fragmentSource, defines);
 // // ... the program's own textures and uniforms ...
 // blocks.Draw(program, true); // only the blocks marked near a line
 // @endcode
@@ -44,11 +44,12 @@ public:
     int reach, const int rect[4]);
 
   /**
-   * Builds and binds the program of a fragment shader drawn over blocks (its "//NPR::Defines"
-   * replaced by defines); the window's shader cache keeps it. Null where it did not compile.
+   * Binds the program drawn over the blocks near a line (near) or over the others: a fragment
+   * shader with its "//NPR::Defines" replaced by defines, built (the window's shader cache keeps
+   * it) when the defines are not those of the last call. Null where it did not compile.
    */
-  vtkShaderProgram* Ready(
-    vtkOpenGLRenderWindow* window, const std::string& fragment, const std::string& defines);
+  vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window, bool near, const std::string& fragment,
+    const std::string& defines);
 
   /**
    * Draws the bound program over the blocks near a line (near) or over the others, in the

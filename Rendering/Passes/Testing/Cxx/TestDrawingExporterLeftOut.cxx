@@ -61,17 +61,11 @@ vtkSmartPointer<vtkVolume> SmallVolume(bool visible)
   return volume;
 }
 
-int LeftOut()
+// Two opaque spheres (one in an assembly), which the figure draws, and the props it cannot
+// draw: two translucent spheres (one in the assembly), an unstructured grid, glyphs and a volume;
+// besides them a hidden volume and a 2D text, which it does not report.
+void AddPropsOfEveryKind(vtkRenderer* renderer)
 {
-  auto* output = nprCountingOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
-  vtkSmartPointer<vtkRenderWindow> window = nprCreateTestWindow(320, 240, nullptr);
-  NPR_CHECK(window, "no window");
-  if (!window)
-  {
-    return nprTestResult();
-  }
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
   const double origin[3] = { 0, 0, 0 }, right[3] = { 1, 0, 0 }, up[3] = { 0, 1, 0 },
                down[3] = { 0, -1, 0 };
   renderer->AddActor(SphereActor(origin, 1.0)); // drawn
@@ -102,6 +96,20 @@ int LeftOut()
   vtkNew<vtkTextActor> text;               // 2D: the overlays'
   text->SetInput("caption");
   renderer->AddActor2D(text);
+}
+
+int LeftOut()
+{
+  auto* output = nprCountingOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
+  vtkSmartPointer<vtkRenderWindow> window = nprCreateTestWindow(320, 240, nullptr);
+  NPR_CHECK(window, "no window");
+  if (!window)
+  {
+    return nprTestResult();
+  }
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  AddPropsOfEveryKind(renderer);
   renderer->ResetCamera();
   window->Render();
 
