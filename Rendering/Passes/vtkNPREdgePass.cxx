@@ -444,6 +444,13 @@ bool vtkNPREdgePass::DrawLines(const vtkRenderState* state, const int origin[2],
   vtkTextureObject* color = gbuffer->GetColorTexture();
   vtkTextureObject* depth = gbuffer->GetDepthTexture();
   const bool lines = this->GetDrawsLines();
+  // No line type on: the composite is the surfaces' copy, copied back whole where it can be.
+  if (output == OutputComposite && !lines &&
+    gbuffer->CopySurfacesBack(window, origin, gbuffer->GetContentRectangle()))
+  {
+    ++this->NumberOfSurfaceCopies;
+    return true;
+  }
   // The blocks first: marking them binds and releases the line image.
   const bool overBlocks =
     output == OutputComposite && this->SkipsLineFreeBlocks() && this->UpdateLineBlocks(window);
@@ -526,11 +533,27 @@ bool vtkNPREdgePass::DrawOverBlocks(vtkOpenGLRenderWindow* window, vtkRenderer* 
   const int origin[2], const std::string& lineDefines)
 {
   Internals& internal = *this->Internal;
-  // The lines' composite near them, the surfaces' copy (the composite without lines) elsewhere.
+  // The lines' composite near them; elsewhere the surfaces' copy: the G-buffer's colour and depth
+  // copied back whole first where it holds the window's image under them, else the composite
+  // without lines over the line-free blocks.
+  const bool copiedBack =
+    this->GBufferPass->CopySurfacesBack(window, origin, this->GBufferPass->GetContentRectangle());
+  if (copiedBack)
+  {
+    // The depth under the lines is now the surfaces' own, not the cleared far plane: the lines'
+    // depth sprite replaces it, as it passed over the cleared depth (read through a float, it
+    // can come out a unit above the copied value).
+    window->GetState()->vtkglDepthFunc(GL_ALWAYS);
+    ++this->NumberOfSurfaceCopies;
+  }
   const std::string& source = internal.GetCompositeSource();
   const std::string copyDefines = this->GetCompositeDefines(renderer, OutputComposite, false);
   for (const bool near : { true, false })
   {
+    if (!near && copiedBack)
+    {
+      break;
+    }
     vtkShaderProgram* program =
       internal.Blocks.Ready(window, near, source, near ? lineDefines : copyDefines);
     if (!program)
@@ -647,4 +670,5 @@ void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SkipLineFreeBlocks: " << this->SkipLineFreeBlocks << "\n";
   os << indent << "NumberOfLineImageUpdates: " << this->NumberOfLineImageUpdates << "\n";
   os << indent << "NumberOfBlockComposites: " << this->NumberOfBlockComposites << "\n";
+  os << indent << "NumberOfSurfaceCopies: " << this->NumberOfSurfaceCopies << "\n";
 }

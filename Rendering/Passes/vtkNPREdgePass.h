@@ -388,6 +388,10 @@ public:
    * the cost: the line composite's code runs only where lines are. Off: one full-screen
    * composite. Lines over the shaded colour only; CoverageOnly and RenderLineCoverage() draw
    * everything, and so does a line width whose mapping covers pixels without a line value.
+   * Where the G-buffer holds the window's image under the surfaces
+   * (vtkNPRGBufferPass::GetHoldsWindowImage(), which vtkNPRPass asks for), the surfaces are
+   * copied back whole by one glBlitFramebuffer before the lines' blocks are drawn; otherwise a
+   * copy shader draws the line-free blocks.
    */
   vtkSetMacro(SkipLineFreeBlocks, bool);
   vtkGetMacro(SkipLineFreeBlocks, bool);
@@ -398,6 +402,13 @@ public:
    * Number of composites drawn over the blocks near lines (SkipLineFreeBlocks).
    */
   vtkGetMacro(NumberOfBlockComposites, int);
+
+  /**
+   * Number of composites whose surfaces were copied back whole from the G-buffer
+   * (vtkNPRGBufferPass::CopySurfacesBack()): those over the blocks near lines, and those with no
+   * line type on, which are that copy alone.
+   */
+  vtkGetMacro(NumberOfSurfaceCopies, int);
 
 protected:
   vtkNPREdgePass();
@@ -449,6 +460,7 @@ protected:
   bool SkipLineFreeBlocks = true;
   int NumberOfLineImageUpdates = 0;
   int NumberOfBlockComposites = 0;
+  int NumberOfSurfaceCopies = 0;
 
 private:
   vtkNPREdgePass(const vtkNPREdgePass&) = delete;

@@ -10,6 +10,7 @@
 #include "vtkNPRPassUtilities.h"
 #include "vtkNPRPropParts.h"
 #include "vtkNPRShaderHook.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLError.h"
@@ -74,6 +75,15 @@ struct vtkNPRGBufferPass::Internals
   vtkNPRQuadProgram DepthGeometry;
   vtkNPRQuadProgram Copy;
   vtkNPRRenderTarget Target;
+  // The depth attachment's internal format.
+  unsigned int DepthFormat = GL_DEPTH_COMPONENT32F;
+  // This frame's colour started from the image of this draw framebuffer under the viewport at
+  // this origin (WindowImageRequested); the framebuffer CopySurfacesBack() reads it from.
+  bool HoldsWindowImage = false;
+  unsigned int WindowFramebuffer = 0;
+  unsigned int WindowDrawBuffer = 0;
+  int WindowOrigin[2] = { 0, 0 };
+  vtkNew<vtkOpenGLFramebufferObject> CopyBackSource;
   // The shaders with the shared normal packing in place.
   const std::string Decl = WithPackNormal(vtkNPRGBufferDecl);
   const std::string DepthGeometrySource = WithPackNormal(vtkNPRDepthGeometryFS);
@@ -113,6 +123,22 @@ vtkTextureObject* NewNearestTexture(vtkOpenGLRenderWindow* window)
   return vtkNPRNewTexture(window, vtkTextureObject::Nearest, vtkTextureObject::ClampToEdge);
 }
 
+// vtkTextureObject's name of a depth format that ChooseDepthFormat() gives.
+int DepthTextureFormat(unsigned int depthFormat)
+{
+  switch (depthFormat)
+  {
+    case GL_DEPTH_COMPONENT16:
+      return vtkTextureObject::Fixed16;
+    case GL_DEPTH_COMPONENT24:
+      return vtkTextureObject::Fixed24;
+    case GL_DEPTH_COMPONENT32:
+      return vtkTextureObject::Fixed32;
+    default:
+      return vtkTextureObject::Float32;
+  }
+}
+
 // Above this far/near ratio the depth attachment holds log depth (see GetDepthRemapped()).
 constexpr double MaximumPlainDepthRatio = 1e4;
 
@@ -142,18 +168,25 @@ GeometryFormat GetGeometryFormat(int encoding, int components)
 }
 }
 
-void vtkNPRGBufferPass::AllocateBuffers(
-  vtkOpenGLRenderWindow* window, int width, int height, int components, int encoding)
+void vtkNPRGBufferPass::AllocateBuffers(vtkOpenGLRenderWindow* window, int width, int height,
+  int components, int encoding, unsigned int depthFormat)
 {
   if (!this->ColorTexture)
   {
     this->ColorTexture = NewNearestTexture(window);
     this->ColorTexture->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
   }
+  if (this->DepthTexture && depthFormat != this->Internal->DepthFormat)
+  {
+    this->DepthTexture->ReleaseGraphicsResources(window);
+    this->DepthTexture->Delete();
+    this->DepthTexture = nullptr;
+  }
   if (!this->DepthTexture)
   {
     this->DepthTexture = NewNearestTexture(window);
-    this->DepthTexture->AllocateDepth(width, height, vtkTextureObject::Float32);
+    this->DepthTexture->AllocateDepth(width, height, DepthTextureFormat(depthFormat));
+    this->Internal->DepthFormat = depthFormat;
   }
   const GeometryFormat format = GetGeometryFormat(encoding, components);
   if (this->GeometryTexture &&
@@ -230,6 +263,7 @@ int vtkNPRGBufferPass::GetEncodingFromName(const char* name)
 
 void vtkNPRGBufferPass::Render(const vtkRenderState* state)
 {
+  this->Internal->HoldsWindowImage = false; // until this frame's draw copies it in
   if (!this->StartRender(state))
   {
     return; // no delegate, or a picking render: no G-buffer
@@ -264,11 +298,13 @@ void vtkNPRGBufferPass::Render(const vtkRenderState* state)
   auto* window = static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow());
   const int components =
     this->WritesObjectIds || this->WritesFaceNormals ? 4 : (this->WritesNormals ? 2 : 1);
-  this->AllocateBuffers(window, width, height, components, this->WrittenEncoding);
   this->UpdateProjection(state->GetRenderer(), width, height, true);
+  bool windowImage = false;
+  const unsigned int depthFormat = this->ChooseDepthFormat(state, windowImage);
+  this->AllocateBuffers(window, width, height, components, this->WrittenEncoding, depthFormat);
   this->ComputeContentRectangle(state, width, height);
   this->Internal->FrameProps = std::move(parts);
-  this->DrawGeometry(state, width, height);
+  this->DrawGeometry(state, width, height, windowImage);
   this->Internal->Last = vtkNPRTakeFrameSignature(
     state, width, height, this->WritesNormals, this->WritesObjectIds, this->GetSettingsTime());
   this->Internal->Valid = true;
@@ -340,15 +376,22 @@ void vtkNPRGBufferPass::UpdateProjection(
   this->DepthRemap[1] = static_cast<float>(std::log(clippingRange[1] / clippingRange[0]));
 }
 
-void vtkNPRGBufferPass::DrawGeometry(const vtkRenderState* state, int width, int height)
+void vtkNPRGBufferPass::DrawGeometry(
+  const vtkRenderState* state, int width, int height, bool windowImage)
 {
   auto* window = static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow());
+  unsigned int framebuffer = 0, drawBuffer = 0; // the one the effects draw into after this
+  window->GetState()->GetCurrentDrawFramebufferState(framebuffer, drawBuffer);
+  int origin[2];
+  vtkNPRViewportOrigin(state, origin);
   this->HasLinePrimitives = false; // SetShaderParameters() sees them
   this->PreRender(state);          // the mappers now call this pass's shader hooks
   {
     vtkNPRRenderTarget::Scope target(this->Internal->Target, window,
       { this->ColorTexture, this->GeometryTexture }, this->DepthTexture, width, height);
     target.Clear(0.0, 0.0, 0.0, 0.0); // geometry depth 0 = background
+    this->Internal->HoldsWindowImage =
+      windowImage && this->CopyWindowImageIn(window->GetState(), framebuffer, drawBuffer, origin);
     this->DelegatePass->Render(state);
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   }
@@ -356,6 +399,91 @@ void vtkNPRGBufferPass::DrawGeometry(const vtkRenderState* state, int width, int
   this->HasContent = true;
   ++this->NumberOfGeometryDraws;
   ++this->ContentVersion;
+}
+
+unsigned int vtkNPRGBufferPass::ChooseDepthFormat(
+  const vtkRenderState* state, bool& windowImage) const
+{
+  windowImage = false;
+  vtkRenderer* renderer = state->GetRenderer();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  unsigned int colorFormat = 0, depthFormat = 0;
+  if (this->DepthRemapped ||
+    !vtkNPRDrawFramebufferFormats(window->GetState(), colorFormat, depthFormat))
+  {
+    return GL_DEPTH_COMPONENT32F;
+  }
+  switch (depthFormat)
+  {
+    case GL_DEPTH_COMPONENT16:
+    case GL_DEPTH_COMPONENT24:
+    case GL_DEPTH_COMPONENT32:
+    case GL_DEPTH_COMPONENT32F:
+      break;
+    default:
+      return GL_DEPTH_COMPONENT32F; // with stencil: no texture format of vtkTextureObject's
+  }
+  // The copy back is exact only over the far plane the renderer's clear leaves.
+  windowImage = this->WindowImageRequested && colorFormat == GL_RGBA8 && renderer->GetErase() &&
+    !renderer->GetPreserveDepthBuffer();
+  return depthFormat;
+}
+
+bool vtkNPRGBufferPass::CopyWindowImageIn(
+  vtkOpenGLState* state, unsigned int framebuffer, unsigned int buffer, const int origin[2])
+{
+  Internals& internal = *this->Internal;
+  const int* rect = this->ContentRectangle; // the copy back covers no more
+  if (rect[2] < rect[0] || rect[3] < rect[1])
+  {
+    return false;
+  }
+  const int from[4] = { origin[0] + rect[0], origin[1] + rect[1], origin[0] + rect[2],
+    origin[1] + rect[3] };
+  state->PushReadFramebufferBinding();
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+  state->vtkglReadBuffer(buffer);
+  internal.Target.DrawInto(state, 1, 2); // the colour attachment alone
+  const bool copied = vtkNPRBlitRectangle(state, from, rect, false);
+  internal.Target.DrawInto(state, 2, 2);
+  state->PopReadFramebufferBinding();
+  internal.WindowFramebuffer = framebuffer;
+  internal.WindowDrawBuffer = buffer;
+  std::copy_n(origin, 2, internal.WindowOrigin);
+  return copied;
+}
+
+bool vtkNPRGBufferPass::GetHoldsWindowImage() const
+{
+  return this->HasContent && this->Internal->HoldsWindowImage;
+}
+
+bool vtkNPRGBufferPass::CopySurfacesBack(
+  vtkOpenGLRenderWindow* window, const int origin[2], const int rect[4])
+{
+  Internals& internal = *this->Internal;
+  vtkOpenGLState* state = window->GetState();
+  unsigned int framebuffer = 0, drawBuffer = 0;
+  state->GetCurrentDrawFramebufferState(framebuffer, drawBuffer);
+  if (!this->GetHoldsWindowImage() || framebuffer != internal.WindowFramebuffer ||
+    drawBuffer != internal.WindowDrawBuffer || origin[0] != internal.WindowOrigin[0] ||
+    origin[1] != internal.WindowOrigin[1] || rect[2] < rect[0] || rect[3] < rect[1])
+  {
+    return false;
+  }
+  vtkOpenGLFramebufferObject* source = internal.CopyBackSource;
+  source->SetContext(window);
+  state->PushReadFramebufferBinding();
+  source->Bind(GL_READ_FRAMEBUFFER); // attachments go to the binding it has
+  source->AddColorAttachment(0, this->ColorTexture);
+  source->AddDepthAttachment(this->DepthTexture);
+  source->ActivateReadBuffer(0);
+  const int to[2] = { origin[0] + rect[0], origin[1] + rect[1] };
+  const bool copied = vtkNPRBlitRectangle(state, rect, to, true);
+  source->RemoveColorAttachment(0); // holds no texture between frames
+  source->RemoveDepthAttachment();
+  state->PopReadFramebufferBinding();
+  return copied;
 }
 
 void vtkNPRGBufferPass::RenderDepthOnly(const vtkRenderState* state, int width, int height)
@@ -371,7 +499,7 @@ void vtkNPRGBufferPass::RenderDepthOnly(const vtkRenderState* state, int width, 
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   // The rebuilt normals are face normals; no ids.
   this->SetOutputs(true, false, false, FLOAT);
-  this->AllocateBuffers(window, width, height, 2, FLOAT);
+  this->AllocateBuffers(window, width, height, 2, FLOAT, GL_DEPTH_COMPONENT32F);
   this->ContentRectangle[0] = this->ContentRectangle[1] = 0;
   this->ContentRectangle[2] = width - 1;
   this->ContentRectangle[3] = height - 1;
@@ -522,6 +650,8 @@ void vtkNPRGBufferPass::ReleaseGraphicsResources(vtkWindow* window)
     }
   }
   this->Internal->Target.ReleaseGraphicsResources(window);
+  this->Internal->CopyBackSource->ReleaseGraphicsResources(window);
+  this->Internal->HoldsWindowImage = false;
   this->Internal->DepthGeometry.Release(window);
   this->Internal->Copy.Release(window);
   this->HasContent = false;
@@ -594,6 +724,7 @@ void vtkNPRGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FaceNormalsRequested: " << this->FaceNormalsRequested << "\n";
   os << indent << "GeometryEncoding: " << this->GeometryEncoding << "\n";
   os << indent << "DepthOnly: " << this->DepthOnly << "\n";
+  os << indent << "WindowImageRequested: " << this->WindowImageRequested << "\n";
   os << indent << "ReuseUnchangedFrames: " << this->ReuseUnchangedFrames << "\n";
   os << indent << "WritesNormals: " << this->WritesNormals << "\n";
   os << indent << "WritesFaceNormals: " << this->WritesFaceNormals << "\n";

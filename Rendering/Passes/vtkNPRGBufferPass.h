@@ -7,7 +7,9 @@
  * The delegate (normally a vtkOpaquePass) draws into a framebuffer of the renderer's size with:
  *
  * - colour (RGBA8): the shaded image as VTK would draw it;
- * - depth (32-bit float depth texture);
+ * - depth (a depth texture of the format of the framebuffer the pass draws for, so that the
+ *   depths are the ones VTK draws there, where a texture can take it: 16, 24, 32-bit or float
+ *   without stencil, single-sampled; 32-bit float otherwise and for log depth);
  * - geometry (32-bit float): r = view-space depth (distance along the view direction, 0 on the
  *   background), g = the view-space normal (octahedral, 12 bits per coordinate, packed in one
  *   float), b = the object id (1-based index of the prop in the frame).
@@ -74,6 +76,7 @@
 class vtkMatrix4x4;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
+class vtkOpenGLState;
 class vtkRenderer;
 class vtkTextureObject;
 
@@ -142,6 +145,39 @@ public:
   vtkGetMacro(DepthOnly, bool);
   vtkBooleanMacro(DepthOnly, bool);
   ///@}
+
+  ///@{
+  /**
+   * Start the colour attachment from the image under the renderer's viewport in the framebuffer
+   * this pass is called to draw into, instead of clearing it (off by default; vtkNPRPass turns it
+   * on for the styles of vtkNPREdgePass). Where the copy is exact (see GetHoldsWindowImage()),
+   * the G-buffer's colour and depth are the frame as the opaque surfaces leave it, background
+   * included, and an effect copies them back whole with CopySurfacesBack() instead of shading
+   * every pixel that has no line. The geometry attachment is cleared as always.
+   */
+  vtkSetMacro(WindowImageRequested, bool);
+  vtkGetMacro(WindowImageRequested, bool);
+  vtkBooleanMacro(WindowImageRequested, bool);
+  ///@}
+
+  /**
+   * Whether this frame's G-buffer holds the window's image under the surfaces:
+   * WindowImageRequested, the geometry drawn this frame (not a reused frame), the framebuffer
+   * single-sampled with 8-bit linear RGBA colour and a depth format a texture can take (16, 24,
+   * 32-bit or float, no stencil), OpenGL's depth (not GetDepthRemapped()), and the renderer
+   * clearing its depth (Erase on, PreserveDepthBuffer off), so that the depth under the surfaces is
+   * the far plane's.
+   */
+  bool GetHoldsWindowImage() const;
+
+  /**
+   * Copies the G-buffer's colour and depth over `rect` (G-buffer pixels x0, y0, x1, y1, inclusive)
+   * into the bound draw framebuffer at the viewport's `origin`, bit for bit (glBlitFramebuffer):
+   * what a composite without lines writes there, the background's pixels included. Returns false,
+   * having copied nothing, unless GetHoldsWindowImage() and the bound draw framebuffer and origin
+   * are the ones the image was taken from.
+   */
+  bool CopySurfacesBack(vtkOpenGLRenderWindow* window, const int origin[2], const int rect[4]);
 
   ///@{
   /**
@@ -251,8 +287,15 @@ protected:
   void FillShaderCode(std::string& vertexShader, std::string& geometryShader,
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
 
-  void AllocateBuffers(
-    vtkOpenGLRenderWindow* window, int width, int height, int components, int encoding);
+  void AllocateBuffers(vtkOpenGLRenderWindow* window, int width, int height, int components,
+    int encoding, unsigned int depthFormat);
+  // The depth attachment's format: the bound draw framebuffer's where a texture can take it and
+  // the depth is OpenGL's (not remapped), else 32-bit float; and whether this frame can hold the
+  // window's image (see GetHoldsWindowImage()).
+  unsigned int ChooseDepthFormat(const vtkRenderState* state, bool& windowImage) const;
+  // Replaces the cleared colour attachment's content rectangle by the window's image under it.
+  bool CopyWindowImageIn(
+    vtkOpenGLState* state, unsigned int framebuffer, unsigned int buffer, const int origin[2]);
   bool SceneUnchanged(const vtkRenderState* state, int width, int height);
   vtkMTimeType GetSettingsTime();
   void ComputeContentRectangle(const vtkRenderState* state, int width, int height);
@@ -264,7 +307,7 @@ protected:
   // The camera's matrices, projection type and depth range; with mayRemapDepth, the log depth
   // for far/near ratios above 1e4 (not in depth-only mode, where the delegate writes the depth).
   void UpdateProjection(vtkRenderer* renderer, int width, int height, bool mayRemapDepth);
-  void DrawGeometry(const vtkRenderState* state, int width, int height);
+  void DrawGeometry(const vtkRenderState* state, int width, int height, bool windowImage);
   void DeriveGeometryFromDepth(vtkOpenGLRenderWindow* window, int width, int height);
   void CopyBack(const vtkRenderState* state, int width, int height);
   // The view-space points of pixels (0, 0), (1, 0) and (0, 1)'s centres on the near and far planes.
@@ -275,6 +318,7 @@ protected:
   bool FaceNormalsRequested = false;
   bool ReuseUnchangedFrames = true;
   bool DepthOnly = false;
+  bool WindowImageRequested = false;
   int GeometryEncoding = FLOAT;
 
   vtkTextureObject* ColorTexture = nullptr;

@@ -160,6 +160,8 @@ void vtkNPRPass::Render(const vtkRenderState* state)
     imageLines && this->EdgePass->GetCreases() && this->EdgePass->GetFaceCreases());
   this->GBufferPass->SetObjectIdsRequested(imageLines && this->EdgePass->GetContours());
   this->GBufferPass->SetGeometryEncoding(this->EdgePass->GetEncoding());
+  // The edge styles copy the surfaces back whole from it (vtkNPREdgePass::SkipLineFreeBlocks).
+  this->GBufferPass->SetWindowImageRequested(this->Style == EDGES || this->Style == TOON_EDGES);
   switch (this->Style)
   {
     case SHADED:

@@ -244,9 +244,9 @@ int nprAttachmentParameter(unsigned int attachment, unsigned int parameter)
   return value;
 }
 
-// The internal formats that blit exactly to and from the bound draw framebuffer's colour and
-// depth, or false.
-bool nprDrawFramebufferFormats(
+}
+
+bool vtkNPRDrawFramebufferFormats(
   vtkOpenGLState* state, unsigned int& colorFormat, unsigned int& depthFormat)
 {
   unsigned int binding = 0, drawBuffer = 0;
@@ -274,8 +274,11 @@ bool nprDrawFramebufferFormats(
   const int alpha = nprAttachmentParameter(colorAttachment, GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE);
   const int colorType =
     nprAttachmentParameter(colorAttachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE);
+  // sRGB: a blit would convert to linear and back.
+  const int encoding =
+    nprAttachmentParameter(colorAttachment, GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING);
   if (red != 8 || green != 8 || blue != 8 || (alpha != 8 && alpha != 0) ||
-    colorType != GL_UNSIGNED_NORMALIZED)
+    colorType != GL_UNSIGNED_NORMALIZED || encoding != GL_LINEAR)
   {
     return false;
   }
@@ -307,6 +310,19 @@ bool nprDrawFramebufferFormats(
   }
   return stencil == 0 || stencil == 8;
 }
+
+bool vtkNPRBlitRectangle(vtkOpenGLState* state, const int rect[4], const int to[2], bool depth)
+{
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST); // and so a plain memory copy where the driver has one
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  const int width = rect[2] - rect[0] + 1, height = rect[3] - rect[1] + 1;
+  state->vtkglBlitFramebuffer(rect[0], rect[1], rect[2] + 1, rect[3] + 1, to[0], to[1],
+    to[0] + width, to[1] + height, GL_COLOR_BUFFER_BIT | (depth ? GL_DEPTH_BUFFER_BIT : 0),
+    GL_NEAREST);
+  return glGetError() == GL_NO_ERROR;
 }
 
 vtkNPRKeptImage::~vtkNPRKeptImage()
@@ -320,14 +336,12 @@ bool vtkNPRKeptImage::Capture(vtkOpenGLRenderWindow* window, const int rect[4])
   vtkOpenGLState* state = window->GetState();
   unsigned int colorFormat = 0, depthFormat = 0;
   if (rect[2] < rect[0] || rect[3] < rect[1] ||
-    !nprDrawFramebufferFormats(state, colorFormat, depthFormat))
+    !vtkNPRDrawFramebufferFormats(state, colorFormat, depthFormat))
   {
     return false;
   }
   unsigned int binding = 0, drawBuffer = 0;
   state->GetCurrentDrawFramebufferState(binding, drawBuffer);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_SCISSOR_TEST);
   state->PushFramebufferBindings();
   const int width = rect[2] + 1, height = rect[3] + 1; // the copy stays at its place
   if (!this->Framebuffer || colorFormat != this->ColorFormat || depthFormat != this->DepthFormat ||
@@ -359,12 +373,7 @@ bool vtkNPRKeptImage::Capture(vtkOpenGLRenderWindow* window, const int rect[4])
   state->vtkglReadBuffer(drawBuffer);
   this->Framebuffer->Bind(GL_DRAW_FRAMEBUFFER);
   this->Framebuffer->ActivateDrawBuffer(0);
-  while (glGetError() != GL_NO_ERROR)
-  {
-  }
-  state->vtkglBlitFramebuffer(rect[0], rect[1], rect[2] + 1, rect[3] + 1, rect[0], rect[1],
-    rect[2] + 1, rect[3] + 1, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  this->Valid = glGetError() == GL_NO_ERROR;
+  this->Valid = vtkNPRBlitRectangle(state, rect, rect, true);
   state->PopFramebufferBindings();
   std::copy_n(rect, 4, this->Rect);
   return this->Valid;
@@ -377,18 +386,10 @@ bool vtkNPRKeptImage::Restore(vtkOpenGLRenderWindow* window)
     return false;
   }
   vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_SCISSOR_TEST);
   state->PushReadFramebufferBinding();
   this->Framebuffer->Bind(GL_READ_FRAMEBUFFER);
   this->Framebuffer->ActivateReadBuffer(0);
-  while (glGetError() != GL_NO_ERROR)
-  {
-  }
-  const int* r = this->Rect;
-  state->vtkglBlitFramebuffer(r[0], r[1], r[2] + 1, r[3] + 1, r[0], r[1], r[2] + 1, r[3] + 1,
-    GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  this->Valid = glGetError() == GL_NO_ERROR;
+  this->Valid = vtkNPRBlitRectangle(state, this->Rect, this->Rect, true);
   state->PopReadFramebufferBinding();
   return this->Valid;
 }

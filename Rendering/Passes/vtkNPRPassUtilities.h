@@ -13,6 +13,7 @@ class vtkActor;
 class vtkObject;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
+class vtkOpenGLState;
 class vtkProp;
 class vtkProperty;
 class vtkRenderState;
@@ -109,6 +110,19 @@ private:
   vtkOpenGLState::ScopedglDepthMask DepthMask;
   vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
 };
+
+// The internal formats of the bound draw framebuffer's colour and depth that glBlitFramebuffer
+// copies bit for bit to and from buffers of the same formats: GL_RGBA8 or GL_RGB8 (linear, not
+// sRGB) and a depth (and stencil) format it names; false for a multisampled framebuffer or any
+// other format.
+bool vtkNPRDrawFramebufferFormats(
+  vtkOpenGLState* state, unsigned int& colorFormat, unsigned int& depthFormat);
+
+// Copies `rect` (x0, y0, x1, y1, inclusive) of the bound read framebuffer's colour and, with
+// `depth`, its depth to the bound draw framebuffer at `to` (its lower left corner), with
+// glBlitFramebuffer and the scissor test off. Returns false on an OpenGL error (formats that do
+// not match), having copied nothing.
+bool vtkNPRBlitRectangle(vtkOpenGLState* state, const int rect[4], const int to[2], bool depth);
 
 // A rectangle of the framebuffer being drawn into (colour and depth), kept after a composite so
 // that a frame in which nothing changed gets it back by one copy instead of compositing again.

@@ -8,6 +8,7 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
+#include <vector>
 
 vtkNPRRenderTarget::~vtkNPRRenderTarget()
 {
@@ -25,6 +26,20 @@ void vtkNPRRenderTarget::ReleaseGraphicsResources(vtkWindow* window)
     this->Framebuffer->ReleaseGraphicsResources(window);
     this->Framebuffer->Delete();
     this->Framebuffer = nullptr;
+  }
+}
+
+void vtkNPRRenderTarget::DrawInto(vtkOpenGLState* state, int drawn, int attached)
+{
+  std::vector<unsigned int> buffers;
+  for (int i = 0; i < attached; ++i)
+  {
+    buffers.push_back(i < drawn ? GL_COLOR_ATTACHMENT0 + i : GL_NONE);
+  }
+  if (!buffers.empty())
+  {
+    state->vtkDrawBuffers(
+      static_cast<unsigned int>(buffers.size()), buffers.data(), this->Framebuffer);
   }
 }
 

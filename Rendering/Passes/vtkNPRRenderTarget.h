@@ -34,6 +34,11 @@ public:
 
   // The framebuffer object (made on first use), for a delegate's per-mapper draw buffers.
   vtkOpenGLFramebufferObject* GetFramebuffer() const { return this->Framebuffer; }
+
+  // While the framebuffer is bound with `attached` colour attachments, draws into the first `drawn`
+  // of them only. The others are named GL_NONE instead of left off the list: vtkOpenGLState's
+  // cache compares only as many entries as it is given, so a shorter list would not reach OpenGL.
+  void DrawInto(vtkOpenGLState* state, int drawn, int attached);
   void ReleaseGraphicsResources(vtkWindow* window);
 
   /**

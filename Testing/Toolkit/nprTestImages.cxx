@@ -170,6 +170,21 @@ nprPixelStatistics nprComputePixelStatistics(vtkImageData* image, const double b
   return stats;
 }
 
+long long nprCountDepthsApart(
+  const std::vector<float>& depths, const std::vector<float>& others, double tolerance)
+{
+  if (depths.size() != others.size())
+  {
+    return static_cast<long long>(std::max(depths.size(), others.size()));
+  }
+  long long apart = 0;
+  for (size_t i = 0; i < depths.size(); ++i)
+  {
+    apart += std::abs(static_cast<double>(depths[i]) - others[i]) <= tolerance ? 0 : 1;
+  }
+  return apart;
+}
+
 nprImageDifference nprCompareImages(
   vtkImageData* image, vtkImageData* baseline, const nprImageTolerance& tolerance)
 {

@@ -22,6 +22,7 @@
 #include "vtkSmartPointer.h"
 
 #include <string>
+#include <vector>
 
 class vtkImageData;
 class vtkRenderWindow;
@@ -69,6 +70,15 @@ struct nprImageDifference
 };
 nprImageDifference nprCompareImages(
   vtkImageData* image, vtkImageData* baseline, const nprImageTolerance& tolerance);
+
+// The most a window depth moves when a shader reads it from a depth texture and writes it back as
+// gl_FragDepth (through a float: a few steps of the floats just below 1), against a copy.
+constexpr double nprDepthReadRounding = 1.0 / (1 << 22);
+
+// How many depths of two window depth buffers differ by more than `tolerance` (all, if their
+// sizes differ).
+long long nprCountDepthsApart(
+  const std::vector<float>& depths, const std::vector<float>& others, double tolerance);
 
 // Compares with Testing/Data/Baseline/<name>.png (see above). Returns true when it matches.
 // <dir>/<name>.vtk-MAJOR.MINOR.png for the VTK this test is built with when that file exists,

@@ -28,6 +28,7 @@
 #include "vtkSphereSource.h"
 #include "vtkTextureObject.h"
 
+#include <cmath>
 #include <functional>
 #include <map>
 #include <string>
@@ -294,7 +295,10 @@ NPR_TEST_CASE("kept-composite-drawing", KeptCompositeDrawing);
 // ---- The composite over the blocks near lines alone (SkipLineFreeBlocks) ----
 // Every setting that changes where or how wide lines are drawn, on a real mesh and a cube in a
 // renderer whose viewport starts inside the window and whose size is no multiple of the blocks':
-// the frame drawn over the blocks is the full-screen composite's, bit for bit, colour and depth.
+// the frame drawn over the blocks is the full-screen composite's. Where a copy shader draws the
+// line-free blocks (a reused G-buffer), bit for bit in colour and depth; where the surfaces are
+// copied back whole (a frame whose geometry was drawn), bit for bit in colour, and the depth is
+// the G-buffer's own there, which the shaders round through a float (nprDepthReadRounding).
 int LineFreeBlocks()
 {
   Scene scene(333, 217);
@@ -331,26 +335,50 @@ int LineFreeBlocks()
     { "parallel projection", [&scene] { scene.Camera()->ParallelProjectionOn(); } },
   };
   const nprImageTolerance exact = { 0, 0.0 };
+  vtkNPRGBufferPass* gbuffer = scene.Pass->GetGBufferPass();
   for (const auto& setting : settings)
   {
     setting.second(); // on top of the ones before
     edges->SkipLineFreeBlocksOff();
+    gbuffer->ReuseUnchangedFramesOff();
     const int overBlocks = edges->GetNumberOfBlockComposites();
+    const int surfaceCopies = edges->GetNumberOfSurfaceCopies();
     auto full = scene.Render();
     const std::vector<float> fullDepths = WindowDepths(scene);
     NPR_CHECK(edges->GetNumberOfBlockComposites() == overBlocks,
       setting.first << ": SkipLineFreeBlocksOff still drew over blocks");
     edges->SkipLineFreeBlocksOn();
-    auto blocks = scene.Render();
-    const std::vector<float> blockDepths = WindowDepths(scene);
-    NPR_CHECK(edges->GetNumberOfBlockComposites() == overBlocks + 1,
+    auto copiedBack = scene.Render(); // the geometry drawn again
+    const std::vector<float> copiedBackDepths = WindowDepths(scene);
+    NPR_CHECK(gbuffer->GetHoldsWindowImage(), setting.first << ": no window image in the G-buffer");
+    gbuffer->ReuseUnchangedFramesOn();
+    scene.Render(); // drawn once more: the reuse setting itself is a change
+    const int draws = gbuffer->GetNumberOfGeometryDraws();
+    auto shaderCopy = scene.Render(); // the G-buffer kept
+    const std::vector<float> shaderCopyDepths = WindowDepths(scene);
+    NPR_CHECK(gbuffer->GetNumberOfGeometryDraws() == draws && !gbuffer->GetHoldsWindowImage(),
+      setting.first << ": the G-buffer was drawn again");
+    NPR_CHECK(edges->GetNumberOfBlockComposites() == overBlocks + 3,
       setting.first << ": the composite was not drawn over blocks");
-    const nprImageDifference difference = nprCompareImages(blocks, full, exact);
-    NPR_CHECK(difference.DifferingPixels == 0,
-      setting.first << ": " << difference.DifferingPixels
-                    << " pixels differ from the full composite");
-    NPR_CHECK(blockDepths == fullDepths, setting.first << ": the depths differ");
+    NPR_CHECK(edges->GetNumberOfSurfaceCopies() == surfaceCopies + 2,
+      setting.first << ": " << edges->GetNumberOfSurfaceCopies() - surfaceCopies
+                    << " frames copied the surfaces back whole, not 2");
+    for (const auto& drawn :
+      { std::make_pair("copied back", &copiedBack), std::make_pair("shader copy", &shaderCopy) })
+    {
+      const nprImageDifference difference = nprCompareImages(*drawn.second, full, exact);
+      NPR_CHECK(difference.DifferingPixels == 0,
+        setting.first << ", " << drawn.first << ": " << difference.DifferingPixels
+                      << " pixels differ from the full composite");
+    }
+    NPR_CHECK(shaderCopyDepths == fullDepths, setting.first << ", shader copy: the depths differ");
+    const long long beyond =
+      nprCountDepthsApart(copiedBackDepths, fullDepths, nprDepthReadRounding);
+    NPR_CHECK(beyond == 0,
+      setting.first << ", copied back: " << beyond
+                    << " depths differ by more than a float's rounding");
     long long dark = 0; // the lines: there is something to compare
+    const auto& blocks = copiedBack;
     for (int y = 0; y < scene.Height; ++y)
     {
       for (int x = 0; x < scene.Width; ++x)
@@ -364,6 +392,111 @@ int LineFreeBlocks()
   return nprTestResult();
 }
 NPR_TEST_CASE("line-free-blocks", LineFreeBlocks);
+
+// ---- The surfaces copied back whole over any picture under them, or not at all ----
+// Renders the scene with the full composite and over blocks (the G-buffer drawn both times):
+// the same colour bit for bit and depths within nprDepthReadRounding, the window's image held or
+// not as expected.
+void CheckOverBlocks(Scene& scene, const std::string& label, bool holdsWindowImage)
+{
+  vtkNPREdgePass* edges = scene.Edges();
+  vtkNPRGBufferPass* gbuffer = scene.GBuffer();
+  gbuffer->ReuseUnchangedFramesOff();
+  edges->KeepUnchangedCompositeOff();
+  edges->SkipLineFreeBlocksOff();
+  auto full = scene.Render();
+  const std::vector<float> fullDepths = WindowDepths(scene);
+  edges->SkipLineFreeBlocksOn();
+  const int surfaceCopies = edges->GetNumberOfSurfaceCopies();
+  auto blocks = scene.Render();
+  const std::vector<float> blockDepths = WindowDepths(scene);
+  NPR_CHECK(gbuffer->GetHoldsWindowImage() == holdsWindowImage,
+    label << ": the G-buffer holds the window's image: " << gbuffer->GetHoldsWindowImage());
+  NPR_CHECK(edges->GetNumberOfSurfaceCopies() == surfaceCopies + (holdsWindowImage ? 1 : 0),
+    label << ": " << edges->GetNumberOfSurfaceCopies() - surfaceCopies
+          << " frames copied the surfaces back whole");
+  const nprImageDifference difference = nprCompareImages(blocks, full, { 0, 0.0 });
+  NPR_CHECK(difference.DifferingPixels == 0,
+    label << ": " << difference.DifferingPixels << " pixels differ from the full composite");
+  const long long beyond = nprCountDepthsApart(blockDepths, fullDepths, nprDepthReadRounding);
+  NPR_CHECK(
+    beyond == 0, label << ": " << beyond << " depths differ by more than a float's rounding");
+}
+
+int WindowImage()
+{
+  Scene scene(333, 217);
+  scene.Renderer->SetViewport(0.07, 0.11, 0.96, 1.0);
+  vtkNew<vtkNPRModelReader> reader;
+  reader->SetFileName((nprTestDataDir() + "/bunny.ply").c_str());
+  nprAddActor(scene.Renderer, reader->GetOutputPort(), nprGrey);
+  scene.Renderer->ResetCamera();
+  scene.Camera()->Azimuth(30);
+  scene.Renderer->ResetCameraClippingRange();
+  CheckOverBlocks(scene, "a plain background", true);
+  scene.GBuffer()->ReuseUnchangedFramesOff();
+  auto linesOverWhite = scene.Mask();
+  scene.Renderer->SetBackground(0.1, 0.2, 0.5);
+  scene.Renderer->SetBackground2(0.0, 0.0, 0.0);
+  scene.Renderer->GradientBackgroundOn();
+  CheckOverBlocks(scene, "a gradient background", true);
+  // The image under the surfaces goes into the colour attachment alone: the lines, found from
+  // the geometry attachment, are the same over any background.
+  const nprImageDifference lines = nprCompareImages(scene.Mask(), linesOverWhite, { 0, 0.0 });
+  NPR_CHECK(lines.DifferingPixels == 0,
+    lines.DifferingPixels << " line pixels change with the background under the surfaces");
+  scene.Pass->SetStyleToToonEdges();
+  CheckOverBlocks(scene, "toon shading with edges", true);
+
+  // A layer over another renderer's picture: what lies under the surfaces is that picture.
+  vtkNew<vtkRenderer> below;
+  below->SetBackground(0.3, 0.5, 0.3);
+  below->SetActiveCamera(scene.Camera());
+  const double centre[3] = { -0.03, 0.1, -0.1 };
+  const double red[3] = { 0.9, 0.1, 0.1 };
+  nprAddSphere(below, centre, 0.05, red, 32);
+  scene.Renderer->SetLayer(1);
+  scene.Window->SetNumberOfLayers(2);
+  scene.Window->AddRenderer(below);
+  CheckOverBlocks(scene, "a layer over a renderer with a sphere", true);
+
+  // Where the copy would not be exact: a composite over the line-free blocks instead.
+  scene.Renderer->PreserveDepthBufferOn();
+  CheckOverBlocks(scene, "the depth buffer preserved", false);
+  scene.Renderer->PreserveDepthBufferOff();
+  scene.Camera()->SetClippingRange(1e-5, 10.0);
+  CheckOverBlocks(scene, "log depth (far / near 1e6)", false);
+  NPR_CHECK(scene.GBuffer()->GetDepthRemapped(), "far / near 1e6: depth not remapped");
+  scene.Renderer->ResetCameraClippingRange();
+  scene.Pass->SetStyleToSketch();
+  scene.Render();
+  NPR_CHECK(
+    !scene.GBuffer()->GetHoldsWindowImage(), "the sketch's G-buffer holds the window's image");
+  scene.Pass->SetStyleToEdges();
+  CheckOverBlocks(scene, "edges again", true);
+
+  // No line type on: the composite is the surfaces' copy alone, copied back or drawn.
+  vtkNPREdgePass* edges = scene.Edges();
+  edges->SilhouettesOff();
+  edges->CreasesOff();
+  edges->ContoursOff();
+  const int copies = edges->GetNumberOfSurfaceCopies();
+  auto copied = scene.Render();
+  const std::vector<float> copiedDepths = WindowDepths(scene);
+  scene.GBuffer()->ReuseUnchangedFramesOn();
+  scene.Render();
+  auto drawn = scene.Render(); // the G-buffer kept: the copy shader
+  NPR_CHECK(edges->GetNumberOfSurfaceCopies() == copies + 2,
+    "no line type: " << edges->GetNumberOfSurfaceCopies() - copies << " copies, not 2");
+  const nprImageDifference copy = nprCompareImages(copied, drawn, { 0, 0.0 });
+  NPR_CHECK(copy.DifferingPixels == 0,
+    "no line type: " << copy.DifferingPixels << " pixels of the copy differ from the shader's");
+  const long long apart =
+    nprCountDepthsApart(copiedDepths, WindowDepths(scene), nprDepthReadRounding);
+  NPR_CHECK(apart == 0, "no line type: " << apart << " depths of the copy differ");
+  return nprTestResult();
+}
+NPR_TEST_CASE("window-image", WindowImage);
 
 // Where what lies under the composite is not the renderer's own clear, nothing is kept: a
 // renderer on a layer above another, and a multisampled window (blits resolve, never restore).
