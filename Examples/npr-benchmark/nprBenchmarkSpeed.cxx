@@ -165,8 +165,14 @@ std::vector<SpeedMethod> MakeMethods()
   // The composite before it was drawn over the blocks near lines alone: one full-screen pass.
   auto fullComposite = NPRStyle("edges");
   vtkNPRPass::SafeDownCast(fullComposite)->GetEdgePass()->SkipLineFreeBlocksOff();
+  vtkNPRPass::SafeDownCast(fullComposite)->GetEdgePass()->CopySurfacesBackOff();
   methods.push_back(
     { "edges-full-composite", "vtkNPRPass edges, composite over every pixel", fullComposite });
+  // And over the blocks, before the surfaces were copied back whole: a copy shader elsewhere.
+  auto shaderCopy = NPRStyle("edges");
+  vtkNPRPass::SafeDownCast(shaderCopy)->GetEdgePass()->CopySurfacesBackOff();
+  methods.push_back(
+    { "edges-shader-copy", "vtkNPRPass edges, surfaces copied by a shader", shaderCopy });
   // The bound under the floor: the G-buffer drawn as the edge style draws it (normals, ids) and
   // nothing shown from it, so the floor's difference to it is the copy into the window.
   methods.push_back(

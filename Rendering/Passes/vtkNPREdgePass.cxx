@@ -445,7 +445,7 @@ bool vtkNPREdgePass::DrawLines(const vtkRenderState* state, const int origin[2],
   vtkTextureObject* depth = gbuffer->GetDepthTexture();
   const bool lines = this->GetDrawsLines();
   // No line type on: the composite is the surfaces' copy, copied back whole where it can be.
-  if (output == OutputComposite && !lines &&
+  if (output == OutputComposite && !lines && this->CopySurfacesBack &&
     gbuffer->CopySurfacesBack(window, origin, gbuffer->GetContentRectangle()))
   {
     ++this->NumberOfSurfaceCopies;
@@ -536,7 +536,7 @@ bool vtkNPREdgePass::DrawOverBlocks(vtkOpenGLRenderWindow* window, vtkRenderer* 
   // The lines' composite near them; elsewhere the surfaces' copy: the G-buffer's colour and depth
   // copied back whole first where it holds the window's image under them, else the composite
   // without lines over the line-free blocks.
-  const bool copiedBack =
+  const bool copiedBack = this->CopySurfacesBack &&
     this->GBufferPass->CopySurfacesBack(window, origin, this->GBufferPass->GetContentRectangle());
   if (copiedBack)
   {
@@ -670,5 +670,6 @@ void vtkNPREdgePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SkipLineFreeBlocks: " << this->SkipLineFreeBlocks << "\n";
   os << indent << "NumberOfLineImageUpdates: " << this->NumberOfLineImageUpdates << "\n";
   os << indent << "NumberOfBlockComposites: " << this->NumberOfBlockComposites << "\n";
+  os << indent << "CopySurfacesBack: " << this->CopySurfacesBack << "\n";
   os << indent << "NumberOfSurfaceCopies: " << this->NumberOfSurfaceCopies << "\n";
 }

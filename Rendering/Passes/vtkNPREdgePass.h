@@ -388,14 +388,26 @@ public:
    * the cost: the line composite's code runs only where lines are. Off: one full-screen
    * composite. Lines over the shaded colour only; CoverageOnly and RenderLineCoverage() draw
    * everything, and so does a line width whose mapping covers pixels without a line value.
-   * Where the G-buffer holds the window's image under the surfaces
-   * (vtkNPRGBufferPass::GetHoldsWindowImage(), which vtkNPRPass asks for), the surfaces are
-   * copied back whole by one glBlitFramebuffer before the lines' blocks are drawn; otherwise a
+   * The surfaces elsewhere are copied back whole first where CopySurfacesBack allows, else a
    * copy shader draws the line-free blocks.
    */
   vtkSetMacro(SkipLineFreeBlocks, bool);
   vtkGetMacro(SkipLineFreeBlocks, bool);
   vtkBooleanMacro(SkipLineFreeBlocks, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Copy the surfaces' colour and depth back from the G-buffer whole, by one glBlitFramebuffer,
+   * where the G-buffer holds the window's image under them
+   * (vtkNPRGBufferPass::GetHoldsWindowImage(); vtkNPRPass asks for it while this is on): before
+   * the lines' blocks are drawn (SkipLineFreeBlocks), and as the whole composite when no line
+   * type is on. On by default. The colours are the same bit for bit; the depths are the G-buffer's
+   * own, where the copy shader's go through a float (a few steps of 2^-24 apart at most).
+   */
+  vtkSetMacro(CopySurfacesBack, bool);
+  vtkGetMacro(CopySurfacesBack, bool);
+  vtkBooleanMacro(CopySurfacesBack, bool);
   ///@}
 
   /**
@@ -461,6 +473,7 @@ protected:
   int NumberOfLineImageUpdates = 0;
   int NumberOfBlockComposites = 0;
   int NumberOfSurfaceCopies = 0;
+  bool CopySurfacesBack = true;
 
 private:
   vtkNPREdgePass(const vtkNPREdgePass&) = delete;

@@ -160,8 +160,9 @@ void vtkNPRPass::Render(const vtkRenderState* state)
     imageLines && this->EdgePass->GetCreases() && this->EdgePass->GetFaceCreases());
   this->GBufferPass->SetObjectIdsRequested(imageLines && this->EdgePass->GetContours());
   this->GBufferPass->SetGeometryEncoding(this->EdgePass->GetEncoding());
-  // The edge styles copy the surfaces back whole from it (vtkNPREdgePass::SkipLineFreeBlocks).
-  this->GBufferPass->SetWindowImageRequested(this->Style == EDGES || this->Style == TOON_EDGES);
+  // The edge styles copy the surfaces back whole from it (vtkNPREdgePass::CopySurfacesBack).
+  this->GBufferPass->SetWindowImageRequested(
+    (this->Style == EDGES || this->Style == TOON_EDGES) && this->EdgePass->GetCopySurfacesBack());
   switch (this->Style)
   {
     case SHADED:

@@ -151,6 +151,7 @@ SPEED_METHODS = (
     "vtkNPRPass toon", "vtkNPRPass inked", "vtkNPRPass drawing",
     "vtkNPRPass edges, silhouettes only", "vtkNPRPass edges, every line type off",
     "vtkNPRPass edges, composite over every pixel",
+    "vtkNPRPass edges, surfaces copied by a shader",
     "vtkNPRGBufferPass alone (drawn, not shown)",
     "vtkNPRPass edges, creases from face normals", "vtkNPRPass edges, smooth silhouettes on",
     "vtkNPRPass edges, suggestive contours on", "vtkNPRPass inked, 1 px wireframe",
