@@ -293,12 +293,76 @@ int KeptCompositeDrawing()
 NPR_TEST_CASE("kept-composite-drawing", KeptCompositeDrawing);
 
 // ---- The composite over the blocks near lines alone (SkipLineFreeBlocks) ----
+// A frame drawn with the full-screen composite (the G-buffer drawn each time), and the count of
+// composites over blocks before it.
+struct FullFrame
+{
+  vtkSmartPointer<vtkImageData> Image;
+  std::vector<float> Depths;
+  int BlockComposites;
+};
+
+// Renders the scene with the full composite, then over blocks: the same colour bit for bit and
+// depths within nprDepthReadRounding (the surfaces copied back whole write the G-buffer's own
+// depth, the shaders round it through a float), the window's image held or not as expected.
+// Returns the full frame and the frame over blocks.
+std::pair<FullFrame, vtkSmartPointer<vtkImageData>> CheckOverBlocks(
+  Scene& scene, const std::string& label, bool holdsWindowImage)
+{
+  vtkNPREdgePass* edges = scene.Edges();
+  vtkNPRGBufferPass* gbuffer = scene.GBuffer();
+  gbuffer->ReuseUnchangedFramesOff();
+  edges->KeepUnchangedCompositeOff();
+  edges->SkipLineFreeBlocksOff();
+  FullFrame full{ nullptr, {}, edges->GetNumberOfBlockComposites() };
+  full.Image = scene.Render();
+  full.Depths = WindowDepths(scene);
+  NPR_CHECK(edges->GetNumberOfBlockComposites() == full.BlockComposites,
+    label << ": SkipLineFreeBlocksOff still drew over blocks");
+  edges->SkipLineFreeBlocksOn();
+  const int surfaceCopies = edges->GetNumberOfSurfaceCopies();
+  auto blocks = scene.Render();
+  const std::vector<float> blockDepths = WindowDepths(scene);
+  NPR_CHECK(edges->GetNumberOfBlockComposites() == full.BlockComposites + 1,
+    label << ": the composite was not drawn over blocks");
+  NPR_CHECK(gbuffer->GetHoldsWindowImage() == holdsWindowImage,
+    label << ": the G-buffer holds the window's image: " << gbuffer->GetHoldsWindowImage());
+  NPR_CHECK(edges->GetNumberOfSurfaceCopies() == surfaceCopies + (holdsWindowImage ? 1 : 0),
+    label << ": " << edges->GetNumberOfSurfaceCopies() - surfaceCopies
+          << " frames copied the surfaces back whole");
+  const nprImageDifference difference = nprCompareImages(blocks, full.Image, { 0, 0.0 });
+  NPR_CHECK(difference.DifferingPixels == 0,
+    label << ": " << difference.DifferingPixels << " pixels differ from the full composite");
+  const long long beyond = nprCountDepthsApart(blockDepths, full.Depths, nprDepthReadRounding);
+  NPR_CHECK(
+    beyond == 0, label << ": " << beyond << " depths differ by more than a float's rounding");
+  return { full, blocks };
+}
+
+// The frame over blocks with the copy shader over the line-free blocks (the G-buffer kept from
+// the frame before): the full frame bit for bit, colour and depth.
+void CheckShaderCopy(Scene& scene, const std::string& label, const FullFrame& full)
+{
+  vtkNPRGBufferPass* gbuffer = scene.GBuffer();
+  gbuffer->ReuseUnchangedFramesOn();
+  scene.Render(); // drawn once more: the reuse setting itself is a change
+  const int draws = gbuffer->GetNumberOfGeometryDraws();
+  const int surfaceCopies = scene.Edges()->GetNumberOfSurfaceCopies();
+  auto shaderCopy = scene.Render();
+  NPR_CHECK(gbuffer->GetNumberOfGeometryDraws() == draws && !gbuffer->GetHoldsWindowImage() &&
+      scene.Edges()->GetNumberOfSurfaceCopies() == surfaceCopies,
+    label << ": the G-buffer was drawn again or the surfaces copied");
+  const nprImageDifference difference = nprCompareImages(shaderCopy, full.Image, { 0, 0.0 });
+  NPR_CHECK(difference.DifferingPixels == 0,
+    label << ", shader copy: " << difference.DifferingPixels
+          << " pixels differ from the full composite");
+  NPR_CHECK(WindowDepths(scene) == full.Depths, label << ", shader copy: the depths differ");
+}
+
 // Every setting that changes where or how wide lines are drawn, on a real mesh and a cube in a
 // renderer whose viewport starts inside the window and whose size is no multiple of the blocks':
-// the frame drawn over the blocks is the full-screen composite's. Where a copy shader draws the
-// line-free blocks (a reused G-buffer), bit for bit in colour and depth; where the surfaces are
-// copied back whole (a frame whose geometry was drawn), bit for bit in colour, and the depth is
-// the G-buffer's own there, which the shaders round through a float (nprDepthReadRounding).
+// the frame drawn over the blocks is the full-screen composite's, with the surfaces copied back
+// whole and with the copy shader.
 int LineFreeBlocks()
 {
   Scene scene(333, 217);
@@ -313,7 +377,6 @@ int LineFreeBlocks()
   scene.Camera()->Elevation(15);
   scene.Renderer->ResetCameraClippingRange();
   vtkNPREdgePass* edges = scene.Edges();
-  edges->KeepUnchangedCompositeOff();
   const std::vector<std::pair<const char*, std::function<void()>>> settings = {
     { "the defaults", [] {} },
     { "16 px silhouettes, 3 px creases",
@@ -334,56 +397,17 @@ int LineFreeBlocks()
     { "no anti-aliasing", [edges] { edges->AntiAliasingOff(); } },
     { "parallel projection", [&scene] { scene.Camera()->ParallelProjectionOn(); } },
   };
-  const nprImageTolerance exact = { 0, 0.0 };
-  vtkNPRGBufferPass* gbuffer = scene.Pass->GetGBufferPass();
   for (const auto& setting : settings)
   {
     setting.second(); // on top of the ones before
-    edges->SkipLineFreeBlocksOff();
-    gbuffer->ReuseUnchangedFramesOff();
-    const int overBlocks = edges->GetNumberOfBlockComposites();
-    const int surfaceCopies = edges->GetNumberOfSurfaceCopies();
-    auto full = scene.Render();
-    const std::vector<float> fullDepths = WindowDepths(scene);
-    NPR_CHECK(edges->GetNumberOfBlockComposites() == overBlocks,
-      setting.first << ": SkipLineFreeBlocksOff still drew over blocks");
-    edges->SkipLineFreeBlocksOn();
-    auto copiedBack = scene.Render(); // the geometry drawn again
-    const std::vector<float> copiedBackDepths = WindowDepths(scene);
-    NPR_CHECK(gbuffer->GetHoldsWindowImage(), setting.first << ": no window image in the G-buffer");
-    gbuffer->ReuseUnchangedFramesOn();
-    scene.Render(); // drawn once more: the reuse setting itself is a change
-    const int draws = gbuffer->GetNumberOfGeometryDraws();
-    auto shaderCopy = scene.Render(); // the G-buffer kept
-    const std::vector<float> shaderCopyDepths = WindowDepths(scene);
-    NPR_CHECK(gbuffer->GetNumberOfGeometryDraws() == draws && !gbuffer->GetHoldsWindowImage(),
-      setting.first << ": the G-buffer was drawn again");
-    NPR_CHECK(edges->GetNumberOfBlockComposites() == overBlocks + 3,
-      setting.first << ": the composite was not drawn over blocks");
-    NPR_CHECK(edges->GetNumberOfSurfaceCopies() == surfaceCopies + 2,
-      setting.first << ": " << edges->GetNumberOfSurfaceCopies() - surfaceCopies
-                    << " frames copied the surfaces back whole, not 2");
-    for (const auto& drawn :
-      { std::make_pair("copied back", &copiedBack), std::make_pair("shader copy", &shaderCopy) })
-    {
-      const nprImageDifference difference = nprCompareImages(*drawn.second, full, exact);
-      NPR_CHECK(difference.DifferingPixels == 0,
-        setting.first << ", " << drawn.first << ": " << difference.DifferingPixels
-                      << " pixels differ from the full composite");
-    }
-    NPR_CHECK(shaderCopyDepths == fullDepths, setting.first << ", shader copy: the depths differ");
-    const long long beyond =
-      nprCountDepthsApart(copiedBackDepths, fullDepths, nprDepthReadRounding);
-    NPR_CHECK(beyond == 0,
-      setting.first << ", copied back: " << beyond
-                    << " depths differ by more than a float's rounding");
+    const auto frames = CheckOverBlocks(scene, setting.first, true);
+    CheckShaderCopy(scene, setting.first, frames.first);
     long long dark = 0; // the lines: there is something to compare
-    const auto& blocks = copiedBack;
     for (int y = 0; y < scene.Height; ++y)
     {
       for (int x = 0; x < scene.Width; ++x)
       {
-        dark += nprPixel(blocks, x, y, 0) < 60 ? 1 : 0;
+        dark += nprPixel(frames.second, x, y, 0) < 60 ? 1 : 0;
       }
     }
     std::cout << setting.first << ": " << dark << " line pixels, the same over blocks\n";
@@ -394,33 +418,29 @@ int LineFreeBlocks()
 NPR_TEST_CASE("line-free-blocks", LineFreeBlocks);
 
 // ---- The surfaces copied back whole over any picture under them, or not at all ----
-// Renders the scene with the full composite and over blocks (the G-buffer drawn both times):
-// the same colour bit for bit and depths within nprDepthReadRounding, the window's image held or
-// not as expected.
-void CheckOverBlocks(Scene& scene, const std::string& label, bool holdsWindowImage)
+// No line type on: the composite is the surfaces' copy alone, copied back (the G-buffer drawn)
+// or drawn by the copy shader (the G-buffer kept): the same colour, depths within rounding.
+void CheckCopyWithoutLines(Scene& scene)
 {
   vtkNPREdgePass* edges = scene.Edges();
-  vtkNPRGBufferPass* gbuffer = scene.GBuffer();
-  gbuffer->ReuseUnchangedFramesOff();
-  edges->KeepUnchangedCompositeOff();
-  edges->SkipLineFreeBlocksOff();
-  auto full = scene.Render();
-  const std::vector<float> fullDepths = WindowDepths(scene);
-  edges->SkipLineFreeBlocksOn();
-  const int surfaceCopies = edges->GetNumberOfSurfaceCopies();
-  auto blocks = scene.Render();
-  const std::vector<float> blockDepths = WindowDepths(scene);
-  NPR_CHECK(gbuffer->GetHoldsWindowImage() == holdsWindowImage,
-    label << ": the G-buffer holds the window's image: " << gbuffer->GetHoldsWindowImage());
-  NPR_CHECK(edges->GetNumberOfSurfaceCopies() == surfaceCopies + (holdsWindowImage ? 1 : 0),
-    label << ": " << edges->GetNumberOfSurfaceCopies() - surfaceCopies
-          << " frames copied the surfaces back whole");
-  const nprImageDifference difference = nprCompareImages(blocks, full, { 0, 0.0 });
-  NPR_CHECK(difference.DifferingPixels == 0,
-    label << ": " << difference.DifferingPixels << " pixels differ from the full composite");
-  const long long beyond = nprCountDepthsApart(blockDepths, fullDepths, nprDepthReadRounding);
-  NPR_CHECK(
-    beyond == 0, label << ": " << beyond << " depths differ by more than a float's rounding");
+  edges->SilhouettesOff();
+  edges->CreasesOff();
+  edges->ContoursOff();
+  scene.GBuffer()->ReuseUnchangedFramesOff();
+  const int copies = edges->GetNumberOfSurfaceCopies();
+  auto copied = scene.Render();
+  const std::vector<float> copiedDepths = WindowDepths(scene);
+  scene.GBuffer()->ReuseUnchangedFramesOn();
+  scene.Render();
+  auto drawn = scene.Render();
+  NPR_CHECK(edges->GetNumberOfSurfaceCopies() == copies + 2,
+    "no line type: " << edges->GetNumberOfSurfaceCopies() - copies << " copies, not 2");
+  const nprImageDifference copy = nprCompareImages(copied, drawn, { 0, 0.0 });
+  NPR_CHECK(copy.DifferingPixels == 0,
+    "no line type: " << copy.DifferingPixels << " pixels of the copy differ from the shader's");
+  const long long apart =
+    nprCountDepthsApart(copiedDepths, WindowDepths(scene), nprDepthReadRounding);
+  NPR_CHECK(apart == 0, "no line type: " << apart << " depths of the copy differ");
 }
 
 int WindowImage()
@@ -475,25 +495,14 @@ int WindowImage()
   scene.Pass->SetStyleToEdges();
   CheckOverBlocks(scene, "edges again", true);
 
-  // No line type on: the composite is the surfaces' copy alone, copied back or drawn.
-  vtkNPREdgePass* edges = scene.Edges();
-  edges->SilhouettesOff();
-  edges->CreasesOff();
-  edges->ContoursOff();
-  const int copies = edges->GetNumberOfSurfaceCopies();
-  auto copied = scene.Render();
-  const std::vector<float> copiedDepths = WindowDepths(scene);
-  scene.GBuffer()->ReuseUnchangedFramesOn();
-  scene.Render();
-  auto drawn = scene.Render(); // the G-buffer kept: the copy shader
-  NPR_CHECK(edges->GetNumberOfSurfaceCopies() == copies + 2,
-    "no line type: " << edges->GetNumberOfSurfaceCopies() - copies << " copies, not 2");
-  const nprImageDifference copy = nprCompareImages(copied, drawn, { 0, 0.0 });
-  NPR_CHECK(copy.DifferingPixels == 0,
-    "no line type: " << copy.DifferingPixels << " pixels of the copy differ from the shader's");
-  const long long apart =
-    nprCountDepthsApart(copiedDepths, WindowDepths(scene), nprDepthReadRounding);
-  NPR_CHECK(apart == 0, "no line type: " << apart << " depths of the copy differ");
+  CheckCopyWithoutLines(scene);
+
+  // A multisampled window: no copy (a blit cannot write one from the single-sampled G-buffer).
+  Scene multisampled(240, 160);
+  multisampled.Window->SetMultiSamples(4);
+  nprAddActor(multisampled.Renderer, reader->GetOutputPort(), nprGrey);
+  multisampled.Renderer->ResetCamera();
+  CheckOverBlocks(multisampled, "a 4x multisampled window", false);
   return nprTestResult();
 }
 NPR_TEST_CASE("window-image", WindowImage);
