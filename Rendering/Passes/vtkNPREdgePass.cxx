@@ -446,7 +446,7 @@ bool vtkNPREdgePass::DrawLines(const vtkRenderState* state, const int origin[2],
   const bool lines = this->GetDrawsLines();
   // No line type on: the composite is the surfaces' copy, copied back whole where it can be.
   if (output == OutputComposite && !lines && this->CopySurfacesBack &&
-    gbuffer->CopySurfacesBack(window, origin, gbuffer->GetContentRectangle()))
+    gbuffer->CopySurfacesBack(window, origin))
   {
     ++this->NumberOfSurfaceCopies;
     return true;
@@ -536,8 +536,8 @@ bool vtkNPREdgePass::DrawOverBlocks(vtkOpenGLRenderWindow* window, vtkRenderer* 
   // The lines' composite near them; elsewhere the surfaces' copy: the G-buffer's colour and depth
   // copied back whole first where it holds the window's image under them, else the composite
   // without lines over the line-free blocks.
-  const bool copiedBack = this->CopySurfacesBack &&
-    this->GBufferPass->CopySurfacesBack(window, origin, this->GBufferPass->GetContentRectangle());
+  const bool copiedBack =
+    this->CopySurfacesBack && this->GBufferPass->CopySurfacesBack(window, origin);
   if (copiedBack)
   {
     // The depth under the lines is now the surfaces' own, not the cleared far plane: the lines'

@@ -458,8 +458,7 @@ bool vtkNPRGBufferPass::GetHoldsWindowImage() const
   return this->HasContent && this->Internal->HoldsWindowImage;
 }
 
-bool vtkNPRGBufferPass::CopySurfacesBack(
-  vtkOpenGLRenderWindow* window, const int origin[2], const int rect[4])
+bool vtkNPRGBufferPass::CopySurfacesBack(vtkOpenGLRenderWindow* window, const int origin[2])
 {
   Internals& internal = *this->Internal;
   vtkOpenGLState* state = window->GetState();
@@ -467,10 +466,11 @@ bool vtkNPRGBufferPass::CopySurfacesBack(
   state->GetCurrentDrawFramebufferState(framebuffer, drawBuffer);
   if (!this->GetHoldsWindowImage() || framebuffer != internal.WindowFramebuffer ||
     drawBuffer != internal.WindowDrawBuffer || origin[0] != internal.WindowOrigin[0] ||
-    origin[1] != internal.WindowOrigin[1] || rect[2] < rect[0] || rect[3] < rect[1])
+    origin[1] != internal.WindowOrigin[1])
   {
     return false;
   }
+  const int* rect = this->ContentRectangle; // where CopyWindowImageIn() put the window's image
   vtkOpenGLFramebufferObject* source = internal.CopyBackSource;
   source->SetContext(window);
   state->PushReadFramebufferBinding();

@@ -171,13 +171,14 @@ public:
   bool GetHoldsWindowImage() const;
 
   /**
-   * Copies the G-buffer's colour and depth over `rect` (G-buffer pixels x0, y0, x1, y1, inclusive)
-   * into the bound draw framebuffer at the viewport's `origin`, bit for bit (glBlitFramebuffer):
-   * what a composite without lines writes there, the background's pixels included. Returns false,
-   * having copied nothing, unless GetHoldsWindowImage() and the bound draw framebuffer and origin
-   * are the ones the image was taken from.
+   * Copies the G-buffer's colour and depth over the content rectangle (GetContentRectangle(), the
+   * part the window's image was copied into) into the bound draw framebuffer at the viewport's
+   * `origin`, bit for bit (glBlitFramebuffer): what a composite without lines writes there, the
+   * background's pixels included. Returns false, having copied nothing, unless
+   * GetHoldsWindowImage() and the bound draw framebuffer and origin are the ones the image was
+   * taken from.
    */
-  bool CopySurfacesBack(vtkOpenGLRenderWindow* window, const int origin[2], const int rect[4]);
+  bool CopySurfacesBack(vtkOpenGLRenderWindow* window, const int origin[2]);
 
   ///@{
   /**

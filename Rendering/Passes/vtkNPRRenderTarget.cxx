@@ -8,7 +8,6 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
-#include <vector>
 
 vtkNPRRenderTarget::~vtkNPRRenderTarget()
 {
@@ -31,15 +30,16 @@ void vtkNPRRenderTarget::ReleaseGraphicsResources(vtkWindow* window)
 
 void vtkNPRRenderTarget::DrawInto(vtkOpenGLState* state, int drawn, int attached)
 {
-  std::vector<unsigned int> buffers;
-  for (int i = 0; i < attached; ++i)
+  // vtkOpenGLState keeps 10 draw buffers.
+  unsigned int buffers[10];
+  const int count = std::min(attached, 10);
+  for (int i = 0; i < count; ++i)
   {
-    buffers.push_back(i < drawn ? GL_COLOR_ATTACHMENT0 + i : GL_NONE);
+    buffers[i] = i < drawn ? GL_COLOR_ATTACHMENT0 + i : GL_NONE;
   }
-  if (!buffers.empty())
+  if (count > 0)
   {
-    state->vtkDrawBuffers(
-      static_cast<unsigned int>(buffers.size()), buffers.data(), this->Framebuffer);
+    state->vtkDrawBuffers(static_cast<unsigned int>(count), buffers, this->Framebuffer);
   }
 }
 

@@ -359,6 +359,17 @@ void CheckShaderCopy(Scene& scene, const std::string& label, const FullFrame& fu
   NPR_CHECK(WindowDepths(scene) == full.Depths, label << ", shader copy: the depths differ");
 }
 
+// The bunny in a renderer whose viewport starts inside the window, so that its size is no
+// multiple of the blocks' (16 pixels) and its origin is not the window's.
+vtkSmartPointer<vtkNPRModelReader> AddBunnyInOffsetViewport(Scene& scene)
+{
+  scene.Renderer->SetViewport(0.07, 0.11, 0.96, 1.0);
+  auto reader = vtkSmartPointer<vtkNPRModelReader>::New();
+  reader->SetFileName((nprTestDataDir() + "/bunny.ply").c_str());
+  nprAddActor(scene.Renderer, reader->GetOutputPort(), nprGrey);
+  return reader;
+}
+
 // Every setting that changes where or how wide lines are drawn, on a real mesh and a cube in a
 // renderer whose viewport starts inside the window and whose size is no multiple of the blocks':
 // the frame drawn over the blocks is the full-screen composite's, with the surfaces copied back
@@ -366,10 +377,7 @@ void CheckShaderCopy(Scene& scene, const std::string& label, const FullFrame& fu
 int LineFreeBlocks()
 {
   Scene scene(333, 217);
-  scene.Renderer->SetViewport(0.07, 0.11, 0.96, 1.0);
-  vtkNew<vtkNPRModelReader> reader;
-  reader->SetFileName((nprTestDataDir() + "/bunny.ply").c_str());
-  nprAddActor(scene.Renderer, reader->GetOutputPort(), nprGrey);
+  AddBunnyInOffsetViewport(scene);
   const double corner[3] = { 0.06, 0.02, -0.05 };
   nprAddCube(scene.Renderer, corner, 0.05, nprGrey);
   scene.Renderer->ResetCamera();
@@ -446,10 +454,7 @@ void CheckCopyWithoutLines(Scene& scene)
 int WindowImage()
 {
   Scene scene(333, 217);
-  scene.Renderer->SetViewport(0.07, 0.11, 0.96, 1.0);
-  vtkNew<vtkNPRModelReader> reader;
-  reader->SetFileName((nprTestDataDir() + "/bunny.ply").c_str());
-  nprAddActor(scene.Renderer, reader->GetOutputPort(), nprGrey);
+  vtkSmartPointer<vtkNPRModelReader> reader = AddBunnyInOffsetViewport(scene);
   scene.Renderer->ResetCamera();
   scene.Camera()->Azimuth(30);
   scene.Renderer->ResetCameraClippingRange();
