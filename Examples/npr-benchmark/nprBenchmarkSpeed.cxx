@@ -173,6 +173,11 @@ std::vector<SpeedMethod> MakeMethods()
   vtkNPRPass::SafeDownCast(shaderCopy)->GetEdgePass()->CopySurfacesBackOff();
   methods.push_back(
     { "edges-shader-copy", "vtkNPRPass edges, surfaces copied by a shader", shaderCopy });
+  // The sketch's line coverage before it was drawn over the blocks near lines alone.
+  auto fullCoverage = NPRStyle("sketch");
+  vtkNPRPass::SafeDownCast(fullCoverage)->GetEdgePass()->SkipLineFreeBlocksOff();
+  methods.push_back(
+    { "sketch-full-coverage", "vtkNPRPass sketch, line coverage over every pixel", fullCoverage });
   // The bound under the floor: the G-buffer drawn as the edge style draws it (normals, ids) and
   // nothing shown from it, so the floor's difference to it is the copy into the window.
   methods.push_back(

@@ -181,16 +181,16 @@ bool vtkNPREdgePass::UpdateImages(const vtkRenderState* state)
   return !this->GetDrawsLines() || this->UpdateLineImage(state);
 }
 
-void vtkNPREdgePass::RenderLineCoverage(const vtkRenderState* state)
+bool vtkNPREdgePass::RenderLineCoverage(const vtkRenderState* state)
 {
   this->NumberOfRenderedProps = 0;
   vtkNPRGBufferPass* gbuffer = this->GetReadyGBuffer(state);
   if (!gbuffer)
   {
-    return;
+    return false;
   }
   // Plain values into the caller's target, from its origin; it has no depth buffer. Only the
-  // content rectangle: the caller cleared the rest.
+  // content rectangle: the rest is the caller's.
   vtkOpenGLState* glState =
     static_cast<vtkOpenGLRenderWindow*>(state->GetRenderer()->GetRenderWindow())->GetState();
   const int origin[2] = { 0, 0 };
@@ -202,10 +202,12 @@ void vtkNPREdgePass::RenderLineCoverage(const vtkRenderState* state)
   glState->vtkglDisable(GL_DEPTH_TEST);
   glState->vtkglDepthMask(GL_FALSE);
   glState->vtkglDisable(GL_BLEND);
-  if (this->DrawLines(state, origin, OutputLineCoverage))
+  if (!this->DrawLines(state, origin, OutputLineCoverage))
   {
-    this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+    return false;
   }
+  this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+  return true;
 }
 
 std::string vtkNPREdgePass::GetDetectDefines(int encoding) const
@@ -451,9 +453,10 @@ bool vtkNPREdgePass::DrawLines(const vtkRenderState* state, const int origin[2],
     ++this->NumberOfSurfaceCopies;
     return true;
   }
-  // The blocks first: marking them binds and releases the line image.
+  // The blocks first: marking them binds and releases the line image. Not for the mask, black
+  // over the whole view where the blocks cover the content rectangle only.
   const bool overBlocks =
-    output == OutputComposite && this->SkipsLineFreeBlocks() && this->UpdateLineBlocks(window);
+    output != OutputMask && this->SkipsLineFreeBlocks() && this->UpdateLineBlocks(window);
   color->Activate();
   depth->Activate();
   if (lines)
@@ -463,7 +466,7 @@ bool vtkNPREdgePass::DrawLines(const vtkRenderState* state, const int origin[2],
   bool drawn = false;
   if (overBlocks)
   {
-    drawn = this->DrawOverBlocks(window, renderer, origin, defines);
+    drawn = this->DrawOverBlocks(window, renderer, origin, output, defines);
   }
   else
   {
@@ -530,14 +533,14 @@ bool vtkNPREdgePass::UpdateLineBlocks(vtkOpenGLRenderWindow* window)
 }
 
 bool vtkNPREdgePass::DrawOverBlocks(vtkOpenGLRenderWindow* window, vtkRenderer* renderer,
-  const int origin[2], const std::string& lineDefines)
+  const int origin[2], int output, const std::string& lineDefines)
 {
   Internals& internal = *this->Internal;
-  // The lines' composite near them; elsewhere the surfaces' copy: the G-buffer's colour and depth
-  // copied back whole first where it holds the window's image under them, else the composite
-  // without lines over the line-free blocks.
-  const bool copiedBack =
-    this->CopySurfacesBack && this->GBufferPass->CopySurfacesBack(window, origin);
+  // The lines' output near them; elsewhere the output without lines (the surfaces' copy, or no
+  // coverage at the surfaces' depth). The composite's surfaces are copied back whole first where
+  // the G-buffer holds the window's image under them.
+  const bool copiedBack = output == OutputComposite && this->CopySurfacesBack &&
+    this->GBufferPass->CopySurfacesBack(window, origin);
   if (copiedBack)
   {
     // The depth under the lines is now the surfaces' own, not the cleared far plane: the lines'
@@ -547,7 +550,7 @@ bool vtkNPREdgePass::DrawOverBlocks(vtkOpenGLRenderWindow* window, vtkRenderer* 
     ++this->NumberOfSurfaceCopies;
   }
   const std::string& source = internal.GetCompositeSource();
-  const std::string copyDefines = this->GetCompositeDefines(renderer, OutputComposite, false);
+  const std::string copyDefines = this->GetCompositeDefines(renderer, output, false);
   for (const bool near : { true, false })
   {
     if (!near && copiedBack)

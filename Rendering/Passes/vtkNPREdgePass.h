@@ -359,10 +359,11 @@ public:
    * writes, into the current framebuffer (of the G-buffer's size, from its origin), each type's
    * coverage in [0, 1] (r silhouettes, g creases, b contours) and in alpha the depth the lines
    * are drawn at: the surface's, or for a line reaching past a surface onto the background, the
-   * nearest surface's; 1 elsewhere. Only the G-buffer's content rectangle is written. Nothing is
-   * drawn after a picking render or when the G-buffer is empty.
+   * nearest surface's; 1 elsewhere. Every pixel of the G-buffer's content rectangle is written,
+   * nothing outside it (coverage 0 and depth 1 there). False, having drawn nothing, after a
+   * picking render, when the G-buffer is empty or on an error (reported).
    */
-  void RenderLineCoverage(const vtkRenderState* state);
+  bool RenderLineCoverage(const vtkRenderState* state);
 
   /**
    * True when some line type is on.
@@ -386,10 +387,11 @@ public:
    * Composite the lines only over the 16 x 16 pixel blocks a line can reach, and copy the
    * surfaces elsewhere (on by default). The picture is the same bit for bit; what changes is
    * the cost: the line composite's code runs only where lines are. Off: one full-screen
-   * composite. Lines over the shaded colour only; CoverageOnly and RenderLineCoverage() draw
-   * everything, and so does a line width whose mapping covers pixels without a line value.
-   * The surfaces elsewhere are copied back whole first where CopySurfacesBack allows, else a
-   * copy shader draws the line-free blocks.
+   * composite. The same for RenderLineCoverage(). Not for CoverageOnly's mask (black over the
+   * whole view), nor where a line width's mapping covers pixels without a line value: everything
+   * is drawn then. The surfaces elsewhere are copied back whole first where CopySurfacesBack
+   * allows, else the output without lines (the surfaces' copy, no coverage) is drawn over the
+   * line-free blocks.
    */
   vtkSetMacro(SkipLineFreeBlocks, bool);
   vtkGetMacro(SkipLineFreeBlocks, bool);
@@ -411,7 +413,8 @@ public:
   ///@}
 
   /**
-   * Number of composites drawn over the blocks near lines (SkipLineFreeBlocks).
+   * Number of composites drawn over the blocks near lines (SkipLineFreeBlocks),
+   * RenderLineCoverage()'s images included.
    */
   vtkGetMacro(NumberOfBlockComposites, int);
 
@@ -499,7 +502,7 @@ private:
   bool SkipsLineFreeBlocks() const;
   bool UpdateLineBlocks(vtkOpenGLRenderWindow* window);
   bool DrawOverBlocks(vtkOpenGLRenderWindow* window, vtkRenderer* renderer, const int origin[2],
-    const std::string& lineDefines);
+    int output, const std::string& lineDefines);
   void SetCompositeUniforms(vtkShaderProgram* program, const int origin[2], vtkRenderer* renderer);
 
   struct Internals;

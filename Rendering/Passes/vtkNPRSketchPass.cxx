@@ -201,13 +201,16 @@ void vtkNPRSketchPass::UpdateCoverage(const vtkRenderState* state)
   {
     return;
   }
-  // The lines' coverage and depth, unperturbed, at the G-buffer's size.
+  // The lines' coverage and depth, unperturbed, at the G-buffer's size, over the content
+  // rectangle: the composite takes no line and the far depth outside it, so nothing is cleared.
   internal.CoverageTexture->Resize(width, height);
   {
     vtkNPRRenderTarget::Scope target(
       internal.Target, window, { internal.CoverageTexture }, nullptr, width, height);
-    target.Clear(0.0, 0.0, 0.0, 1.0); // no line, far depth
-    this->EdgePass->RenderLineCoverage(state);
+    if (!this->EdgePass->RenderLineCoverage(state))
+    {
+      target.Clear(0.0, 0.0, 0.0, 1.0); // no line, far depth
+    }
   }
   internal.CoverageValid = true;
   internal.CoverageContentVersion = gbuffer->GetContentVersion();
@@ -331,6 +334,9 @@ void vtkNPRSketchPass::SetSketchUniforms(
   program->SetUniform3f("paperColor", this->PaperColor);
   this->EdgePass->SetLineColorUniforms(program);
   program->SetUniform2i("viewportOrigin", origin);
+  const int* written = gbuffer->GetContentRectangle();
+  program->SetUniform2i("coverageLow", written);
+  program->SetUniform2i("coverageHigh", written + 2);
   if (gbuffer->GetDepthRemapped())
   {
     program->SetUniform2f("nprDepthRemap", gbuffer->GetDepthRemap());

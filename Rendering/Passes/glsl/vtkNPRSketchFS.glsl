@@ -10,6 +10,8 @@ in vec2 texCoord; // unused (pixels come from gl_FragCoord) but read: VTK warns 
 uniform sampler2D colorTexture;    // the G-buffer's colour (flat colours)
 uniform sampler2D depthTexture;    // the G-buffer's depth
 uniform sampler2D coverageTexture; // r, g, b: coverage of each line type; a: the lines' depth
+uniform ivec2 coverageLow;         // the texels written, corners included: no line elsewhere
+uniform ivec2 coverageHigh;
 uniform ivec2 viewportOrigin;      // of the renderer in the window
 #if NPR_SURFACE_NOISE
 uniform sampler2D noiseTexture;    // the surface noise of each block of pixels (xy)
@@ -72,7 +74,8 @@ vec2 nprTimes(vec4 m, vec2 v)
 vec4 nprCoverageAt(ivec2 texel, ivec2 size)
 {
   texel = nprAcrossTiles(texel, size);
-  return nprInside(texel, size) ? texelFetch(coverageTexture, texel, 0) : vec4(0.0, 0.0, 0.0, 1.0);
+  bool written = all(greaterThanEqual(texel, coverageLow)) && all(lessThanEqual(texel, coverageHigh));
+  return written ? texelFetch(coverageTexture, texel, 0) : vec4(0.0, 0.0, 0.0, 1.0);
 }
 
 void main()

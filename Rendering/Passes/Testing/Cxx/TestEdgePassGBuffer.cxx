@@ -5,7 +5,8 @@
 // recomputes the lines only; only the channels the lines need are written, and nothing for an
 // empty renderer or the shaded style; an unchanged frame copies back the kept composite, bit for
 // bit, and only where that is safe, in every style that composites (edges, sketch, drawing); the
-// composite drawn over the blocks near lines alone is the full one, bit for bit.
+// composite drawn over the blocks near lines alone is the full one, bit for bit, and so is the
+// sketch's line coverage.
 //
 // usage: TestEdgePassGBuffer CASE [DATA_DIR]   (CASE: the NPR_TEST_CASE names below)
 #include "nprTesting.h"
@@ -374,9 +375,8 @@ vtkSmartPointer<vtkNPRModelReader> AddBunnyInOffsetViewport(Scene& scene)
 // renderer whose viewport starts inside the window and whose size is no multiple of the blocks':
 // the frame drawn over the blocks is the full-screen composite's, with the surfaces copied back
 // whole and with the copy shader.
-int LineFreeBlocks()
+void SetUpBlockScene(Scene& scene)
 {
-  Scene scene(333, 217);
   AddBunnyInOffsetViewport(scene);
   const double corner[3] = { 0.06, 0.02, -0.05 };
   nprAddCube(scene.Renderer, corner, 0.05, nprGrey);
@@ -384,6 +384,12 @@ int LineFreeBlocks()
   scene.Camera()->Azimuth(30);
   scene.Camera()->Elevation(15);
   scene.Renderer->ResetCameraClippingRange();
+}
+
+int LineFreeBlocks()
+{
+  Scene scene(333, 217);
+  SetUpBlockScene(scene);
   vtkNPREdgePass* edges = scene.Edges();
   const std::vector<std::pair<const char*, std::function<void()>>> settings = {
     { "the defaults", [] {} },
@@ -424,6 +430,100 @@ int LineFreeBlocks()
   return nprTestResult();
 }
 NPR_TEST_CASE("line-free-blocks", LineFreeBlocks);
+
+// ---- The sketch's line coverage over the blocks near lines alone ----
+// The frame with the output drawn over blocks is the full-screen one's, colour and depth bit for
+// bit, and it was drawn over blocks.
+void CheckCoverageOverBlocks(Scene& scene, const std::string& label)
+{
+  vtkNPREdgePass* edges = scene.Edges();
+  edges->SkipLineFreeBlocksOff();
+  const int blockComposites = edges->GetNumberOfBlockComposites();
+  auto full = scene.Render();
+  const std::vector<float> fullDepths = WindowDepths(scene);
+  edges->SkipLineFreeBlocksOn();
+  auto blocks = scene.Render();
+  NPR_CHECK(edges->GetNumberOfBlockComposites() == blockComposites + 1,
+    label << ": " << edges->GetNumberOfBlockComposites() - blockComposites
+          << " frames drawn over blocks, not 1");
+  const nprImageDifference difference = nprCompareImages(blocks, full, { 0, 0.0 });
+  NPR_CHECK(difference.DifferingPixels == 0,
+    label << ": " << difference.DifferingPixels << " pixels differ from the full-screen output");
+  NPR_CHECK(WindowDepths(scene) == fullDepths, label << ": the depths differ");
+  long long lines = 0; // there is something to compare
+  for (int y = 0; y < scene.Height; ++y)
+  {
+    for (int x = 0; x < scene.Width; ++x)
+    {
+      lines += nprPixel(blocks, x, y, 0) < 60 ? 1 : 0;
+    }
+  }
+  std::cout << label << ": " << lines << " line pixels, the same over blocks\n";
+  NPR_CHECK(lines > 300, label << ": only " << lines << " line pixels");
+}
+
+// The sketch draws its line coverage over the content rectangle only, without clearing the rest:
+// after a frame whose lines filled the window, a smaller rectangle's frame is a fresh window's.
+void CheckCoverageOutsideRectangle(const std::function<void(Scene&)>& setUp)
+{
+  Scene fresh(333, 217);
+  setUp(fresh);
+  auto expected = fresh.Render();
+  const std::vector<float> expectedDepths = WindowDepths(fresh);
+  Scene scene(333, 217);
+  setUp(scene);
+  scene.Camera()->Dolly(4.0); // the bunny's lines all over the viewport
+  scene.Renderer->ResetCameraClippingRange();
+  scene.Render();
+  scene.Camera()->Dolly(0.25);
+  scene.Renderer->ResetCameraClippingRange();
+  auto after = scene.Render();
+  const nprImageDifference difference = nprCompareImages(after, expected, { 0, 0.0 });
+  NPR_CHECK(difference.DifferingPixels == 0,
+    "after a larger frame: " << difference.DifferingPixels << " pixels differ from a fresh window");
+  NPR_CHECK(WindowDepths(scene) == expectedDepths, "after a larger frame: the depths differ");
+}
+
+int CoverageOverBlocks()
+{
+  Scene scene(333, 217);
+  SetUpBlockScene(scene);
+  scene.GBuffer()->ReuseUnchangedFramesOff();
+  scene.Pass->SetStyleToSketch();
+  vtkNPREdgePass* edges = scene.Edges();
+  vtkNPRSketchPass* sketch = scene.Sketch();
+  const std::vector<std::pair<const char*, std::function<void()>>> settings = {
+    { "sketch", [] {} },
+    { "sketch, 12 px silhouettes, uncertainty 9",
+      [edges, sketch]
+      {
+        edges->SetSilhouetteLineWidth(12.0);
+        sketch->SetUncertainty(9.0);
+      } },
+    { "sketch, screen noise, on paper",
+      [sketch]
+      {
+        sketch->SetNoiseSpace(vtkNPRSketchPass::SCREEN);
+        sketch->PaperOn();
+      } },
+    { "sketch, parallel projection", [&scene] { scene.Camera()->ParallelProjectionOn(); } },
+  };
+  for (const auto& setting : settings)
+  {
+    setting.second(); // on top of the ones before
+    CheckCoverageOverBlocks(scene, setting.first);
+  }
+  CheckCoverageOutsideRectangle(
+    [](Scene& s)
+    {
+      SetUpBlockScene(s);
+      s.Pass->SetStyleToSketch();
+      s.Sketch()->SetUncertainty(9.0);
+      s.Sketch()->SetNoiseSpace(vtkNPRSketchPass::SCREEN);
+    });
+  return nprTestResult();
+}
+NPR_TEST_CASE("line-free-blocks-coverage", CoverageOverBlocks);
 
 // ---- The surfaces copied back whole over any picture under them, or not at all ----
 // No line type on: the composite is the surfaces' copy alone, copied back (the G-buffer drawn)
