@@ -260,6 +260,311 @@ void FitSSAO(const std::vector<SpeedMethod>& methods, double sceneSize)
     }
   }
 }
+
+// vtkPolyDataSilhouette for the current camera, drawn as black lines over the surface (the
+// `silhouette` method). A new filter per scene: it keeps its edge table while the input is older
+// than the table, so a scene loaded before the previous one was measured would be drawn from
+// stale edges.
+struct SilhouetteLines
+{
+  vtkSmartPointer<vtkPolyDataSilhouette> Filter;
+  vtkNew<vtkPolyDataMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+
+  SilhouetteLines(nprBenchmarkStage& stage, double lineWidth)
+  {
+    this->Mapper->ScalarVisibilityOff();
+    this->Actor->SetMapper(this->Mapper);
+    this->Actor->GetProperty()->SetColor(0.0, 0.0, 0.0);
+    this->Actor->GetProperty()->SetLineWidth(static_cast<float>(lineWidth));
+    this->Actor->GetProperty()->LightingOff();
+    this->Actor->VisibilityOff();
+    stage.Renderer->AddActor(this->Actor);
+  }
+
+  void SetScene(nprBenchmarkStage& stage, vtkPolyData* mesh)
+  {
+    this->Filter = vtkSmartPointer<vtkPolyDataSilhouette>::New();
+    this->Filter->SetCamera(stage.Camera());
+    this->Filter->SetProp3D(stage.MeshActor);
+    this->Filter->SetDirectionToCameraOrigin();
+    this->Filter->BorderEdgesOn();
+    this->Filter->SetInputData(mesh);
+    this->Mapper->SetInputConnection(this->Filter->GetOutputPort());
+  }
+};
+
+// Draws and times one method's frames on the stage, wall clock and GPU.
+class SpeedFrames
+{
+public:
+  SpeedFrames(nprBenchmarkStage& stage, SilhouetteLines& silhouette)
+    : Stage(stage)
+    , Silhouette(silhouette)
+    , GPU(stage.Window)
+  {
+  }
+
+  void Activate(const SpeedMethod& method)
+  {
+    this->Stage.Activate(nullptr, false); // coincident-topology resolution as users get it
+    this->Stage.Renderer->SetPass(method.Pass);
+    this->Silhouette.Actor->SetVisibility(method.Silhouette);
+    if (method.Silhouette)
+    {
+      // Lines on the surface win the depth test as they would in an application.
+      vtkMapper::SetResolveCoincidentTopology(VTK_RESOLVE_POLYGON_OFFSET);
+    }
+  }
+
+  // The frame's wall-clock milliseconds; gpuMs its GPU time (< 0 without timer queries).
+  double Time(const SpeedMethod& method, double& gpuMs)
+  {
+    this->Activate(method);
+    vtkRenderWindow* window = this->Stage.Window;
+    double ms = 0.0;
+    if (method.Unchanged)
+    {
+      nprTimeFrame(window, this->Stage.Camera()); // this frame drawn once, untimed
+      const nprClock::time_point start = nprClock::now();
+      this->GPU.Begin();
+      window->Render(); // nothing changed: what the pass reuses
+      window->WaitForCompletion();
+      ms = std::chrono::duration<double, std::milli>(nprClock::now() - start).count();
+    }
+    else
+    {
+      this->GPU.Begin();
+      ms = nprTimeFrame(window, this->Stage.Camera(),
+        [&]()
+        {
+          if (method.Silhouette)
+          {
+            this->Silhouette.Filter->Modified(); // the extraction is part of every frame
+          }
+        });
+    }
+    gpuMs = this->GPU.End();
+    return ms;
+  }
+
+private:
+  nprBenchmarkStage& Stage;
+  SilhouetteLines& Silhouette;
+  GPUTimer GPU;
+};
+
+std::string SizeName(const std::pair<int, int>& size)
+{
+  return std::to_string(size.first) + "x" + std::to_string(size.second);
+}
+
+// One run at the window's size: the same camera path in every run, each frame drawn by every
+// method in turn; frame -1 warms every method up (shaders, buffers of this size, the
+// silhouette's edge table). One row a method: the median of its frames.
+void MeasureRun(SpeedFrames& frames, nprBenchmarkStage& stage,
+  const std::vector<SpeedMethod>& methods, int frameCount, const SpeedRow& where,
+  std::vector<SpeedRow>& rows)
+{
+  stage.Activate(nullptr, false);
+  nprApplyBenchmarkCamera(stage.Renderer, nprBenchmarkCameras()[0]);
+  std::vector<std::vector<double>> times(methods.size()), gpuTimes(methods.size());
+  for (int frame = -1; frame < frameCount; ++frame)
+  {
+    if (frame >= 0)
+    {
+      stage.Camera()->Azimuth(1.0);
+      stage.Renderer->ResetCameraClippingRange();
+    }
+    for (size_t m = 0; m < methods.size(); ++m)
+    {
+      double gpuMs = -1.0;
+      const double ms = frames.Time(methods[m], gpuMs);
+      if (frame >= 0)
+      {
+        times[m].push_back(ms);
+        gpuTimes[m].push_back(gpuMs);
+      }
+    }
+  }
+  for (size_t m = 0; m < methods.size(); ++m)
+  {
+    SpeedRow row = where;
+    row.Method = methods[m].Name;
+    row.MedianMs = nprMedian(times[m]);
+    row.GPUMedianMs = nprMedian(gpuTimes[m]);
+    rows.push_back(row);
+  }
+}
+
+// Object-space feature lines per camera change, each run's median (the first update, untimed,
+// builds the adjacency).
+void MeasureFeatureLines(SpeedFrames& frames, nprBenchmarkStage& stage, const SpeedMethod& plain,
+  const nprBenchmarkOptions& options, const std::string& scene, std::vector<SpeedRow>& rows)
+{
+  frames.Activate(plain);
+  nprApplyBenchmarkCamera(stage.Renderer, nprBenchmarkCameras()[0]);
+  stage.FeatureLines->SetCamera(stage.Camera());
+  stage.FeatureLines->Update();
+  for (int run = 0; run < options.Runs; ++run)
+  {
+    std::vector<double> times;
+    for (int frame = 0; frame < options.Frames; ++frame)
+    {
+      stage.Camera()->Azimuth(1.0);
+      const nprClock::time_point start = nprClock::now();
+      stage.FeatureLines->SetCamera(stage.Camera());
+      stage.FeatureLines->Update();
+      times.push_back(std::chrono::duration<double, std::milli>(nprClock::now() - start).count());
+    }
+    rows.push_back({ scene, "any", FeatureLinesName, run + 1, nprMedian(times) });
+  }
+}
+
+// Every scene at every size, options.Runs times; then the feature lines of each scene.
+std::vector<SpeedRow> MeasureScenes(nprBenchmarkStage& stage,
+  const std::vector<nprBenchmarkScene>& scenes, std::vector<SpeedMethod>& methods,
+  const nprBenchmarkOptions& options, bool featureLines)
+{
+  SilhouetteLines silhouette(stage, options.LineWidth);
+  SpeedFrames frames(stage, silhouette);
+  std::vector<SpeedRow> rows;
+  for (const nprBenchmarkScene& scene : scenes)
+  {
+    stage.SetMesh(scene.Mesh, scene.Raw);
+    silhouette.SetScene(stage, scene.Mesh);
+    FitSSAO(methods, nprModelSize(scene.Mesh));
+    for (const auto& size : options.Sizes)
+    {
+      stage.Window->SetSize(size.first, size.second);
+      for (int run = 0; run < options.Runs; ++run)
+      {
+        const nprClock::time_point viewStart = nprClock::now();
+        const size_t first = rows.size();
+        MeasureRun(frames, stage, methods, options.Frames,
+          { scene.Name, SizeName(size), std::string(), run + 1 }, rows);
+        std::cerr << "npr-benchmark: " << scene.Name << " " << SizeName(size) << " run " << run + 1
+                  << ": plain " << nprFixed(rows[first].MedianMs, 1) << " ms, done in "
+                  << nprFixed(nprSecondsSince(viewStart), 1) << " s\n";
+      }
+    }
+    if (featureLines)
+    {
+      MeasureFeatureLines(frames, stage, methods[0], options, scene.Name, rows);
+    }
+  }
+  for (const SpeedMethod& method : methods)
+  {
+    if (method.Pass)
+    {
+      method.Pass->ReleaseGraphicsResources(stage.Window);
+    }
+  }
+  stage.Renderer->SetPass(nullptr);
+  return rows;
+}
+
+// speed.csv: one row a run; the rows without a positive time are returned as problems.
+std::string WriteSpeedCSV(const std::vector<SpeedRow>& rows, const std::string& path)
+{
+  std::ofstream csv(path);
+  csv << "scene,size,method,run,median_ms,gpu_median_ms\n";
+  std::string problems;
+  for (const SpeedRow& row : rows)
+  {
+    csv << row.Scene << "," << row.Size << ",\"" << row.Method << "\"," << row.Run << ","
+        << row.MedianMs << "," << row.GPUMedianMs << "\n";
+    if (!(row.MedianMs > 0.0))
+    {
+      problems += row.Scene + " " + row.Size + " " + row.Method + ": no positive time\n";
+    }
+  }
+  if (!csv)
+  {
+    throw std::runtime_error(path + ": cannot write");
+  }
+  return problems;
+}
+
+// One scene and size's table: the median of the runs' medians; the ratio and the difference to
+// the plain frame are taken within each run.
+void WriteSpeedTable(std::ostream& md, const std::vector<SpeedRow>& rows,
+  const std::vector<SpeedMethod>& methods, const nprBenchmarkScene& scene,
+  const std::string& sizeName)
+{
+  std::map<int, double> plain, plainGPU;
+  for (const SpeedRow& row : rows)
+  {
+    if (row.Scene == scene.Name && row.Size == sizeName && row.Method == methods[0].Name)
+    {
+      plain[row.Run] = row.MedianMs;
+      plainGPU[row.Run] = row.GPUMedianMs;
+    }
+  }
+  md << "\n"
+     << scene.Name << " (" << scene.Triangles << " triangles), " << sizeName << ":\n\n"
+     << "| method | median (ms) | ratio to plain | over plain (ms) | GPU (ms) | GPU over plain "
+        "(ms) |\n|---|---|---|---|---|---|\n";
+  for (const SpeedMethod& method : methods)
+  {
+    std::vector<double> ms, ratios, extra, gpu, gpuExtra;
+    for (const SpeedRow& row : rows)
+    {
+      if (row.Scene == scene.Name && row.Size == sizeName && row.Method == method.Name)
+      {
+        ms.push_back(row.MedianMs);
+        ratios.push_back(row.MedianMs / plain[row.Run]);
+        extra.push_back(row.MedianMs - plain[row.Run]);
+        if (row.GPUMedianMs >= 0.0 && plainGPU[row.Run] >= 0.0)
+        {
+          gpu.push_back(row.GPUMedianMs);
+          gpuExtra.push_back(row.GPUMedianMs - plainGPU[row.Run]);
+        }
+      }
+    }
+    md << "| " << method.Name << " | " << nprFixed(nprMedian(ms), 1) << " | "
+       << nprFixed(nprMedian(ratios), 2) << " | " << nprFixed(nprMedian(extra), 1) << " | "
+       << (gpu.empty() ? std::string("n/a") : nprFixed(nprMedian(gpu), 3)) << " | "
+       << (gpuExtra.empty() ? std::string("n/a") : nprFixed(nprMedian(gpuExtra), 3)) << " |\n";
+  }
+}
+
+// speed.md: how the figures were taken, then a table per scene and size, and the feature lines.
+std::string SpeedMarkdown(const std::vector<SpeedRow>& rows,
+  const std::vector<SpeedMethod>& methods, const std::vector<nprBenchmarkScene>& scenes,
+  const nprBenchmarkOptions& options, const std::string& renderer, bool featureLines)
+{
+  std::ostringstream md;
+  md << "Frame times (npr-benchmark --speed) on " << renderer << ", no MSAA: median of "
+     << options.Frames << " frames (camera turned 1 degree per frame, the methods interleaved), "
+     << "median of " << options.Runs << " run" << (options.Runs > 1 ? "s" : "")
+     << "; the ratio is to the plain VTK frame of the same run. GPU: the frame's GL_TIME_ELAPSED "
+     << "(timestamp queries around Render(): median, and over the plain frame's), n/a without "
+        "them.\n";
+  for (const nprBenchmarkScene& scene : scenes)
+  {
+    for (const auto& size : options.Sizes)
+    {
+      WriteSpeedTable(md, rows, methods, scene, SizeName(size));
+    }
+    if (!featureLines)
+    {
+      continue;
+    }
+    std::vector<double> lines;
+    for (const SpeedRow& row : rows)
+    {
+      if (row.Scene == scene.Name && row.Method == FeatureLinesName)
+      {
+        lines.push_back(row.MedianMs);
+      }
+    }
+    md << "\n"
+       << scene.Name << ": " << FeatureLinesName << ": " << nprFixed(nprMedian(lines), 1)
+       << " ms (any size)\n";
+  }
+  return md.str();
+}
 }
 
 int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
@@ -272,229 +577,18 @@ int nprRunBenchmarkSpeed(const nprBenchmarkOptions& options)
   const bool featureLines = options.Methods.empty() ||
     std::find(options.Methods.begin(), options.Methods.end(), "featurelines") !=
       options.Methods.end();
+  const std::vector<SpeedRow> rows = MeasureScenes(stage, scenes, methods, options, featureLines);
 
-  // vtkPolyDataSilhouette for the current camera, drawn as lines over the surface.
-  // A new filter per scene: it keeps its edge table while the input is older than the table, so
-  // a scene loaded before the previous one was measured would be drawn from stale edges.
-  vtkSmartPointer<vtkPolyDataSilhouette> silhouette;
-  vtkNew<vtkPolyDataMapper> silhouetteMapper;
-  silhouetteMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> silhouetteActor;
-  silhouetteActor->SetMapper(silhouetteMapper);
-  silhouetteActor->GetProperty()->SetColor(0.0, 0.0, 0.0);
-  silhouetteActor->GetProperty()->SetLineWidth(static_cast<float>(options.LineWidth));
-  silhouetteActor->GetProperty()->LightingOff();
-  silhouetteActor->VisibilityOff();
-  stage.Renderer->AddActor(silhouetteActor);
-
-  auto activate = [&](const SpeedMethod& method)
-  {
-    stage.Activate(nullptr, false); // coincident-topology resolution as users get it
-    stage.Renderer->SetPass(method.Pass);
-    silhouetteActor->SetVisibility(method.Silhouette);
-    if (method.Silhouette)
-    {
-      // Lines on the surface win the depth test as they would in an application.
-      vtkMapper::SetResolveCoincidentTopology(VTK_RESOLVE_POLYGON_OFFSET);
-    }
-  };
-  GPUTimer gpuTimer(stage.Window);
-  double gpuMs = -1.0; // of the last timed frame
-  auto timedFrame = [&](const SpeedMethod& method)
-  {
-    activate(method);
-    if (method.Unchanged)
-    {
-      nprTimeFrame(stage.Window, stage.Camera()); // this frame drawn once, untimed
-      const nprClock::time_point start = nprClock::now();
-      gpuTimer.Begin();
-      stage.Window->Render(); // nothing changed: what the pass reuses
-      stage.Window->WaitForCompletion();
-      const double ms = std::chrono::duration<double, std::milli>(nprClock::now() - start).count();
-      gpuMs = gpuTimer.End();
-      return ms;
-    }
-    gpuTimer.Begin();
-    const double ms = nprTimeFrame(stage.Window, stage.Camera(),
-      [&]()
-      {
-        if (method.Silhouette)
-        {
-          silhouette->Modified(); // the extraction is part of every frame
-        }
-      });
-    gpuMs = gpuTimer.End();
-    return ms;
-  };
-
-  std::vector<SpeedRow> rows;
-  for (const nprBenchmarkScene& scene : scenes)
-  {
-    stage.SetMesh(scene.Mesh, scene.Raw);
-    silhouette = vtkSmartPointer<vtkPolyDataSilhouette>::New();
-    silhouette->SetCamera(stage.Camera());
-    silhouette->SetProp3D(stage.MeshActor);
-    silhouette->SetDirectionToCameraOrigin();
-    silhouette->BorderEdgesOn();
-    silhouette->SetInputData(scene.Mesh);
-    silhouetteMapper->SetInputConnection(silhouette->GetOutputPort());
-    FitSSAO(methods, nprModelSize(scene.Mesh));
-    for (const auto& size : options.Sizes)
-    {
-      stage.Window->SetSize(size.first, size.second);
-      const std::string sizeName = std::to_string(size.first) + "x" + std::to_string(size.second);
-      for (int run = 0; run < options.Runs; ++run)
-      {
-        const nprClock::time_point viewStart = nprClock::now();
-        // The same camera path in every run; frame -1 warms every method up (shaders, buffers
-        // of this size, the silhouette's edge table).
-        stage.Activate(nullptr, false);
-        nprApplyBenchmarkCamera(stage.Renderer, nprBenchmarkCameras()[0]);
-        std::vector<std::vector<double>> times(methods.size()), gpuTimes(methods.size());
-        for (int frame = -1; frame < options.Frames; ++frame)
-        {
-          if (frame >= 0)
-          {
-            stage.Camera()->Azimuth(1.0);
-            stage.Renderer->ResetCameraClippingRange();
-          }
-          for (size_t m = 0; m < methods.size(); ++m)
-          {
-            const double ms = timedFrame(methods[m]);
-            if (frame >= 0)
-            {
-              times[m].push_back(ms);
-              gpuTimes[m].push_back(gpuMs);
-            }
-          }
-        }
-        for (size_t m = 0; m < methods.size(); ++m)
-        {
-          rows.push_back({ scene.Name, sizeName, methods[m].Name, run + 1, nprMedian(times[m]),
-            nprMedian(gpuTimes[m]) });
-        }
-        std::cerr << "npr-benchmark: " << scene.Name << " " << sizeName << " run " << run + 1
-                  << ": plain " << nprFixed(nprMedian(times[0]), 1) << " ms, done in "
-                  << nprFixed(nprSecondsSince(viewStart), 1) << " s\n";
-      }
-    }
-
-    // Object-space feature lines per camera change: the first update builds the adjacency.
-    if (!featureLines)
-    {
-      continue;
-    }
-    activate(methods[0]);
-    nprApplyBenchmarkCamera(stage.Renderer, nprBenchmarkCameras()[0]);
-    stage.FeatureLines->SetCamera(stage.Camera());
-    stage.FeatureLines->Update();
-    for (int run = 0; run < options.Runs; ++run)
-    {
-      std::vector<double> times;
-      for (int frame = 0; frame < options.Frames; ++frame)
-      {
-        stage.Camera()->Azimuth(1.0);
-        const nprClock::time_point start = nprClock::now();
-        stage.FeatureLines->SetCamera(stage.Camera());
-        stage.FeatureLines->Update();
-        times.push_back(std::chrono::duration<double, std::milli>(nprClock::now() - start).count());
-      }
-      rows.push_back({ scene.Name, "any", FeatureLinesName, run + 1, nprMedian(times) });
-    }
-  }
-  for (const SpeedMethod& method : methods)
-  {
-    if (method.Pass)
-    {
-      method.Pass->ReleaseGraphicsResources(stage.Window);
-    }
-  }
-  stage.Renderer->SetPass(nullptr);
-
-  // ---- Reports: the median of the runs' medians; the ratio is taken within each run ----
-  std::ofstream csv(options.Out + "/speed.csv");
-  csv << "scene,size,method,run,median_ms,gpu_median_ms\n";
-  std::string problems;
-  for (const SpeedRow& row : rows)
-  {
-    csv << row.Scene << "," << row.Size << ",\"" << row.Method << "\"," << row.Run << ","
-        << row.MedianMs << "," << row.GPUMedianMs << "\n";
-    if (!(row.MedianMs > 0.0))
-    {
-      problems += row.Scene + " " + row.Size + " " + row.Method + ": no positive time\n";
-    }
-  }
-  std::ostringstream md;
-  md << "Frame times (npr-benchmark --speed) on "
-     << vtkNPRRenderWindowFactory::GetGLRenderer(stage.Window) << ", no MSAA: median of "
-     << options.Frames << " frames (camera turned 1 degree per frame, the methods interleaved), "
-     << "median of " << options.Runs << " run" << (options.Runs > 1 ? "s" : "")
-     << "; the ratio is to the plain VTK frame of the same run. GPU: the frame's GL_TIME_ELAPSED "
-     << "(timestamp queries around Render(): median, and over the plain frame's), n/a without "
-        "them.\n";
-  for (const nprBenchmarkScene& scene : scenes)
-  {
-    for (const auto& size : options.Sizes)
-    {
-      const std::string sizeName = std::to_string(size.first) + "x" + std::to_string(size.second);
-      std::map<int, double> plain, plainGPU;
-      for (const SpeedRow& row : rows)
-      {
-        if (row.Scene == scene.Name && row.Size == sizeName && row.Method == methods[0].Name)
-        {
-          plain[row.Run] = row.MedianMs;
-          plainGPU[row.Run] = row.GPUMedianMs;
-        }
-      }
-      md << "\n"
-         << scene.Name << " (" << scene.Triangles << " triangles), " << sizeName << ":\n\n"
-         << "| method | median (ms) | ratio to plain | over plain (ms) | GPU (ms) | GPU over plain "
-            "(ms) |\n|---|---|---|---|---|---|\n";
-      for (const SpeedMethod& method : methods)
-      {
-        std::vector<double> ms, ratios, extra, gpu, gpuExtra;
-        for (const SpeedRow& row : rows)
-        {
-          if (row.Scene == scene.Name && row.Size == sizeName && row.Method == method.Name)
-          {
-            ms.push_back(row.MedianMs);
-            ratios.push_back(row.MedianMs / plain[row.Run]);
-            extra.push_back(row.MedianMs - plain[row.Run]);
-            if (row.GPUMedianMs >= 0.0 && plainGPU[row.Run] >= 0.0)
-            {
-              gpu.push_back(row.GPUMedianMs);
-              gpuExtra.push_back(row.GPUMedianMs - plainGPU[row.Run]);
-            }
-          }
-        }
-        md << "| " << method.Name << " | " << nprFixed(nprMedian(ms), 1) << " | "
-           << nprFixed(nprMedian(ratios), 2) << " | " << nprFixed(nprMedian(extra), 1) << " | "
-           << (gpu.empty() ? std::string("n/a") : nprFixed(nprMedian(gpu), 3)) << " | "
-           << (gpuExtra.empty() ? std::string("n/a") : nprFixed(nprMedian(gpuExtra), 3)) << " |\n";
-      }
-    }
-    std::vector<double> lines;
-    for (const SpeedRow& row : rows)
-    {
-      if (row.Scene == scene.Name && row.Method == FeatureLinesName)
-      {
-        lines.push_back(row.MedianMs);
-      }
-    }
-    if (!featureLines)
-    {
-      continue;
-    }
-    md << "\n"
-       << scene.Name << ": " << FeatureLinesName << ": " << nprFixed(nprMedian(lines), 1)
-       << " ms (any size)\n";
-  }
+  const std::string problems = WriteSpeedCSV(rows, options.Out + "/speed.csv");
+  const char* renderer = vtkNPRRenderWindowFactory::GetGLRenderer(stage.Window);
+  const std::string md =
+    SpeedMarkdown(rows, methods, scenes, options, renderer ? renderer : "unknown", featureLines);
   std::ofstream markdown(options.Out + "/speed.md");
-  markdown << md.str();
-  std::cout << md.str();
-  if (!csv || !markdown)
+  markdown << md;
+  std::cout << md;
+  if (!markdown)
   {
-    throw std::runtime_error(options.Out + ": cannot write speed.csv or speed.md");
+    throw std::runtime_error(options.Out + "/speed.md: cannot write");
   }
   std::cerr << "npr-benchmark: wrote " << options.Out << "/speed.{csv,md} in "
             << nprFormat(nprSecondsSince(runStart), 4) << " s\n";
