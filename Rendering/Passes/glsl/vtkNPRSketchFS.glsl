@@ -74,7 +74,8 @@ vec2 nprTimes(vec4 m, vec2 v)
 vec4 nprCoverageAt(ivec2 texel, ivec2 size)
 {
   texel = nprAcrossTiles(texel, size);
-  bool written = all(greaterThanEqual(texel, coverageLow)) && all(lessThanEqual(texel, coverageHigh));
+  bool written =
+    all(greaterThanEqual(texel, coverageLow)) && all(lessThanEqual(texel, coverageHigh));
   return written ? texelFetch(coverageTexture, texel, 0) : vec4(0.0, 0.0, 0.0, 1.0);
 }
 

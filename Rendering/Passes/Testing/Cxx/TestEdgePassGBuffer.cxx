@@ -360,6 +360,21 @@ void CheckShaderCopy(Scene& scene, const std::string& label, const FullFrame& fu
   NPR_CHECK(WindowDepths(scene) == full.Depths, label << ", shader copy: the depths differ");
 }
 
+// The frame compared over blocks has lines (dark pixels) in it: there is something to compare.
+void CheckHasLines(Scene& scene, vtkImageData* frame, const std::string& label)
+{
+  long long dark = 0;
+  for (int y = 0; y < scene.Height; ++y)
+  {
+    for (int x = 0; x < scene.Width; ++x)
+    {
+      dark += nprPixel(frame, x, y, 0) < 60 ? 1 : 0;
+    }
+  }
+  std::cout << label << ": " << dark << " line pixels, the same over blocks\n";
+  NPR_CHECK(dark > 300, label << ": only " << dark << " line pixels");
+}
+
 // The bunny in a renderer whose viewport starts inside the window, so that its size is no
 // multiple of the blocks' (16 pixels) and its origin is not the window's.
 vtkSmartPointer<vtkNPRModelReader> AddBunnyInOffsetViewport(Scene& scene)
@@ -416,16 +431,7 @@ int LineFreeBlocks()
     setting.second(); // on top of the ones before
     const auto frames = CheckOverBlocks(scene, setting.first, true);
     CheckShaderCopy(scene, setting.first, frames.first);
-    long long dark = 0; // the lines: there is something to compare
-    for (int y = 0; y < scene.Height; ++y)
-    {
-      for (int x = 0; x < scene.Width; ++x)
-      {
-        dark += nprPixel(frames.second, x, y, 0) < 60 ? 1 : 0;
-      }
-    }
-    std::cout << setting.first << ": " << dark << " line pixels, the same over blocks\n";
-    NPR_CHECK(dark > 300, setting.first << ": only " << dark << " line pixels");
+    CheckHasLines(scene, frames.second, setting.first);
   }
   return nprTestResult();
 }
@@ -450,16 +456,7 @@ void CheckCoverageOverBlocks(Scene& scene, const std::string& label)
   NPR_CHECK(difference.DifferingPixels == 0,
     label << ": " << difference.DifferingPixels << " pixels differ from the full-screen output");
   NPR_CHECK(WindowDepths(scene) == fullDepths, label << ": the depths differ");
-  long long lines = 0; // there is something to compare
-  for (int y = 0; y < scene.Height; ++y)
-  {
-    for (int x = 0; x < scene.Width; ++x)
-    {
-      lines += nprPixel(blocks, x, y, 0) < 60 ? 1 : 0;
-    }
-  }
-  std::cout << label << ": " << lines << " line pixels, the same over blocks\n";
-  NPR_CHECK(lines > 300, label << ": only " << lines << " line pixels");
+  CheckHasLines(scene, blocks, label);
 }
 
 // The sketch draws its line coverage over the content rectangle only, without clearing the rest:
