@@ -6,11 +6,14 @@
 #include "nprBenchmarkReport.h"
 #include "nprBenchmarkScenes.h"
 #include "nprBenchmarkStage.h"
+#include "nprOneFetchPass.h"
 #include "nprPassSettings.h"
 #include "nprTiming.h"
+#include "nprWindowImage.h"
 
 #include "vtkCamera.h"
 #include "vtkEDLShading.h"
+#include "vtkImageData.h"
 #include "vtkNPREdgePass.h"
 #include "vtkNPRGBufferPass.h"
 #include "vtkNPRInkPass.h"
@@ -48,6 +51,7 @@ struct SpeedMethod
   vtkSmartPointer<vtkRenderPass> Pass; // nullptr: VTK's own chain
   bool Unchanged = false;              // time a second render of the same frame
   bool Silhouette = false;             // vtkPolyDataSilhouette's lines over the plain surface
+  bool CopiesPlain = false;            // draws the plain frame's pixels: checked in the warm-up
 };
 
 struct SpeedRow
@@ -182,6 +186,10 @@ std::vector<SpeedMethod> MakeMethods()
   // nothing shown from it, so the floor's difference to it is the copy into the window.
   methods.push_back(
     { "gbuffer-only", "vtkNPRGBufferPass alone (drawn, not shown)", GBufferAlone() });
+  // The bound under every screen-space style: the render steps drawn into a texture and copied
+  // into the window by one full-screen fetch per pixel (nprOneFetchPass).
+  methods.push_back({ "one-fetch", "render steps into a texture, one full-screen fetch",
+    OverRenderSteps<nprOneFetchPass>(), false, false, true });
   // What the optional line tests cost: creases from the face normals (the G-buffer's geometry
   // attachment RGBA32F instead of RG32F), smooth silhouettes, suggestive contours.
   auto faceCreases = NPRStyle("edges");
@@ -359,9 +367,30 @@ std::string SizeName(const std::pair<int, int>& size)
   return std::to_string(size.first) + "x" + std::to_string(size.second);
 }
 
+// A bound that drew less than the plain frame would not bound anything: throws unless the
+// window's image equals the plain frame's, pixel for pixel.
+void CheckCopiesPlain(vtkRenderWindow* window, vtkImageData* plain, const SpeedMethod& method)
+{
+  vtkSmartPointer<vtkImageData> image = nprReadWindowImage(window, false);
+  const auto* a = static_cast<const unsigned char*>(plain->GetScalarPointer());
+  const auto* b = static_cast<const unsigned char*>(image->GetScalarPointer());
+  const vtkIdType bytes = plain->GetNumberOfPoints() * plain->GetNumberOfScalarComponents();
+  vtkIdType differ = 0;
+  for (vtkIdType i = 0; i < bytes; ++i)
+  {
+    differ += a[i] != b[i];
+  }
+  if (image->GetNumberOfPoints() != plain->GetNumberOfPoints() || differ > 0)
+  {
+    throw std::runtime_error(method.Key + ": its frame is not the plain frame (" +
+      std::to_string(differ) + " bytes differ), so it bounds nothing");
+  }
+}
+
 // One run at the window's size: the same camera path in every run, each frame drawn by every
 // method in turn; frame -1 warms every method up (shaders, buffers of this size, the
-// silhouette's edge table). One row a method: the median of its frames.
+// silhouette's edge table) and checks the copies of the plain frame. One row a method: the
+// median of its frames.
 void MeasureRun(SpeedFrames& frames, nprBenchmarkStage& stage,
   const std::vector<SpeedMethod>& methods, int frameCount, const SpeedRow& where,
   std::vector<SpeedRow>& rows)
@@ -369,6 +398,7 @@ void MeasureRun(SpeedFrames& frames, nprBenchmarkStage& stage,
   stage.Activate(nullptr, false);
   nprApplyBenchmarkCamera(stage.Renderer, nprBenchmarkCameras()[0]);
   std::vector<std::vector<double>> times(methods.size()), gpuTimes(methods.size());
+  vtkSmartPointer<vtkImageData> plainImage;
   for (int frame = -1; frame < frameCount; ++frame)
   {
     if (frame >= 0)
@@ -380,6 +410,14 @@ void MeasureRun(SpeedFrames& frames, nprBenchmarkStage& stage,
     {
       double gpuMs = -1.0;
       const double ms = frames.Time(methods[m], gpuMs);
+      if (frame < 0 && m == 0)
+      {
+        plainImage = nprReadWindowImage(stage.Window, false);
+      }
+      else if (frame < 0 && methods[m].CopiesPlain)
+      {
+        CheckCopiesPlain(stage.Window, plainImage, methods[m]);
+      }
       if (frame >= 0)
       {
         times[m].push_back(ms);
