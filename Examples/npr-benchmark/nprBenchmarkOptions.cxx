@@ -87,6 +87,15 @@ OUT/scale.csv, OUT/scale.md, OUT/scale_programs.png and OUT/scale_steps.png (def
   --version          the program and vtkNPR version
 )";
 
+// Which of the options that modes default the command line gave.
+struct GivenOptions
+{
+  bool Frames = false;
+  bool Sizes = false;
+  bool Cameras = false;
+  bool Runs = false;
+};
+
 std::vector<std::string> ParseScaleSizes(const std::string& text)
 {
   const std::vector<std::string> sizes = nprSplitList(text, true);
@@ -105,44 +114,36 @@ std::vector<std::string> ParseScaleSizes(const std::string& text)
   return sizes;
 }
 
-// --scale's defaults; its options refused without it.
-void ApplyScaleDefaults(
-  nprBenchmarkOptions& options, bool sizesGiven, bool framesGiven, bool runsGiven)
+std::vector<std::pair<int, int>> ParseSizes(const std::string& text)
 {
-  if (!options.Scale)
+  std::vector<std::pair<int, int>> sizes;
+  for (const std::string& size : nprSplitList(text, true))
   {
-    if (!options.ScaleSizes.empty() || !options.ScaleMeshes.empty())
+    sizes.push_back(nprParseSize("--sizes", size, 16, 8192, "WxH[,WxH...]"));
+  }
+  if (sizes.empty())
+  {
+    throw nprUsageError("--sizes expects WxH[,WxH...]");
+  }
+  return sizes;
+}
+
+std::vector<std::string> ParseScenes(const std::string& text)
+{
+  const std::vector<std::string> scenes = nprSplitList(text, true);
+  const auto& names = nprBenchmarkSceneNames();
+  for (const std::string& scene : scenes)
+  {
+    // box (--speed's small scene) is not among the defaults.
+    if (scene != "box" && !nprIsGeneratedScene(scene) &&
+      std::find(names.begin(), names.end(), scene) == names.end())
     {
-      throw nprUsageError("--scale-sizes and --scale-meshes go with --scale");
+      throw nprUsageError("unknown scene '" + scene +
+        "' (cad, rotor, bunny, isosurface, blobs, knot, bunny1m, box, cone-flange, "
+        "steep-cone, filleted-cylinder, boss-pocket, bumpy-torus)");
     }
-    if (!options.ScaleSteps.empty() && !sizesGiven)
-    {
-      options.Sizes = { { 1920, 1080 } };
-    }
-    return;
   }
-  if (options.ScaleSizes.empty())
-  {
-    options.ScaleSizes = options.Quick ? std::vector<std::string>{ "62k", "250k" }
-                                       : std::vector<std::string>{ "1m", "4m", "16m" };
-  }
-  if (options.ScaleMeshes.empty())
-  {
-    options.ScaleMeshes = options.Out + "/meshes";
-  }
-  if (sizesGiven && options.Sizes.size() > 1)
-  {
-    throw nprUsageError("--scale measures one window size: --sizes WxH");
-  }
-  if (!sizesGiven && !options.Quick)
-  {
-    options.Sizes = { { 1920, 1080 } };
-  }
-  if (!framesGiven && !options.Quick)
-  {
-    options.Frames = 3;
-  }
-  options.Runs = runsGiven ? options.Runs : 1;
+  return scenes;
 }
 
 // The options that take a text as it is (--data DIR) or switch something on (--quick).
@@ -178,6 +179,217 @@ bool ParseTextOrSwitch(nprArgumentReader& arguments, nprBenchmarkOptions& option
   }
   return false;
 }
+
+// The options that take a number, each checked against its range.
+bool ParseNumber(nprArgumentReader& arguments, nprBenchmarkOptions& options, GivenOptions& given)
+{
+  const std::string& arg = arguments.Current();
+  if (arg == "--frames")
+  {
+    options.Frames = nprParseInteger(arg, arguments.Value(), 1, 10000);
+    given.Frames = true;
+  }
+  else if (arg == "--cameras")
+  {
+    options.Cameras =
+      nprParseInteger(arg, arguments.Value(), 1, static_cast<int>(nprBenchmarkCameras().size()));
+    given.Cameras = true;
+  }
+  else if (arg == "--orbit")
+  {
+    options.OrbitStep = nprParseInteger(arg, arguments.Value(), 1, 120);
+  }
+  else if (arg == "--runs")
+  {
+    options.Runs = nprParseInteger(arg, arguments.Value(), 1, 100);
+    given.Runs = true;
+  }
+  else if (arg == "--line-width")
+  {
+    options.LineWidth = nprParseNumberIn(arg, arguments.Value(), 0.5, 16.0);
+  }
+  else if (arg == "--max-drift")
+  {
+    options.MaxDrift = nprParseNumberIn(arg, arguments.Value(), 0.0, 1.0);
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
+
+// The options that take a comma-separated list.
+bool ParseList(nprArgumentReader& arguments, nprBenchmarkOptions& options, GivenOptions& given)
+{
+  const std::string& arg = arguments.Current();
+  if (arg == "--sizes")
+  {
+    options.Sizes = ParseSizes(arguments.Value());
+    given.Sizes = true;
+  }
+  else if (arg == "--scenes")
+  {
+    options.Scenes = ParseScenes(arguments.Value());
+    options.ScenesGiven = true;
+  }
+  else if (arg == "--methods")
+  {
+    options.Methods = nprSplitList(arguments.Value(), true);
+  }
+  else if (arg == "--scale-sizes")
+  {
+    options.ScaleSizes = ParseScaleSizes(arguments.Value());
+  }
+  else if (arg == "--stress-cases")
+  {
+    options.StressCases = nprSplitList(arguments.Value(), true);
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
+
+// The scenes a mode measures unless --scenes names others.
+void DefaultScenes(nprBenchmarkOptions& options, const std::vector<std::string>& scenes)
+{
+  if (!options.ScenesGiven)
+  {
+    options.Scenes = scenes;
+    options.ScenesGiven = true;
+  }
+}
+
+// --scale's defaults; its options refused without it.
+void ApplyScaleDefaults(nprBenchmarkOptions& options, const GivenOptions& given)
+{
+  if (!options.Scale)
+  {
+    if (!options.ScaleSizes.empty() || !options.ScaleMeshes.empty())
+    {
+      throw nprUsageError("--scale-sizes and --scale-meshes go with --scale");
+    }
+    if (!options.ScaleSteps.empty() && !given.Sizes)
+    {
+      options.Sizes = { { 1920, 1080 } };
+    }
+    return;
+  }
+  if (options.ScaleSizes.empty())
+  {
+    options.ScaleSizes = options.Quick ? std::vector<std::string>{ "62k", "250k" }
+                                       : std::vector<std::string>{ "1m", "4m", "16m" };
+  }
+  if (options.ScaleMeshes.empty())
+  {
+    options.ScaleMeshes = options.Out + "/meshes";
+  }
+  if (given.Sizes && options.Sizes.size() > 1)
+  {
+    throw nprUsageError("--scale measures one window size: --sizes WxH");
+  }
+  if (!given.Sizes && !options.Quick)
+  {
+    options.Sizes = { { 1920, 1080 } };
+  }
+  if (!given.Frames && !options.Quick)
+  {
+    options.Frames = 3;
+  }
+  options.Runs = given.Runs ? options.Runs : 1;
+}
+
+void ApplySpeedDefaults(nprBenchmarkOptions& options, const GivenOptions& given)
+{
+  DefaultScenes(options,
+    options.Quick ? std::vector<std::string>{ "box" }
+                  : std::vector<std::string>{ "bunny1m", "box" });
+  if (!given.Sizes && !options.Quick)
+  {
+    options.Sizes = { { 1920, 1080 }, { 1024, 768 } };
+  }
+  if (!given.Frames && !options.Quick)
+  {
+    options.Frames = 30;
+  }
+  if (!given.Runs && options.Quick)
+  {
+    options.Runs = 1;
+  }
+}
+
+void ApplyQuickDefaults(nprBenchmarkOptions& options, const GivenOptions& given)
+{
+  DefaultScenes(options, { options.Contours ? "knot" : "cad" });
+  options.Cameras = given.Cameras ? options.Cameras : 1;
+  options.Frames = given.Frames ? options.Frames : 2;
+  if (!given.Sizes)
+  {
+    options.Sizes = { { 320, 240 } };
+  }
+}
+
+void ApplyContoursDefaults(nprBenchmarkOptions& options, const GivenOptions& given)
+{
+  std::vector<std::string> scenes = { "knot" };
+  if (!options.Quick)
+  {
+    scenes = { "cad", "rotor", "bunny", "isosurface", "blobs", "knot" };
+    const std::vector<std::string>& generated = nprBenchmarkGeneratedSceneNames();
+    scenes.insert(scenes.end(), generated.begin(), generated.end());
+  }
+  DefaultScenes(options, scenes);
+  if (!given.Sizes && !options.Quick)
+  {
+    options.Sizes = { { 1024, 768 } };
+  }
+}
+
+// Each mode's scenes, sizes, frames, runs and cameras where the command line gave none; --speed
+// and --quick first, so that a quick run of another mode keeps the quick defaults.
+void ApplyModeDefaults(nprBenchmarkOptions& options, const GivenOptions& given)
+{
+  ApplyScaleDefaults(options, given);
+  if (options.Speed)
+  {
+    ApplySpeedDefaults(options, given);
+  }
+  if (options.Quick)
+  {
+    ApplyQuickDefaults(options, given);
+  }
+  if (options.Coherence)
+  {
+    DefaultScenes(options, { "cad", "bunny" });
+    if (!given.Sizes && !options.Quick)
+    {
+      options.Sizes = { { 640, 480 }, { 1920, 1080 } };
+    }
+  }
+  if (options.Contours)
+  {
+    ApplyContoursDefaults(options, given);
+  }
+  if (options.Drawing && !given.Sizes && !options.Quick)
+  {
+    options.Sizes = { { 1920, 1080 } };
+  }
+  if (options.Stress)
+  {
+    DefaultScenes(options, { "cad", "bunny" });
+    options.Cameras = given.Cameras ? options.Cameras : 1;
+    if (!given.Sizes && !options.Quick)
+    {
+      options.Sizes = { { 1024, 768 } };
+    }
+  }
+  if (!options.ScenesGiven)
+  {
+    options.Scenes = nprBenchmarkSceneNames(); // still not given: a missing bunny1m is skipped
+  }
+}
 }
 
 void nprMakeBenchmarkFolder(const std::string& path)
@@ -191,95 +403,21 @@ void nprMakeBenchmarkFolder(const std::string& path)
 nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
 {
   nprBenchmarkOptions options;
-  bool framesGiven = false, sizesGiven = false, camerasGiven = false, runsGiven = false;
+  GivenOptions given;
   nprArgumentReader arguments(argc, argv, Help);
   while (arguments.Next())
   {
-    const std::string& arg = arguments.Current();
-    if (ParseTextOrSwitch(arguments, options))
+    if (!ParseTextOrSwitch(arguments, options) && !ParseNumber(arguments, options, given) &&
+      !ParseList(arguments, options, given))
     {
-      continue;
-    }
-    if (arg == "--frames")
-    {
-      options.Frames = nprParseInteger(arg, arguments.Value(), 1, 10000);
-      framesGiven = true;
-    }
-    else if (arg == "--sizes")
-    {
-      options.Sizes.clear();
-      for (const std::string& size : nprSplitList(arguments.Value(), true))
-      {
-        options.Sizes.push_back(nprParseSize("--sizes", size, 16, 8192, "WxH[,WxH...]"));
-      }
-      sizesGiven = !options.Sizes.empty();
-      if (!sizesGiven)
-      {
-        throw nprUsageError("--sizes expects WxH[,WxH...]");
-      }
-    }
-    else if (arg == "--scenes")
-    {
-      options.Scenes = nprSplitList(arguments.Value(), true);
-      options.ScenesGiven = true;
-      for (const std::string& scene : options.Scenes)
-      {
-        const auto& names = nprBenchmarkSceneNames();
-        // box (--speed's small scene) is not among the defaults.
-        if (scene != "box" && !nprIsGeneratedScene(scene) &&
-          std::find(names.begin(), names.end(), scene) == names.end())
-        {
-          throw nprUsageError("unknown scene '" + scene +
-            "' (cad, rotor, bunny, isosurface, blobs, knot, bunny1m, box, cone-flange, "
-            "steep-cone, filleted-cylinder, boss-pocket, bumpy-torus)");
-        }
-      }
-    }
-    else if (arg == "--methods")
-    {
-      options.Methods = nprSplitList(arguments.Value(), true);
-    }
-    else if (arg == "--cameras")
-    {
-      options.Cameras =
-        nprParseInteger(arg, arguments.Value(), 1, static_cast<int>(nprBenchmarkCameras().size()));
-      camerasGiven = true;
-    }
-    else if (arg == "--orbit")
-    {
-      options.OrbitStep = nprParseInteger(arg, arguments.Value(), 1, 120);
-    }
-    else if (arg == "--runs")
-    {
-      options.Runs = nprParseInteger(arg, arguments.Value(), 1, 100);
-      runsGiven = true;
-    }
-    else if (arg == "--line-width")
-    {
-      options.LineWidth = nprParseNumberIn(arg, arguments.Value(), 0.5, 16.0);
-    }
-    else if (arg == "--scale-sizes")
-    {
-      options.ScaleSizes = ParseScaleSizes(arguments.Value());
-    }
-    else if (arg == "--stress-cases")
-    {
-      options.StressCases = nprSplitList(arguments.Value(), true);
-    }
-    else if (arg == "--max-drift")
-    {
-      options.MaxDrift = nprParseNumberIn(arg, arguments.Value(), 0.0, 1.0);
-    }
-    else
-    {
-      throw nprUsageError("unknown argument '" + arg + "' (see --help)");
+      throw nprUsageError("unknown argument '" + arguments.Current() + "' (see --help)");
     }
   }
   if (options.Data.empty() || options.Out.empty())
   {
     throw nprUsageError("--data DIR and --out DIR are required (see --help)");
   }
-  if (options.OrbitStep > 0 && (!options.Contours || camerasGiven))
+  if (options.OrbitStep > 0 && (!options.Contours || given.Cameras))
   {
     throw nprUsageError("--orbit DEG goes with --contours, without --cameras");
   }
@@ -287,94 +425,7 @@ nprBenchmarkOptions nprParseBenchmarkOptions(int argc, char* argv[])
   {
     options.DenseMesh = options.Data + "/bunny_1m.ply";
   }
-  ApplyScaleDefaults(options, sizesGiven, framesGiven, runsGiven);
-  if (options.Speed)
-  {
-    if (!options.ScenesGiven)
-    {
-      options.Scenes = options.Quick ? std::vector<std::string>{ "box" }
-                                     : std::vector<std::string>{ "bunny1m", "box" };
-      options.ScenesGiven = true;
-    }
-    if (!sizesGiven && !options.Quick)
-    {
-      options.Sizes = { { 1920, 1080 }, { 1024, 768 } };
-    }
-    if (!framesGiven && !options.Quick)
-    {
-      options.Frames = 30;
-    }
-    if (!runsGiven && options.Quick)
-    {
-      options.Runs = 1;
-    }
-  }
-  if (options.Quick)
-  {
-    if (!options.ScenesGiven)
-    {
-      options.Scenes = { options.Contours ? "knot" : "cad" };
-      options.ScenesGiven = true;
-    }
-    options.Cameras = camerasGiven ? options.Cameras : 1;
-    options.Frames = framesGiven ? options.Frames : 2;
-    if (!sizesGiven)
-    {
-      options.Sizes = { { 320, 240 } };
-    }
-  }
-  if (options.Coherence)
-  {
-    if (!options.ScenesGiven)
-    {
-      options.Scenes = { "cad", "bunny" };
-      options.ScenesGiven = true;
-    }
-    if (!sizesGiven && !options.Quick)
-    {
-      options.Sizes = { { 640, 480 }, { 1920, 1080 } };
-    }
-  }
-  if (options.Contours)
-  {
-    if (!options.ScenesGiven)
-    {
-      options.Scenes = options.Quick
-        ? std::vector<std::string>{ "knot" }
-        : std::vector<std::string>{ "cad", "rotor", "bunny", "isosurface", "blobs", "knot" };
-      if (!options.Quick)
-      {
-        const std::vector<std::string>& generated = nprBenchmarkGeneratedSceneNames();
-        options.Scenes.insert(options.Scenes.end(), generated.begin(), generated.end());
-      }
-      options.ScenesGiven = true;
-    }
-    if (!sizesGiven && !options.Quick)
-    {
-      options.Sizes = { { 1024, 768 } };
-    }
-  }
-  if (options.Drawing && !sizesGiven && !options.Quick)
-  {
-    options.Sizes = { { 1920, 1080 } };
-  }
-  if (options.Stress)
-  {
-    if (!options.ScenesGiven)
-    {
-      options.Scenes = { "cad", "bunny" };
-      options.ScenesGiven = true;
-    }
-    options.Cameras = camerasGiven ? options.Cameras : 1;
-    if (!sizesGiven && !options.Quick)
-    {
-      options.Sizes = { { 1024, 768 } };
-    }
-  }
-  if (!options.ScenesGiven)
-  {
-    options.Scenes = nprBenchmarkSceneNames();
-  }
+  ApplyModeDefaults(options, given);
   return options;
 }
 

@@ -169,18 +169,10 @@ void StressMeshes(const nprBenchmarkScene& scene, const StressCase& stress, doub
     mesh = raw == scene.Raw ? scene.Mesh : nprPrepareMesh(raw);
   }
 }
-}
 
-int nprRunBenchmarkStress(const nprBenchmarkOptions& options)
+// The unit case and the cases --stress-cases names (every case without it).
+std::vector<StressCase> SelectStressCases(const nprBenchmarkOptions& options)
 {
-  const nprClock::time_point runStart = nprClock::now();
-  const std::vector<nprBenchmarkScene> scenes = nprStartBenchmarkRun(options);
-  nprBenchmarkStage stage(options.LineWidth);
-  nprBenchmarkMethod method; // edges-float at the pass's defaults
-  method.Name = "edges-float";
-  vtkSmartPointer<vtkNPRPass> pass = stage.MakePass(method);
-
-  std::vector<nprStressRow> rows;
   std::vector<StressCase> cases;
   for (const StressCase& stress : StressCases())
   {
@@ -194,138 +186,209 @@ int nprRunBenchmarkStress(const nprBenchmarkOptions& options)
       cases.push_back(stress);
     }
   }
-  int failures = 0;
-  for (const nprBenchmarkScene& scene : scenes)
+  return cases;
+}
+
+// The unit case's figures at one scene, size and camera, which the other cases are compared with.
+struct UnitFigures
+{
+  nprMask Reference;
+  GBufferFigures Buffer;
+  double F1 = 0.0;
+};
+
+// What one case draws: the reference mask, and the edge pass's mask and G-buffer.
+struct CaseFrames
+{
+  nprMask Reference;
+  nprMask Mask;
+  GBufferFigures Buffer;
+  double ReferenceSeconds = 0.0;
+};
+
+// The camera's clipping range as the near/far cases stretch it, written to the row.
+void ApplyStressRange(
+  nprBenchmarkStage& stage, const StressCase& stress, std::ostream& detail, nprStressRow& row)
+{
+  double range[2];
+  stage.Camera()->GetClippingRange(range);
+  if (stress.Kind == StressCase::FarPlane)
   {
-    const double modelSize = nprModelSize(scene.Raw);
-    for (const auto& size : options.Sizes)
-    {
-      stage.Window->SetSize(size.first, size.second);
-      for (int c = 0; c < options.Cameras; ++c)
-      {
-        const nprBenchmarkCamera& camera = nprBenchmarkCameras()[c];
-        nprMask unitReference;
-        GBufferFigures unitBuffer;
-        double unitF1 = 0.0;
-        for (const StressCase& stress : cases)
-        {
-          const nprClock::time_point caseStart = nprClock::now();
-          nprStressRow row;
-          row.Scene = scene.Name;
-          row.Case = stress.Name;
-          if (options.Cameras > 1 || options.Sizes.size() > 1)
-          {
-            row.Case += " [" + std::string(camera.Name) + " " + std::to_string(size.first) + "x" +
-              std::to_string(size.second) + "]";
-          }
-          std::ostringstream detail;
-          vtkSmartPointer<vtkPolyData> raw, mesh;
-          StressMeshes(scene, stress, modelSize, detail, raw, mesh);
-          stage.SetMesh(mesh, raw);
-          stage.Activate(nullptr, false);
-          nprApplyBenchmarkCamera(stage.Renderer, camera);
-          double range[2];
-          stage.Camera()->GetClippingRange(range);
-          if (stress.Kind == StressCase::FarPlane)
-          {
-            range[1] = range[0] * stress.Value;
-          }
-          else if (stress.Kind == StressCase::NearPlane)
-          {
-            range[0] = range[1] / stress.Value;
-          }
-          if (stress.Kind == StressCase::FarPlane || stress.Kind == StressCase::NearPlane)
-          {
-            detail << "clipping range [" << nprFormat(range[0], 3) << ", " << nprFormat(range[1], 3)
-                   << "]";
-          }
-          row.Detail = detail.str();
-          stage.Camera()->SetClippingRange(range);
-          row.Near = range[0];
-          row.Far = range[1];
-          stage.Window->Render(); // the camera as drawn, before the reference reads it
+    range[1] = range[0] * stress.Value;
+  }
+  else if (stress.Kind == StressCase::NearPlane)
+  {
+    range[0] = range[1] / stress.Value;
+  }
+  if (stress.Kind == StressCase::FarPlane || stress.Kind == StressCase::NearPlane)
+  {
+    detail << "clipping range [" << nprFormat(range[0], 3) << ", " << nprFormat(range[1], 3) << "]";
+  }
+  stage.Camera()->SetClippingRange(range);
+  row.Near = range[0];
+  row.Far = range[1];
+}
 
-          const nprClock::time_point referenceStart = nprClock::now();
-          const nprMask reference = stage.ReferenceMask();
-          const double referenceSeconds = nprSecondsSince(referenceStart);
-          stage.Camera()->SetClippingRange(range); // as the user set it, whatever the reference did
-          stage.Activate(pass, false);
-          stage.TimedFrame(false);
-          const GBufferFigures buffer =
-            ReadGBuffer(stage.Window, pass->GetGBufferPass(), range[0], range[1]);
-          const nprMask mask = stage.MethodMask(method, pass);
-          stage.Activate(nullptr, false);
-          if (stress.Kind == StressCase::Unit)
-          {
-            unitReference = reference;
-            unitBuffer = buffer;
-          }
-          if (options.SaveMasks)
-          {
-            std::string name = scene.Name + "_" + stress.Name;
-            std::replace_if(
-              name.begin(), name.end(),
-              [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)) && ch != '-'; },
-              '_');
-            nprWriteMaskPNG(mask, options.Out + "/masks/" + name + ".png");
-            nprWriteMaskPNG(reference, options.Out + "/masks/" + name + "_reference.png");
-          }
+// The reference for the camera as drawn, then the edge pass's frame at the row's clipping range.
+CaseFrames DrawCase(nprBenchmarkStage& stage, vtkNPRPass* pass, const nprBenchmarkMethod& method,
+  const nprStressRow& row)
+{
+  CaseFrames frames;
+  stage.Window->Render(); // the camera as drawn, before the reference reads it
+  const nprClock::time_point referenceStart = nprClock::now();
+  frames.Reference = stage.ReferenceMask();
+  frames.ReferenceSeconds = nprSecondsSince(referenceStart);
+  stage.Camera()->SetClippingRange(
+    row.Near, row.Far); // as the user set it, whatever the reference did
+  stage.Activate(pass, false);
+  stage.TimedFrame(false);
+  frames.Buffer = ReadGBuffer(stage.Window, pass->GetGBufferPass(), row.Near, row.Far);
+  frames.Mask = stage.MethodMask(method, pass);
+  stage.Activate(nullptr, false);
+  return frames;
+}
 
-          nprEdgeMetrics own, unit, agreement;
-          own.Compute(mask.Pixels.data(), reference.Pixels.data(), mask.Width, mask.Height);
-          unit.Compute(mask.Pixels.data(), unitReference.Pixels.data(), mask.Width, mask.Height);
-          agreement.Compute(
-            reference.Pixels.data(), unitReference.Pixels.data(), mask.Width, mask.Height);
-          row.F1Own = own.F1(1.0);
-          row.F1Unit = unit.F1(1.0);
-          if (stress.Kind == StressCase::Unit)
-          {
-            unitF1 = row.F1Unit;
-          }
-          row.Drift = row.F1Unit - unitF1;
-          row.ReferenceF1 = agreement.F1(1.0);
-          row.MeanDistanceUnit = unit.MeanSymmetricDistance();
-          row.MethodPixels = own.GetMethodPixels();
-          row.ReferencePixels = own.GetReferencePixels();
-          row.StrayPixels = unit.CountFarMethodPixels(3.0);
-          row.CoveredPixels = buffer.Covered;
-          for (size_t i = 0; i < buffer.Coverage.size() && i < unitBuffer.Coverage.size(); ++i)
-          {
-            row.CoverageChanged += buffer.Coverage[i] != unitBuffer.Coverage[i] ? 1 : 0;
-          }
-          row.NonFinitePixels = buffer.NonFinite;
-          row.BadDepthPixels = buffer.BadDepth;
-          rows.push_back(row);
-          if (options.MaxDrift >= 0.0 &&
-            (std::abs(row.Drift) > options.MaxDrift || row.NonFinitePixels > 0 ||
-              row.BadDepthPixels > 0))
-          {
-            std::cerr << "npr-benchmark: FAILED: " << scene.Name << " " << row.Case
-                      << ": F1@1 drift " << nprFormat(row.Drift, 4) << " (allowed "
-                      << options.MaxDrift << "), " << row.NonFinitePixels << " non-finite, "
-                      << row.BadDepthPixels << " bad-depth pixels\n";
-            ++failures;
-          }
-          std::cerr << "npr-benchmark: stress " << scene.Name << " " << row.Case << ": F1@1 "
-                    << nprFormat(row.F1Own, 3) << " (unit reference " << nprFormat(row.F1Unit, 3)
-                    << "), stray " << row.StrayPixels << ", non-finite " << row.NonFinitePixels
-                    << ", bad depth " << row.BadDepthPixels << " ("
-                    << nprFormat(nprSecondsSince(caseStart), 2) << " s; reference "
-                    << nprFormat(referenceSeconds, 2) << " s: lines "
-                    << nprFormat(stage.Reference->GetLinesTime(), 2) << ", locator "
-                    << nprFormat(stage.Reference->GetLocatorTime(), 2) << ", rays "
-                    << nprFormat(stage.Reference->GetVisibilityTime(), 2) << ")\n";
-        }
-      }
-    }
+void SaveCaseMasks(const nprBenchmarkOptions& options, const std::string& scene,
+  const StressCase& stress, const CaseFrames& frames)
+{
+  std::string name = scene + "_" + stress.Name;
+  std::replace_if(
+    name.begin(), name.end(),
+    [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)) && ch != '-'; }, '_');
+  nprWriteMaskPNG(frames.Mask, options.Out + "/masks/" + name + ".png");
+  nprWriteMaskPNG(frames.Reference, options.Out + "/masks/" + name + "_reference.png");
+}
+
+// The row's scores: the mask against its own reference and the unit case's, and the G-buffer's
+// coverage and depths against the unit case's. The unit case is its own unit.
+void ScoreCase(
+  const StressCase& stress, const CaseFrames& frames, UnitFigures& unitCase, nprStressRow& row)
+{
+  if (stress.Kind == StressCase::Unit)
+  {
+    unitCase.Reference = frames.Reference;
+    unitCase.Buffer = frames.Buffer;
+  }
+  const nprMask& mask = frames.Mask;
+  nprEdgeMetrics own, unit, agreement;
+  own.Compute(mask.Pixels.data(), frames.Reference.Pixels.data(), mask.Width, mask.Height);
+  unit.Compute(mask.Pixels.data(), unitCase.Reference.Pixels.data(), mask.Width, mask.Height);
+  agreement.Compute(
+    frames.Reference.Pixels.data(), unitCase.Reference.Pixels.data(), mask.Width, mask.Height);
+  row.F1Own = own.F1(1.0);
+  row.F1Unit = unit.F1(1.0);
+  if (stress.Kind == StressCase::Unit)
+  {
+    unitCase.F1 = row.F1Unit;
+  }
+  row.Drift = row.F1Unit - unitCase.F1;
+  row.ReferenceF1 = agreement.F1(1.0);
+  row.MeanDistanceUnit = unit.MeanSymmetricDistance();
+  row.MethodPixels = own.GetMethodPixels();
+  row.ReferencePixels = own.GetReferencePixels();
+  row.StrayPixels = unit.CountFarMethodPixels(3.0);
+  const GBufferFigures& buffer = frames.Buffer;
+  row.CoveredPixels = buffer.Covered;
+  for (size_t i = 0; i < buffer.Coverage.size() && i < unitCase.Buffer.Coverage.size(); ++i)
+  {
+    row.CoverageChanged += buffer.Coverage[i] != unitCase.Buffer.Coverage[i] ? 1 : 0;
+  }
+  row.NonFinitePixels = buffer.NonFinite;
+  row.BadDepthPixels = buffer.BadDepth;
+}
+
+// With --max-drift: whether the row is outside it (said on stderr).
+bool OutsideDrift(
+  const nprBenchmarkOptions& options, const std::string& scene, const nprStressRow& row)
+{
+  if (options.MaxDrift < 0.0 ||
+    (std::abs(row.Drift) <= options.MaxDrift && row.NonFinitePixels == 0 &&
+      row.BadDepthPixels == 0))
+  {
+    return false;
+  }
+  std::cerr << "npr-benchmark: FAILED: " << scene << " " << row.Case << ": F1@1 drift "
+            << nprFormat(row.Drift, 4) << " (allowed " << options.MaxDrift << "), "
+            << row.NonFinitePixels << " non-finite, " << row.BadDepthPixels
+            << " bad-depth pixels\n";
+  return true;
+}
+
+void PrintCase(const nprBenchmarkStage& stage, const std::string& scene, const nprStressRow& row,
+  double caseSeconds, double referenceSeconds)
+{
+  std::cerr << "npr-benchmark: stress " << scene << " " << row.Case << ": F1@1 "
+            << nprFormat(row.F1Own, 3) << " (unit reference " << nprFormat(row.F1Unit, 3)
+            << "), stray " << row.StrayPixels << ", non-finite " << row.NonFinitePixels
+            << ", bad depth " << row.BadDepthPixels << " (" << nprFormat(caseSeconds, 2)
+            << " s; reference " << nprFormat(referenceSeconds, 2) << " s: lines "
+            << nprFormat(stage.Reference->GetLinesTime(), 2) << ", locator "
+            << nprFormat(stage.Reference->GetLocatorTime(), 2) << ", rays "
+            << nprFormat(stage.Reference->GetVisibilityTime(), 2) << ")\n";
+}
+
+// One --stress run: the stage, the edge pass at its defaults, the cases, and what they measured.
+struct StressRun
+{
+  explicit StressRun(const nprBenchmarkOptions& options)
+    : Options(options)
+    , Stage(options.LineWidth)
+    , Cases(SelectStressCases(options))
+  {
+    this->Method.Name = "edges-float";
+    this->Pass = this->Stage.MakePass(this->Method);
   }
 
+  const nprBenchmarkOptions& Options;
+  nprBenchmarkStage Stage;
+  nprBenchmarkMethod Method;
+  vtkSmartPointer<vtkNPRPass> Pass;
+  std::vector<StressCase> Cases;
+  std::vector<nprStressRow> Rows;
+  int Failures = 0;
+};
+
+// Every case of one scene at the window's size and one camera, each a row; suffix names the
+// size and camera in the case where the run has several.
+void MeasureCases(StressRun& run, const nprBenchmarkScene& scene, double modelSize,
+  const nprBenchmarkCamera& camera, const std::string& suffix)
+{
+  UnitFigures unitCase;
+  for (const StressCase& stress : run.Cases)
+  {
+    const nprClock::time_point caseStart = nprClock::now();
+    nprStressRow row;
+    row.Scene = scene.Name;
+    row.Case = stress.Name + suffix;
+    std::ostringstream detail;
+    vtkSmartPointer<vtkPolyData> raw, mesh;
+    StressMeshes(scene, stress, modelSize, detail, raw, mesh);
+    run.Stage.SetMesh(mesh, raw);
+    run.Stage.Activate(nullptr, false);
+    nprApplyBenchmarkCamera(run.Stage.Renderer, camera);
+    ApplyStressRange(run.Stage, stress, detail, row);
+    row.Detail = detail.str();
+    const CaseFrames frames = DrawCase(run.Stage, run.Pass, run.Method, row);
+    if (run.Options.SaveMasks)
+    {
+      SaveCaseMasks(run.Options, scene.Name, stress, frames);
+    }
+    ScoreCase(stress, frames, unitCase, row);
+    run.Rows.push_back(row);
+    run.Failures += OutsideDrift(run.Options, scene.Name, row) ? 1 : 0;
+    PrintCase(run.Stage, scene.Name, row, nprSecondsSince(caseStart), frames.ReferenceSeconds);
+  }
+}
+
+int WriteStressResults(const nprBenchmarkOptions& options, vtkRenderWindow* window,
+  const std::vector<nprStressRow>& rows, double seconds, int failures)
+{
   nprBenchmarkInfo info;
-  info.Renderer = vtkNPRRenderWindowFactory::GetGLRenderer(stage.Window);
-  info.Backend = vtkNPRRenderWindowFactory::GetBackendName(stage.Window);
+  info.Renderer = vtkNPRRenderWindowFactory::GetGLRenderer(window);
+  info.Backend = vtkNPRRenderWindowFactory::GetBackendName(window);
   info.Sizes = nprBenchmarkSizesLine(options);
   info.Cameras = nprBenchmarkCameraLine(options.Cameras);
-  info.Seconds = nprSecondsSince(runStart);
+  info.Seconds = seconds;
   nprWriteStressCSV(options.Out + "/stress.csv", rows);
   nprWriteStressMarkdown(options.Out + "/stress.md", rows, info);
   std::cerr << "npr-benchmark: wrote " << options.Out << "/stress.{csv,md} in "
@@ -336,4 +399,33 @@ int nprRunBenchmarkStress(const nprBenchmarkOptions& options)
               << " stress rows outside the allowed drift\n";
   }
   return failures ? 1 : 0;
+}
+}
+
+int nprRunBenchmarkStress(const nprBenchmarkOptions& options)
+{
+  const nprClock::time_point runStart = nprClock::now();
+  const std::vector<nprBenchmarkScene> scenes = nprStartBenchmarkRun(options);
+  StressRun run(options);
+  for (const nprBenchmarkScene& scene : scenes)
+  {
+    const double modelSize = nprModelSize(scene.Raw);
+    for (const auto& size : options.Sizes)
+    {
+      run.Stage.Window->SetSize(size.first, size.second);
+      for (int c = 0; c < options.Cameras; ++c)
+      {
+        const nprBenchmarkCamera& camera = nprBenchmarkCameras()[c];
+        std::string suffix;
+        if (options.Cameras > 1 || options.Sizes.size() > 1)
+        {
+          suffix = " [" + std::string(camera.Name) + " " + std::to_string(size.first) + "x" +
+            std::to_string(size.second) + "]";
+        }
+        MeasureCases(run, scene, modelSize, camera, suffix);
+      }
+    }
+  }
+  return WriteStressResults(
+    options, run.Stage.Window, run.Rows, nprSecondsSince(runStart), run.Failures);
 }
