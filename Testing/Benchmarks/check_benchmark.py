@@ -177,6 +177,7 @@ def check_speed(out):
     text = open(md).read() if os.path.isfile(md) else ""
     check("| method | median (ms) | ratio to plain |" in text, "speed.md has no table")
     check("| GPU (ms) | GPU over plain (ms) |" in text, "speed.md has no GPU-time columns")
+    check("| over plain, lowest to highest run (ms) |" in text, "speed.md has no run spread")
     check(all(row.get("gpu_median_ms") not in (None, "") for row in rows),
           "speed.csv lacks gpu_median_ms")
     check(all(method in text for method in SPEED_METHODS), "speed.md lacks a method")
