@@ -237,29 +237,39 @@ void WriteMarkdown(const std::string& path, const std::vector<ContourRow>& rows,
     throw std::runtime_error("cannot write " + path);
   }
 }
-}
 
-int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
+// The stage with one edge pass a variant, and the rows measured.
+struct ContoursRun
 {
-  const nprClock::time_point start = nprClock::now();
-  const std::vector<nprBenchmarkScene> scenes = nprStartBenchmarkRun(options);
-  nprBenchmarkStage stage(options.LineWidth);
-
-  std::vector<nprBenchmarkMethod> methods;
-  std::vector<vtkSmartPointer<vtkNPRPass>> passes;
-  for (const Variant& variant : Variants)
+  explicit ContoursRun(const nprBenchmarkOptions& options)
+    : Options(options)
+    , Stage(options.LineWidth)
   {
-    nprBenchmarkMethod method;
-    method.Name = variant.Name;
-    method.Pass.Creases = variant.AllTypes;
-    method.Pass.Contours = variant.AllTypes;
-    method.Pass.SmoothSilhouettes = variant.SmoothSilhouettes;
-    methods.push_back(method);
-    passes.push_back(stage.MakePass(method));
+    for (const Variant& variant : Variants)
+    {
+      nprBenchmarkMethod method;
+      method.Name = variant.Name;
+      method.Pass.Creases = variant.AllTypes;
+      method.Pass.Contours = variant.AllTypes;
+      method.Pass.SmoothSilhouettes = variant.SmoothSilhouettes;
+      this->Methods.push_back(method);
+      this->Passes.push_back(this->Stage.MakePass(method));
+    }
   }
 
+  const nprBenchmarkOptions& Options;
+  nprBenchmarkStage Stage;
+  std::vector<nprBenchmarkMethod> Methods;
+  std::vector<vtkSmartPointer<vtkNPRPass>> Passes;
+  std::vector<ContourRow> Rows;
+};
+
+// The cameras of the run (--orbit's, or the first --cameras presets), and their line in the
+// report.
+std::vector<nprBenchmarkCamera> ContourCameras(const nprBenchmarkOptions& options,
+  const std::vector<nprBenchmarkScene>& scenes, std::string& cameraLine)
+{
   std::vector<nprBenchmarkCamera> cameras;
-  std::string cameraLine;
   if (options.OrbitStep > 0)
   {
     cameras = nprBenchmarkOrbitCameras(options.OrbitStep);
@@ -281,75 +291,88 @@ int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
   {
     cameraLine += "; the generated scenes also at elevations 40 and 65, at the same azimuths";
   }
+  return cameras;
+}
 
-  std::vector<ContourRow> rows;
-  for (const nprBenchmarkScene& scene : scenes)
+// Each truth's mask for the camera as drawn; the reference left at its defaults after.
+std::vector<nprMask> DrawTruths(nprBenchmarkStage& stage, bool save, const std::string& prefix)
+{
+  std::vector<nprMask> truths;
+  for (const Truth& truth : Truths)
   {
-    stage.SetMesh(scene.Mesh, scene.Raw);
-    for (const auto& size : options.Sizes)
+    stage.Reference->SetCreases(truth.AllTypes);
+    stage.Reference->SetSmoothContours(truth.Smooth);
+    truths.push_back(stage.ReferenceMask());
+    if (save)
     {
-      stage.Window->SetSize(size.first, size.second);
-      for (const nprBenchmarkCamera& camera :
-        nprIsGeneratedScene(scene.Name) ? WithViewsFromAbove(cameras) : cameras)
-      {
-        stage.Activate(nullptr, false);
-        nprApplyBenchmarkCamera(stage.Renderer, camera);
-        stage.Window->Render(); // the camera as drawn, before the references read it
-        const std::string prefix = options.Out + "/masks/" + scene.Name + "_" + camera.Name + "_" +
-          std::to_string(size.first) + "x" + std::to_string(size.second) + "_";
-        std::vector<nprMask> truths;
-        for (const Truth& truth : Truths)
-        {
-          vtkNPRReferenceMask* reference = stage.Reference;
-          reference->SetCreases(truth.AllTypes);
-          reference->SetSmoothContours(truth.Smooth);
-          truths.push_back(stage.ReferenceMask());
-          if (options.SaveMasks)
-          {
-            nprWriteMaskPNG(truths.back(),
-              prefix + "truth-" + truth.Name + (truth.AllTypes ? "-lines" : "-outline") + ".png");
-          }
-        }
-        stage.Reference->SetCreases(true);
-        stage.Reference->SetSmoothContours(false);
-        for (size_t m = 0; m < methods.size(); ++m)
-        {
-          const nprMask mask = stage.MethodMask(methods[m], passes[m]);
-          if (options.SaveMasks)
-          {
-            nprWriteMaskPNG(mask, prefix + methods[m].Name + ".png");
-          }
-          for (size_t t = 0; t < truths.size(); ++t)
-          {
-            if (Truths[t].AllTypes != Variants[m].AllTypes)
-            {
-              continue;
-            }
-            nprEdgeMetrics metrics;
-            metrics.Compute(mask.Pixels.data(), truths[t].Pixels.data(), mask.Width, mask.Height);
-            ContourRow row;
-            row.Set = nprIsGeneratedScene(scene.Name) ? "generated" : "repository";
-            row.Scene = scene.Name;
-            row.Kind = IsCad(scene.Name) ? "cad" : "smooth";
-            row.Camera = camera.Name;
-            row.Method = methods[m].Name;
-            row.Truth = Truths[t].Name;
-            row.Precision = metrics.Precision(1.0);
-            row.Recall = metrics.Recall(1.0);
-            row.F1 = metrics.F1(1.0);
-            row.MethodPixels = metrics.GetMethodPixels();
-            row.TruthPixels = metrics.GetReferencePixels();
-            rows.push_back(row);
-          }
-        }
-        std::cerr << "npr-benchmark: " << scene.Name << " " << camera.Name << " " << size.first
-                  << "x" << size.second << ": outline F1@1 against the smooth truth "
-                  << nprFormat(rows[rows.size() - 3].F1, 3) << " (with smooth silhouettes "
-                  << nprFormat(rows.back().F1, 3) << ")\n";
-      }
+      nprWriteMaskPNG(truths.back(),
+        prefix + "truth-" + truth.Name + (truth.AllTypes ? "-lines" : "-outline") + ".png");
     }
   }
+  stage.Reference->SetCreases(true);
+  stage.Reference->SetSmoothContours(false);
+  return truths;
+}
 
+ContourRow ScoreContour(const nprMask& mask, const nprMask& truth)
+{
+  nprEdgeMetrics metrics;
+  metrics.Compute(mask.Pixels.data(), truth.Pixels.data(), mask.Width, mask.Height);
+  ContourRow row;
+  row.Precision = metrics.Precision(1.0);
+  row.Recall = metrics.Recall(1.0);
+  row.F1 = metrics.F1(1.0);
+  row.MethodPixels = metrics.GetMethodPixels();
+  row.TruthPixels = metrics.GetReferencePixels();
+  return row;
+}
+
+// One scene at the window's size from one camera: every variant against the truths of its
+// line types, a row each.
+void MeasureContourView(
+  ContoursRun& run, const nprBenchmarkScene& scene, const nprBenchmarkCamera& camera)
+{
+  nprBenchmarkStage& stage = run.Stage;
+  const int* size = stage.Window->GetSize();
+  const std::string sizeName = std::to_string(size[0]) + "x" + std::to_string(size[1]);
+  stage.Activate(nullptr, false);
+  nprApplyBenchmarkCamera(stage.Renderer, camera);
+  stage.Window->Render(); // the camera as drawn, before the references read it
+  const std::string prefix =
+    run.Options.Out + "/masks/" + scene.Name + "_" + camera.Name + "_" + sizeName + "_";
+  const std::vector<nprMask> truths = DrawTruths(stage, run.Options.SaveMasks, prefix);
+  for (size_t m = 0; m < run.Methods.size(); ++m)
+  {
+    const nprMask mask = stage.MethodMask(run.Methods[m], run.Passes[m]);
+    if (run.Options.SaveMasks)
+    {
+      nprWriteMaskPNG(mask, prefix + run.Methods[m].Name + ".png");
+    }
+    for (size_t t = 0; t < truths.size(); ++t)
+    {
+      if (Truths[t].AllTypes != Variants[m].AllTypes)
+      {
+        continue;
+      }
+      ContourRow row = ScoreContour(mask, truths[t]);
+      row.Set = nprIsGeneratedScene(scene.Name) ? "generated" : "repository";
+      row.Scene = scene.Name;
+      row.Kind = IsCad(scene.Name) ? "cad" : "smooth";
+      row.Camera = camera.Name;
+      row.Method = run.Methods[m].Name;
+      row.Truth = Truths[t].Name;
+      run.Rows.push_back(row);
+    }
+  }
+  const std::vector<ContourRow>& rows = run.Rows;
+  std::cerr << "npr-benchmark: " << scene.Name << " " << camera.Name << " " << sizeName
+            << ": outline F1@1 against the smooth truth " << nprFormat(rows[rows.size() - 3].F1, 3)
+            << " (with smooth silhouettes " << nprFormat(rows.back().F1, 3) << ")\n";
+}
+
+// Whether every precision, recall and F1 is a number in [0, 1].
+bool SaneRows(const std::vector<ContourRow>& rows)
+{
   bool sane = true;
   for (const ContourRow& row : rows)
   {
@@ -358,6 +381,32 @@ int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
       sane = sane && std::isfinite(value) && value >= 0.0 && value <= 1.0;
     }
   }
+  return sane;
+}
+}
+
+int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
+{
+  const nprClock::time_point start = nprClock::now();
+  const std::vector<nprBenchmarkScene> scenes = nprStartBenchmarkRun(options);
+  ContoursRun run(options);
+  std::string cameraLine;
+  const std::vector<nprBenchmarkCamera> cameras = ContourCameras(options, scenes, cameraLine);
+  for (const nprBenchmarkScene& scene : scenes)
+  {
+    run.Stage.SetMesh(scene.Mesh, scene.Raw);
+    for (const auto& size : options.Sizes)
+    {
+      run.Stage.Window->SetSize(size.first, size.second);
+      for (const nprBenchmarkCamera& camera :
+        nprIsGeneratedScene(scene.Name) ? WithViewsFromAbove(cameras) : cameras)
+      {
+        MeasureContourView(run, scene, camera);
+      }
+    }
+  }
+  const std::vector<ContourRow>& rows = run.Rows;
+  const bool sane = SaneRows(rows);
   std::string header = "Scenes:\n" + nprBenchmarkSceneLines(scenes) + "\nCameras: " + cameraLine +
     "; sizes " + nprBenchmarkSizesLine(options) + "; lines " + nprFormat(options.LineWidth, 3) +
     " px wide.\n\nMethods (vtkNPREdgePass, default settings otherwise):\n"
