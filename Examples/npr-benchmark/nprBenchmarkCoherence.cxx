@@ -103,6 +103,112 @@ struct CostRow
   std::string Scene, Size;
   double ScreenMs = 0, SurfaceMs = 0;
 };
+
+// One style along one camera path from its start: what its line pixels did at each step.
+CoherenceRow FollowPath(nprBenchmarkStage& stage, CoherenceStyle& style, Path path, int height,
+  const std::string& scene, const std::string& sizeName)
+{
+  stage.Activate(style.Pass, false);
+  StartPath(stage, path);
+  stage.Window->Render();
+  nprCoherenceFrame previous = nprCaptureCoherenceFrame(stage.Window, stage.Renderer);
+  CoherenceRow row{ scene, sizeName, PathName(path), style.Name };
+  row.PanIoU = path == Path::Pan ? 0.0 : -1.0;
+  for (int step = 0; step < Steps; ++step)
+  {
+    StepPath(stage, path, height);
+    stage.Window->Render();
+    nprCoherenceFrame next = nprCaptureCoherenceFrame(stage.Window, stage.Renderer);
+    const nprCoherenceStep figures = nprCompareCoherenceFrames(previous, next);
+    row.Landed += figures.LandedFraction / Steps;
+    row.LandedExactly += figures.LandedExactlyFraction / Steps;
+    row.Appeared += figures.AppearedFraction / Steps;
+    row.Vanished += figures.VanishedFraction / Steps;
+    if (path == Path::Pan)
+    {
+      row.PanIoU += nprShiftedLineIoU(previous, next, -PanPixels, 0, 8) / Steps;
+    }
+    previous = std::move(next);
+  }
+  std::cerr << "npr-benchmark: " << scene << " " << sizeName << " " << row.Path << " " << style.Name
+            << ": landed " << nprFixed(row.Landed, 3) << "\n";
+  return row;
+}
+
+// The cost of surface noise: both sketches' frames interleaved, the camera turned a little every
+// frame so nothing is reused.
+CostRow MeasureNoiseCost(nprBenchmarkStage& stage, std::vector<CoherenceStyle>& styles, int frames,
+  const std::string& scene, const std::string& sizeName)
+{
+  StartPath(stage, Path::Orbit);
+  std::vector<double> screen, surface;
+  CoherenceStyle& surfaceStyle = styles[2];
+  CoherenceStyle& screenStyle = styles[3];
+  for (int frame = -1; frame < frames; ++frame) // frame -1: warm-up
+  {
+    for (CoherenceStyle* style : { &screenStyle, &surfaceStyle })
+    {
+      stage.Activate(style->Pass, false);
+      stage.Camera()->Azimuth(0.5);
+      const double ms = nprTimeFrame(stage.Window, stage.Camera());
+      if (frame >= 0)
+      {
+        (style == &screenStyle ? screen : surface).push_back(ms);
+      }
+    }
+  }
+  return { scene, sizeName, nprMedian(screen), nprMedian(surface) };
+}
+
+// coherence.csv and the paths' table; returns false if the file could not be written.
+bool WriteCoherenceRows(const std::string& out, const std::vector<CoherenceRow>& rows,
+  std::ostringstream& md, std::string& problems)
+{
+  std::ofstream csv(out + "/coherence.csv");
+  csv << "scene,size,path,style,landed,landed_exactly,appeared,vanished,pan_iou\n";
+  md << "| scene | size | camera path | style | landed within 1 px | landed exactly | appeared | "
+        "vanished | IoU after the pan |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (const CoherenceRow& row : rows)
+  {
+    csv << row.Scene << "," << row.Size << "," << row.Path << ",\"" << row.Style << "\","
+        << row.Landed << "," << row.LandedExactly << "," << row.Appeared << "," << row.Vanished
+        << "," << row.PanIoU << "\n";
+    md << "| " << row.Scene << " | " << row.Size << " | " << row.Path << " | " << row.Style << " | "
+       << nprFixed(row.Landed, 3) << " | " << nprFixed(row.LandedExactly, 3) << " | "
+       << nprFixed(row.Appeared, 3) << " | " << nprFixed(row.Vanished, 3) << " | "
+       << (row.PanIoU >= 0 ? nprFixed(row.PanIoU, 3) : "") << " |\n";
+    for (double value : { row.Landed, row.LandedExactly, row.Appeared, row.Vanished })
+    {
+      if (!(value >= 0.0 && value <= 1.0 + 1e-9))
+      {
+        problems += row.Scene + " " + row.Path + " " + row.Style + ": a fraction out of [0, 1]\n";
+      }
+    }
+  }
+  return static_cast<bool>(csv);
+}
+
+// coherence_cost.csv and the noise's table; returns false if the file could not be written.
+bool WriteCostRows(const std::string& out, const std::vector<CostRow>& costs,
+  std::ostringstream& md, std::string& problems)
+{
+  md << "\n"
+     << nprMarkdownHead({ "scene", "size", "sketch, screen noise (ms)",
+          "sketch, surface noise (ms)", "surface / screen" });
+  std::ofstream costCsv(out + "/coherence_cost.csv");
+  costCsv << "scene,size,sketch_screen_ms,sketch_surface_ms\n";
+  for (const CostRow& cost : costs)
+  {
+    md << nprMarkdownRow({ cost.Scene, cost.Size, nprFixed(cost.ScreenMs, 1),
+      nprFixed(cost.SurfaceMs, 1), nprFixed(cost.SurfaceMs / cost.ScreenMs, 3) });
+    costCsv << nprCsvRow({ cost.Scene, cost.Size }, { cost.ScreenMs, cost.SurfaceMs });
+    if (!(cost.ScreenMs > 0.0 && cost.SurfaceMs > 0.0))
+    {
+      problems += cost.Scene + " " + cost.Size + ": a frame time is not positive\n";
+    }
+  }
+  return static_cast<bool>(costCsv);
+}
 }
 
 int nprRunBenchmarkCoherence(const nprBenchmarkOptions& options)
@@ -124,96 +230,17 @@ int nprRunBenchmarkCoherence(const nprBenchmarkOptions& options)
       {
         for (CoherenceStyle& style : styles)
         {
-          stage.Activate(style.Pass, false);
-          StartPath(stage, path);
-          stage.Window->Render();
-          nprCoherenceFrame previous = nprCaptureCoherenceFrame(stage.Window, stage.Renderer);
-          CoherenceRow row{ scene.Name, sizeName, PathName(path), style.Name };
-          row.PanIoU = path == Path::Pan ? 0.0 : -1.0;
-          for (int step = 0; step < Steps; ++step)
-          {
-            StepPath(stage, path, size.second);
-            stage.Window->Render();
-            nprCoherenceFrame next = nprCaptureCoherenceFrame(stage.Window, stage.Renderer);
-            const nprCoherenceStep figures = nprCompareCoherenceFrames(previous, next);
-            row.Landed += figures.LandedFraction / Steps;
-            row.LandedExactly += figures.LandedExactlyFraction / Steps;
-            row.Appeared += figures.AppearedFraction / Steps;
-            row.Vanished += figures.VanishedFraction / Steps;
-            if (path == Path::Pan)
-            {
-              row.PanIoU += nprShiftedLineIoU(previous, next, -PanPixels, 0, 8) / Steps;
-            }
-            previous = std::move(next);
-          }
-          std::cerr << "npr-benchmark: " << scene.Name << " " << sizeName << " " << row.Path << " "
-                    << style.Name << ": landed " << nprFixed(row.Landed, 3) << "\n";
-          rows.push_back(row);
+          rows.push_back(FollowPath(stage, style, path, size.second, scene.Name, sizeName));
         }
       }
-
-      // The cost of surface noise: both sketches' frames interleaved, the camera turned a
-      // little every frame so nothing is reused.
-      StartPath(stage, Path::Orbit);
-      std::vector<double> screen, surface;
-      CoherenceStyle& surfaceStyle = styles[2];
-      CoherenceStyle& screenStyle = styles[3];
-      for (int frame = -1; frame < options.Frames; ++frame) // frame -1: warm-up
-      {
-        for (CoherenceStyle* style : { &screenStyle, &surfaceStyle })
-        {
-          stage.Activate(style->Pass, false);
-          stage.Camera()->Azimuth(0.5);
-          const double ms = nprTimeFrame(stage.Window, stage.Camera());
-          if (frame >= 0)
-          {
-            (style == &screenStyle ? screen : surface).push_back(ms);
-          }
-        }
-      }
-      costs.push_back({ scene.Name, sizeName, nprMedian(screen), nprMedian(surface) });
+      costs.push_back(MeasureNoiseCost(stage, styles, options.Frames, scene.Name, sizeName));
     }
   }
 
-  // ---- Reports ----
-  std::ofstream csv(options.Out + "/coherence.csv");
-  csv << "scene,size,path,style,landed,landed_exactly,appeared,vanished,pan_iou\n";
   std::ostringstream md;
-  md << "| scene | size | camera path | style | landed within 1 px | landed exactly | appeared | "
-        "vanished | IoU after the pan |\n|---|---|---|---|---|---|---|---|---|\n";
   std::string problems;
-  for (const CoherenceRow& row : rows)
-  {
-    csv << row.Scene << "," << row.Size << "," << row.Path << ",\"" << row.Style << "\","
-        << row.Landed << "," << row.LandedExactly << "," << row.Appeared << "," << row.Vanished
-        << "," << row.PanIoU << "\n";
-    md << "| " << row.Scene << " | " << row.Size << " | " << row.Path << " | " << row.Style << " | "
-       << nprFixed(row.Landed, 3) << " | " << nprFixed(row.LandedExactly, 3) << " | "
-       << nprFixed(row.Appeared, 3) << " | " << nprFixed(row.Vanished, 3) << " | "
-       << (row.PanIoU >= 0 ? nprFixed(row.PanIoU, 3) : "") << " |\n";
-    for (double value : { row.Landed, row.LandedExactly, row.Appeared, row.Vanished })
-    {
-      if (!(value >= 0.0 && value <= 1.0 + 1e-9))
-      {
-        problems += row.Scene + " " + row.Path + " " + row.Style + ": a fraction out of [0, 1]\n";
-      }
-    }
-  }
-  md << "\n"
-     << nprMarkdownHead({ "scene", "size", "sketch, screen noise (ms)",
-          "sketch, surface noise (ms)", "surface / screen" });
-  std::ofstream costCsv(options.Out + "/coherence_cost.csv");
-  costCsv << "scene,size,sketch_screen_ms,sketch_surface_ms\n";
-  for (const CostRow& cost : costs)
-  {
-    md << nprMarkdownRow({ cost.Scene, cost.Size, nprFixed(cost.ScreenMs, 1),
-      nprFixed(cost.SurfaceMs, 1), nprFixed(cost.SurfaceMs / cost.ScreenMs, 3) });
-    costCsv << nprCsvRow({ cost.Scene, cost.Size }, { cost.ScreenMs, cost.SurfaceMs });
-    if (!(cost.ScreenMs > 0.0 && cost.SurfaceMs > 0.0))
-    {
-      problems += cost.Scene + " " + cost.Size + ": a frame time is not positive\n";
-    }
-  }
+  const bool rowsWritten = WriteCoherenceRows(options.Out, rows, md, problems);
+  const bool costsWritten = WriteCostRows(options.Out, costs, md, problems);
   std::ofstream markdown(options.Out + "/coherence.md");
   markdown << "Coherence of the drawn lines along camera paths (" << Steps
            << " steps each; npr-benchmark --coherence), on "
@@ -221,7 +248,7 @@ int nprRunBenchmarkCoherence(const nprBenchmarkOptions& options)
            << options.Frames << " frames for the times.\n\n"
            << md.str();
   std::cout << md.str();
-  if (!csv || !costCsv || !markdown)
+  if (!rowsWritten || !costsWritten || !markdown)
   {
     throw std::runtime_error(options.Out +
       ": cannot write coherence.csv, coherence_cost.csv or "
