@@ -747,121 +747,137 @@ int Usage()
                "       npr-fuzz-readers --replay DIR... [--valid DIR]\n";
   return 2;
 }
+
+struct FuzzOptions
+{
+  std::string Seeds, Work, Crashes, Valid, Formats = "stl,obj,ply,vtp,vtk,gltf,glb,off";
+  std::vector<std::string> Replay;
+  double Seconds = 0;
+  long long MutantsPerFormat = 0;
+  uint64_t Seed = 1;
+  bool Explore = false; // a fresh seed's campaign: print the findings, exit 0
+};
+
+// The option that takes the next argument as its value; false if arg is none of them.
+bool ParseValue(const std::string& arg, const char* value, FuzzOptions& options)
+{
+  if (arg == "--seeds")
+  {
+    options.Seeds = value;
+  }
+  else if (arg == "--work")
+  {
+    options.Work = value;
+  }
+  else if (arg == "--crashes")
+  {
+    options.Crashes = value;
+  }
+  else if (arg == "--seconds")
+  {
+    options.Seconds = std::atof(value);
+  }
+  else if (arg == "--mutants")
+  {
+    options.MutantsPerFormat = std::atoll(value);
+  }
+  else if (arg == "--seed")
+  {
+    options.Seed = std::strtoull(value, nullptr, 10);
+  }
+  else if (arg == "--formats")
+  {
+    options.Formats = value;
+  }
+  else if (arg == "--valid")
+  {
+    options.Valid = value;
+  }
+  else
+  {
+    return false;
+  }
+  return true;
 }
 
-int main(int argc, char* argv[])
+// False on an unknown argument or a missing value.
+bool ParseFuzzOptions(int argc, char* argv[], FuzzOptions& options)
 {
-  std::string seeds, work, crashes, valid, formatList = "stl,obj,ply,vtp,vtk,gltf,glb,off";
-  std::vector<std::string> replay;
-  double seconds = 0;
-  long long mutantsPerFormat = 0;
-  uint64_t seed = 1;
-  bool explore = false; // a fresh seed's campaign: print the findings, exit 0
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
-    const bool hasValue = i + 1 < argc;
-    if (arg == "--seeds" && hasValue)
+    if (arg == "--explore")
     {
-      seeds = argv[++i];
-    }
-    else if (arg == "--work" && hasValue)
-    {
-      work = argv[++i];
-    }
-    else if (arg == "--crashes" && hasValue)
-    {
-      crashes = argv[++i];
-    }
-    else if (arg == "--seconds" && hasValue)
-    {
-      seconds = std::atof(argv[++i]);
-    }
-    else if (arg == "--mutants" && hasValue)
-    {
-      mutantsPerFormat = std::atoll(argv[++i]);
-    }
-    else if (arg == "--seed" && hasValue)
-    {
-      seed = std::strtoull(argv[++i], nullptr, 10);
-    }
-    else if (arg == "--formats" && hasValue)
-    {
-      formatList = argv[++i];
-    }
-    else if (arg == "--explore")
-    {
-      explore = true;
-    }
-    else if (arg == "--valid" && hasValue)
-    {
-      valid = argv[++i];
+      options.Explore = true;
     }
     else if (arg == "--replay")
     {
       while (i + 1 < argc && argv[i + 1][0] != '-')
       {
-        replay.push_back(argv[++i]);
+        options.Replay.push_back(argv[++i]);
       }
+    }
+    else if (i + 1 >= argc || !ParseValue(arg, argv[i + 1], options))
+    {
+      return false;
     }
     else
     {
-      return Usage();
+      ++i;
     }
   }
-  // The children's VTK messages are expected (rejected files): keep them off the log.
-  vtkNew<vtkStringOutputWindow> quiet;
-  vtkOutputWindow::SetInstance(quiet);
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  return true;
+}
 
-  if (!replay.empty() || !valid.empty())
+// Regression: every seed in --valid reads without error, every reproducer neither crashes nor
+// hangs. Returns the exit status.
+int Replay(const FuzzOptions& options)
+{
+  std::vector<std::string> dirs = options.Replay;
+  if (!options.Valid.empty())
   {
-    // Regression: every seed reads without error, every reproducer neither crashes nor hangs.
-    int failures = 0, files = 0;
-    if (!valid.empty())
+    dirs.push_back(options.Valid);
+  }
+  int failures = 0, files = 0;
+  for (const std::string& dir : dirs)
+  {
+    for (const std::string& name : ListFiles(dir))
     {
-      replay.push_back(valid);
-    }
-    for (const std::string& dir : replay)
-    {
-      for (const std::string& name : ListFiles(dir))
+      if (Extension(name) == "bin" || Extension(name) == "md")
       {
-        if (Extension(name) == "bin" || Extension(name) == "md")
-        {
-          continue;
-        }
-        ++files;
-        const std::string path = dir + "/" + name;
-        std::string problem;
-        const Outcome outcome = Run(path, problem);
-        bool ok = outcome == Outcome::Read || (outcome == Outcome::Rejected && dir != valid);
-        if (outcome == Outcome::Rejected && dir == valid)
-        {
-          problem = "a seed is rejected";
-        }
-        std::cout << (ok ? "ok: " : "FAILED: ") << path << (ok ? "" : ": " + problem) << "\n";
-        failures += !ok;
+        continue;
       }
+      ++files;
+      const std::string path = dir + "/" + name;
+      std::string problem;
+      const Outcome outcome = Run(path, problem);
+      const bool seed = dir == options.Valid;
+      const bool ok = outcome == Outcome::Read || (outcome == Outcome::Rejected && !seed);
+      if (outcome == Outcome::Rejected && seed)
+      {
+        problem = "a seed is rejected";
+      }
+      std::cout << (ok ? "ok: " : "FAILED: ") << path << (ok ? "" : ": " + problem) << "\n";
+      failures += !ok;
     }
-    std::cout << files - failures << " passed, " << failures << " failed\n";
-    return failures || !files ? 1 : 0;
   }
-  if (seeds.empty() || work.empty() || (seconds <= 0 && mutantsPerFormat <= 0))
-  {
-    return Usage();
-  }
+  std::cout << files - failures << " passed, " << failures << " failed\n";
+  return failures || !files ? 1 : 0;
+}
 
-  // Seeds by format; every seed's bytes also feed the splices.
+// The seeds by format (extension); every seed's bytes also go to pool, for the splices.
+std::map<std::string, std::vector<Seed>> LoadSeeds(
+  const std::string& dir, std::vector<std::string>& pool)
+{
   std::map<std::string, std::vector<Seed>> byFormat;
-  std::vector<std::string> pool;
-  for (const std::string& name : ListFiles(seeds))
+  for (const std::string& name : ListFiles(dir))
   {
     const std::string extension = Extension(name);
     if (extension == "bin" || extension == "md")
     {
       continue;
     }
-    Seed s{ name, ReadFile(seeds + "/" + name), "", "" };
+    Seed s{ name, ReadFile(dir + "/" + name), "", "" };
     if (extension == "gltf")
     {
       const size_t uri = s.Data.find("\"uri\": \"");
@@ -869,106 +885,149 @@ int main(int argc, char* argv[])
       if (uri != std::string::npos && s.Data.compare(uri + 8, 5, "data:") != 0)
       {
         s.Companion = s.Data.substr(uri + 8, end - uri - 8);
-        s.CompanionData = ReadFile(seeds + "/" + s.Companion);
+        s.CompanionData = ReadFile(dir + "/" + s.Companion);
       }
     }
     pool.push_back(s.Data);
     byFormat[extension].push_back(s);
   }
+  return byFormat;
+}
+
+std::vector<std::string> SplitFormats(const std::string& list)
+{
   std::vector<std::string> formats;
-  for (size_t start = 0; start <= formatList.size();)
+  for (size_t start = 0; start <= list.size();)
   {
-    const size_t comma = std::min(formatList.find(',', start), formatList.size());
-    formats.push_back(formatList.substr(start, comma - start));
+    const size_t comma = std::min(list.find(',', start), list.size());
+    formats.push_back(list.substr(start, comma - start));
     start = comma + 1;
   }
-  MakeDirectories(work);
+  return formats;
+}
+
+// Every seed, unmutated, must read where the mutants are written: else nothing is fuzzed.
+bool SeedsRead(const std::vector<Seed>& seeds, const std::string& dir, const std::string& format)
+{
+  for (const Seed& s : seeds)
+  {
+    WriteFile(dir + "/seed." + format, s.Data);
+    if (!s.Companion.empty())
+    {
+      WriteFile(dir + "/" + s.Companion, s.CompanionData);
+    }
+    std::string problem;
+    if (Run(dir + "/seed." + format, problem) != Outcome::Read)
+    {
+      std::cerr << "npr-fuzz-readers: the seed " << s.Name << " does not read from " << dir
+                << (problem.empty() ? "" : ": " + problem) << "\n";
+      return false;
+    }
+  }
+  return true;
+}
+
+void Count(Outcome outcome, Counts& counts)
+{
+  ++counts.Mutants;
+  counts.Read += outcome == Outcome::Read;
+  counts.Rejected += outcome == Outcome::Rejected;
+  counts.Crashes += outcome == Outcome::Crash;
+  counts.Hangs += outcome == Outcome::Hang;
+  counts.Reports += outcome == Outcome::Report;
+  counts.SilentBlanks += outcome == Outcome::SilentBlank;
+}
+
+// A mutant that crashed, hung, reported or drew a silent blank: said, and kept in --crashes.
+void KeepFinding(const FuzzOptions& options, const std::string& format, const std::string& dir,
+  const Seed& s, const std::string& problem, long long mutant)
+{
+  const std::string name =
+    format + "-" + std::to_string(options.Seed) + "-" + std::to_string(mutant) + "." + format;
+  const std::string& crashes = options.Crashes;
+  std::cout << "npr-fuzz-readers: " << format << ": " << problem << " on a mutant of " << s.Name
+            << (crashes.empty() ? "" : ", saved as " + crashes + "/" + name) << std::endl;
   if (!crashes.empty())
   {
-    MakeDirectories(crashes);
+    WriteFile(crashes + "/" + name, ReadFile(dir + "/mutant." + format));
+    if (!s.Companion.empty())
+    {
+      WriteFile(crashes + "/" + name + "." + s.Companion, ReadFile(dir + "/" + s.Companion));
+    }
   }
+}
 
+// One format's campaign: --mutants mutants, or its share of --seconds.
+Counts FuzzFormat(const FuzzOptions& options, const std::string& format,
+  const std::vector<Seed>& seeds, Mutator& mutator, const std::string& dir, double seconds)
+{
+  const bool text = format != "glb";
+  Counts counts;
+  const auto formatStart = std::chrono::steady_clock::now();
+  auto elapsed = [&]
+  { return std::chrono::duration<double>(std::chrono::steady_clock::now() - formatStart).count(); };
+  while (
+    options.MutantsPerFormat > 0 ? counts.Mutants < options.MutantsPerFormat : elapsed() < seconds)
+  {
+    const Seed& s = seeds[mutator.Below(seeds.size())];
+    const std::string path = dir + "/mutant." + format;
+    WriteFile(path, mutator.Mutate(s.Data, text));
+    if (!s.Companion.empty())
+    {
+      WriteFile(dir + "/" + s.Companion,
+        mutator.Below(4) ? s.CompanionData : mutator.Mutate(s.CompanionData, false));
+    }
+    std::string problem;
+    const Outcome outcome = Run(path, problem);
+    Count(outcome, counts);
+    if (outcome != Outcome::Read && outcome != Outcome::Rejected)
+    {
+      KeepFinding(options, format, dir, s, problem, counts.Mutants);
+    }
+  }
+  std::cout << "fuzz: " << format << ": " << counts.Mutants << " mutants in "
+            << static_cast<int>(elapsed() + 0.5) << " s (" << counts.Read << " read, "
+            << counts.Rejected << " rejected), crashes " << counts.Crashes << ", hangs "
+            << counts.Hangs << ", reports " << counts.Reports << ", silent blanks "
+            << counts.SilentBlanks << std::endl;
+  return counts;
+}
+
+// Every format of --formats in turn; returns the exit status.
+int Fuzz(const FuzzOptions& options)
+{
+  std::vector<std::string> pool;
+  std::map<std::string, std::vector<Seed>> byFormat = LoadSeeds(options.Seeds, pool);
+  const std::vector<std::string> formats = SplitFormats(options.Formats);
+  MakeDirectories(options.Work);
+  if (!options.Crashes.empty())
+  {
+    MakeDirectories(options.Crashes);
+  }
   Counts total;
   int failedFormats = 0;
   const auto begin = std::chrono::steady_clock::now();
   for (size_t f = 0; f < formats.size(); ++f)
   {
     const std::string& format = formats[f];
-    const std::vector<Seed>& candidates = byFormat[format];
-    if (candidates.empty())
+    const std::vector<Seed>& seeds = byFormat[format];
+    if (seeds.empty())
     {
-      std::cerr << "npr-fuzz-readers: no seed of format '" << format << "' in " << seeds << "\n";
+      std::cerr << "npr-fuzz-readers: no seed of format '" << format << "' in " << options.Seeds
+                << "\n";
       return 2;
     }
     // A mutator per format, so that a format's mutants do not depend on how many the formats
     // before it ran in their time: mutant k of a format is the same in every run of a --seed.
-    Mutator mutator(seed * 1000003u + f, pool);
-    const std::string dir = work + "/" + format;
+    Mutator mutator(options.Seed * 1000003u + f, pool);
+    const std::string dir = options.Work + "/" + format;
     MakeDirectories(dir);
-    // Every seed, unmutated, must read where the mutants are written: else nothing is fuzzed.
-    for (const Seed& s : candidates)
+    if (!SeedsRead(seeds, dir, format))
     {
-      WriteFile(dir + "/seed." + format, s.Data);
-      if (!s.Companion.empty())
-      {
-        WriteFile(dir + "/" + s.Companion, s.CompanionData);
-      }
-      std::string problem;
-      if (Run(dir + "/seed." + format, problem) != Outcome::Read)
-      {
-        std::cerr << "npr-fuzz-readers: the seed " << s.Name << " does not read from " << dir
-                  << (problem.empty() ? "" : ": " + problem) << "\n";
-        return 2;
-      }
+      return 2;
     }
-    const bool text = format != "glb";
-    Counts counts;
-    const auto formatStart = std::chrono::steady_clock::now();
-    auto elapsed = [&] {
-      return std::chrono::duration<double>(std::chrono::steady_clock::now() - formatStart).count();
-    };
-    while (mutantsPerFormat > 0 ? counts.Mutants < mutantsPerFormat
-                                : elapsed() < seconds / static_cast<double>(formats.size()))
-    {
-      const Seed& s = candidates[mutator.Below(candidates.size())];
-      const std::string path = dir + "/mutant." + format;
-      WriteFile(path, mutator.Mutate(s.Data, text));
-      if (!s.Companion.empty())
-      {
-        WriteFile(dir + "/" + s.Companion,
-          mutator.Below(4) ? s.CompanionData : mutator.Mutate(s.CompanionData, false));
-      }
-      std::string problem;
-      const Outcome outcome = Run(path, problem);
-      ++counts.Mutants;
-      counts.Read += outcome == Outcome::Read;
-      counts.Rejected += outcome == Outcome::Rejected;
-      counts.Crashes += outcome == Outcome::Crash;
-      counts.Hangs += outcome == Outcome::Hang;
-      counts.Reports += outcome == Outcome::Report;
-      counts.SilentBlanks += outcome == Outcome::SilentBlank;
-      if (outcome != Outcome::Read && outcome != Outcome::Rejected)
-      {
-        const std::string name =
-          format + "-" + std::to_string(seed) + "-" + std::to_string(counts.Mutants) + "." + format;
-        std::cout << "npr-fuzz-readers: " << format << ": " << problem << " on a mutant of "
-                  << s.Name << (crashes.empty() ? "" : ", saved as " + crashes + "/" + name)
-                  << std::endl;
-        if (!crashes.empty())
-        {
-          WriteFile(crashes + "/" + name, ReadFile(path));
-          if (!s.Companion.empty())
-          {
-            WriteFile(crashes + "/" + name + "." + s.Companion, ReadFile(dir + "/" + s.Companion));
-          }
-        }
-      }
-    }
-    std::cout << "fuzz: " << format << ": " << counts.Mutants << " mutants in "
-              << static_cast<int>(elapsed() + 0.5) << " s (" << counts.Read << " read, "
-              << counts.Rejected << " rejected), crashes " << counts.Crashes << ", hangs "
-              << counts.Hangs << ", reports " << counts.Reports << ", silent blanks "
-              << counts.SilentBlanks << std::endl;
+    const Counts counts = FuzzFormat(
+      options, format, seeds, mutator, dir, options.Seconds / static_cast<double>(formats.size()));
     failedFormats += counts.Crashes + counts.Hangs + counts.Reports + counts.SilentBlanks > 0;
     total.Mutants += counts.Mutants;
     total.Crashes += counts.Crashes;
@@ -980,11 +1039,36 @@ int main(int argc, char* argv[])
             << static_cast<int>(
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() +
                  0.5)
-            << " s (seed " << seed << "), crashes " << total.Crashes << ", hangs " << total.Hangs
-            << ", reports " << total.Reports << ", silent blanks " << total.SilentBlanks << "; "
-            << formats.size() - failedFormats << " of " << formats.size()
-            << (explore ? " formats without findings (--explore: findings do not fail)"
-                        : " formats passed")
+            << " s (seed " << options.Seed << "), crashes " << total.Crashes << ", hangs "
+            << total.Hangs << ", reports " << total.Reports << ", silent blanks "
+            << total.SilentBlanks << "; " << formats.size() - failedFormats << " of "
+            << formats.size()
+            << (options.Explore ? " formats without findings (--explore: findings do not fail)"
+                                : " formats passed")
             << std::endl;
-  return failedFormats && !explore ? 1 : 0;
+  return failedFormats && !options.Explore ? 1 : 0;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  FuzzOptions options;
+  if (!ParseFuzzOptions(argc, argv, options))
+  {
+    return Usage();
+  }
+  // The children's VTK messages are expected (rejected files): keep them off the log.
+  vtkNew<vtkStringOutputWindow> quiet;
+  vtkOutputWindow::SetInstance(quiet);
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  if (!options.Replay.empty() || !options.Valid.empty())
+  {
+    return Replay(options);
+  }
+  if (options.Seeds.empty() || options.Work.empty() ||
+    (options.Seconds <= 0 && options.MutantsPerFormat <= 0))
+  {
+    return Usage();
+  }
+  return Fuzz(options);
 }
