@@ -196,84 +196,74 @@ Models: .stl .obj .ply .vtp .vtk .gltf .glb .off
   --version                the program and vtkNPR version
 
 )";
-}
 
-nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
+// The options of what npr-render writes and how it times: -o, --frames, --orbit and the others
+// that npr-view does not take.
+bool ParseOutputOption(nprArgumentReader& arguments, nprRenderOptions& options)
 {
-  nprRenderOptions options;
-  nprPassSettings& pass = options.Pass;
-  static const std::string help = std::string(Usage) + "Camera (not with --camera-in):\n" +
-    nprCameraOptionsHelp + "\n" + nprPassOptionsHelp;
-  nprArgumentReader arguments(argc, argv, help.c_str());
-  while (arguments.Next())
+  const std::string& arg = arguments.Current();
+  if (arg == "-o" || arg == "--output")
   {
-    const std::string& arg = arguments.Current();
-    if (nprParsePassOption(arguments, pass) || nprParseSceneOption(arguments, options) ||
-      ParseSheetOption(arguments, options) || ParseFillOption(arguments, options))
+    options.Output = arguments.Value();
+  }
+  else if (arg == "--camera-out")
+  {
+    options.CameraOut = arguments.Value();
+  }
+  else if (arg == "--quiet")
+  {
+    options.Quiet = true;
+  }
+  else if (arg == "--frames")
+  {
+    options.Frames = nprParseInteger(arg, arguments.Value(), 1, 100000);
+  }
+  else if (arg == "--orbit")
+  {
+    options.Orbit = nprParseInteger(arg, arguments.Value(), 1, 100000);
+  }
+  else if (arg == "--orbit-degrees")
+  {
+    options.OrbitDegrees = nprParseRange(arg, arguments.Value(), -3600.0, 3600.0);
+  }
+  else if (arg == "--fps")
+  {
+    options.Rate = nprParseRange(arg, arguments.Value(), 1.0, 120.0);
+  }
+  else if (arg == "--backend")
+  {
+    options.Backend = arguments.Value();
+    if (!vtkNPRRenderWindowFactory::IsKnownBackend(options.Backend.c_str()))
     {
-      continue; // --style and the flags of the styles; the models, the frame and the camera;
-                // the drawing sheet; the filled faces
-    }
-    if (arg == "-o" || arg == "--output")
-    {
-      options.Output = arguments.Value();
-    }
-    else if (arg == "--camera-out")
-    {
-      options.CameraOut = arguments.Value();
-    }
-    else if (arg == "--quiet")
-    {
-      options.Quiet = true;
-    }
-    else if (arg == "--frames")
-    {
-      options.Frames = nprParseInteger(arg, arguments.Value(), 1, 100000);
-    }
-    else if (arg == "--orbit")
-    {
-      options.Orbit = nprParseInteger(arg, arguments.Value(), 1, 100000);
-    }
-    else if (arg == "--orbit-degrees")
-    {
-      options.OrbitDegrees = nprParseRange(arg, arguments.Value(), -3600.0, 3600.0);
-    }
-    else if (arg == "--fps")
-    {
-      options.Rate = nprParseRange(arg, arguments.Value(), 1.0, 120.0);
-    }
-    else if (arg == "--backend")
-    {
-      options.Backend = arguments.Value();
-      if (!vtkNPRRenderWindowFactory::IsKnownBackend(options.Backend.c_str()))
-      {
-        throw nprUsageError("unknown backend '" + options.Backend +
-          "' (valid backends: " + vtkNPRRenderWindowFactory::GetKnownBackends() + ")");
-      }
-    }
-    else if (arg == "--compare-style")
-    {
-      for (const std::string& part : nprSplitList(arguments.Value()))
-      {
-        options.CompareStyles.push_back(nprStyleFromText(arg, part));
-      }
-    }
-    else if (arg == "--edge-mask")
-    {
-      options.EdgeMask = arguments.Value();
-    }
-    else if (arg == "--reference-mask")
-    {
-      options.ReferenceMask = arguments.Value();
-    }
-    else
-    {
-      throw nprUsageError("unknown option '" + arg + "' (see --help)");
+      throw nprUsageError("unknown backend '" + options.Backend +
+        "' (valid backends: " + vtkNPRRenderWindowFactory::GetKnownBackends() + ")");
     }
   }
-  nprCheckSceneOptions(options);
-  CheckSheetOptions(options);
-  CheckFillOptions(options);
+  else if (arg == "--compare-style")
+  {
+    for (const std::string& part : nprSplitList(arguments.Value()))
+    {
+      options.CompareStyles.push_back(nprStyleFromText(arg, part));
+    }
+  }
+  else if (arg == "--edge-mask")
+  {
+    options.EdgeMask = arguments.Value();
+  }
+  else if (arg == "--reference-mask")
+  {
+    options.ReferenceMask = arguments.Value();
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
+
+// -o's extension against --orbit, and that the command has something to write or time.
+void CheckOutputOptions(const nprRenderOptions& options)
+{
   const std::string outputKind = nprOrbitOutputKind(options.Output);
   if (options.Orbit > 0)
   {
@@ -307,11 +297,35 @@ nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
   {
     throw nprUsageError("--compare-style needs --frames N");
   }
-  if (!options.EdgeMask.empty() && pass.Style != "edges" && pass.Style != "toon+edges" &&
-    pass.Style != "inked")
+  const std::string& style = options.Pass.Style;
+  if (!options.EdgeMask.empty() && style != "edges" && style != "toon+edges" && style != "inked")
   {
     throw nprUsageError("--edge-mask needs --style edges, toon+edges or inked");
   }
+}
+}
+
+nprRenderOptions nprParseRenderOptions(int argc, char* argv[])
+{
+  nprRenderOptions options;
+  static const std::string help = std::string(Usage) + "Camera (not with --camera-in):\n" +
+    nprCameraOptionsHelp + "\n" + nprPassOptionsHelp;
+  nprArgumentReader arguments(argc, argv, help.c_str());
+  while (arguments.Next())
+  {
+    // --style and the flags of the styles; the models, the frame and the camera; the drawing
+    // sheet; the filled faces; what is written and timed.
+    if (!nprParsePassOption(arguments, options.Pass) && !nprParseSceneOption(arguments, options) &&
+      !ParseSheetOption(arguments, options) && !ParseFillOption(arguments, options) &&
+      !ParseOutputOption(arguments, options))
+    {
+      throw nprUsageError("unknown option '" + arguments.Current() + "' (see --help)");
+    }
+  }
+  nprCheckSceneOptions(options);
+  CheckSheetOptions(options);
+  CheckFillOptions(options);
+  CheckOutputOptions(options);
   WarnAboutFlags(options);
   return options;
 }
