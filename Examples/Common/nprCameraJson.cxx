@@ -127,7 +127,10 @@ void nprWriteCameraFile(const std::string& fileName, const nprCameraState& camer
   }
 }
 
-nprCameraState nprReadCameraFile(const std::string& fileName)
+namespace
+{
+// The file's JSON, strictly (no comments, no trailing commas); fails with the parser's message.
+Json::Value ParseJsonFile(const std::string& fileName)
 {
   std::ifstream stream(fileName);
   if (!stream)
@@ -138,7 +141,7 @@ nprCameraState nprReadCameraFile(const std::string& fileName)
   text << stream.rdbuf();
   Json::Value root;
   Json::CharReaderBuilder builder;
-  Json::CharReaderBuilder::strictMode(&builder.settings_); // no comments, no trailing commas
+  Json::CharReaderBuilder::strictMode(&builder.settings_);
   std::string errors;
   const std::string content = text.str();
   std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
@@ -151,6 +154,12 @@ nprCameraState nprReadCameraFile(const std::string& fileName)
         (detail == std::string::npos ? ""
                                      : errors.substr(detail, errors.find('\n', detail) - detail)));
   }
+  return root;
+}
+
+// An object with the camera's keys, each once, "size" optional, nothing else.
+void CheckKeys(const Json::Value& root, const std::string& fileName)
+{
   if (!root.isObject())
   {
     Fail(fileName, "the camera must be a JSON object");
@@ -176,7 +185,11 @@ nprCameraState nprReadCameraFile(const std::string& fileName)
       Fail(fileName, std::string("missing \"") + key + "\"");
     }
   }
+}
 
+// The values, each of its type; the size, where given, two integers in 1..16384.
+nprCameraState CameraFromJson(Json::Value& root, const std::string& fileName)
+{
   nprCameraState camera;
   camera.Position = Vector<3>(root, "position", fileName);
   camera.FocalPoint = Vector<3>(root, "focal_point", fileName);
@@ -199,7 +212,12 @@ nprCameraState nprReadCameraFile(const std::string& fileName)
     }
     camera.Size = { { static_cast<int>(size[0]), static_cast<int>(size[1]) } };
   }
+  return camera;
+}
 
+// A camera VTK can use: a view direction, an up vector off it, an angle, a scale and a range.
+void CheckCamera(const nprCameraState& camera, const std::string& fileName)
+{
   double direction[3];
   vtkMath::Subtract(camera.FocalPoint.data(), camera.Position.data(), direction);
   double side[3];
@@ -227,6 +245,15 @@ nprCameraState nprReadCameraFile(const std::string& fileName)
       "\"clipping_range\" must be [near, far] with far > near (and near > 0 in "
       "perspective)");
   }
+}
+}
+
+nprCameraState nprReadCameraFile(const std::string& fileName)
+{
+  Json::Value root = ParseJsonFile(fileName);
+  CheckKeys(root, fileName);
+  const nprCameraState camera = CameraFromJson(root, fileName);
+  CheckCamera(camera, fileName);
   return camera;
 }
 
