@@ -125,6 +125,59 @@ vtkSmartPointer<vtkRenderWindow> CreateVTKHeadlessWindow(const std::string& name
   return window;
 }
 #endif
+
+// The EGL or OSMesa window with its context made now; nullptr and the reason when that fails.
+vtkSmartPointer<vtkRenderWindow> CreateHeadlessWindow(const std::string& name, std::string& why)
+{
+#if NPR_HAS_OWN_HEADLESS_WINDOWS
+  vtkSmartPointer<vtkNPRHeadlessRenderWindow> headless;
+  if (name == "egl")
+  {
+    headless = vtkSmartPointer<vtkNPREGLRenderWindow>::New();
+  }
+  else
+  {
+    headless = vtkSmartPointer<vtkNPROSMesaRenderWindow>::New();
+  }
+  if (!headless->InitializeContext())
+  {
+    why = headless->GetContextError();
+    return nullptr;
+  }
+  return headless;
+#else
+  return CreateVTKHeadlessWindow(name, why);
+#endif
+}
+
+// VTK's X window, drawing off screen; nullptr and the reason when no X display can be used.
+vtkSmartPointer<vtkRenderWindow> CreateXWindow(std::string& why)
+{
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display)
+  {
+    why = "DISPLAY is not set (run under xvfb-run, or use NPR_BACKEND=egl)";
+    return nullptr;
+  }
+  // VTK's X window aborts the process when the display cannot be opened: try it first.
+  if (!OpenXDisplay(display))
+  {
+    why = std::string("cannot open the X display '") + display + "'";
+    return nullptr;
+  }
+#if NPR_HAS_OWN_HEADLESS_WINDOWS
+  auto window = vtkSmartPointer<vtkRenderWindow>::New(); // VTK's own X window
+#elif defined(VTK_USE_X)
+  // vtkRenderWindow::New() picks a window at run time since VTK 9.4: ask for X itself.
+  vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkXOpenGLRenderWindow>::New();
+#else
+  why = "this VTK was built without X";
+  vtkSmartPointer<vtkRenderWindow> window;
+  return window;
+#endif
+  window->SetOffScreenRendering(1);
+  return window;
+}
 }
 
 void vtkNPRRenderWindowFactory::PrintSelf(ostream& os, vtkIndent indent)
@@ -156,7 +209,6 @@ const char* vtkNPRRenderWindowFactory::GetDefaultBackend()
 vtkRenderWindow* vtkNPRRenderWindowFactory::CreateRenderWindow(const char* backend)
 {
   const std::string name = (backend && *backend) ? backend : GetDefaultBackend();
-  vtkSmartPointer<vtkRenderWindow> window;
 #if !NPR_HAS_OSMESA
   if (name == "osmesa")
   {
@@ -166,68 +218,25 @@ vtkRenderWindow* vtkNPRRenderWindowFactory::CreateRenderWindow(const char* backe
     return nullptr;
   }
 #endif
-#if NPR_HAS_OWN_HEADLESS_WINDOWS
+  vtkSmartPointer<vtkRenderWindow> window;
+  std::string why;
   if (name == "egl" || name == "osmesa")
   {
-    vtkSmartPointer<vtkNPRHeadlessRenderWindow> headless;
-    if (name == "egl")
-    {
-      headless = vtkSmartPointer<vtkNPREGLRenderWindow>::New();
-    }
-    else
-    {
-      headless = vtkSmartPointer<vtkNPROSMesaRenderWindow>::New();
-    }
-    if (!headless->InitializeContext())
-    {
-      vtkGenericWarningMacro(<< "no " << name << " render window: " << headless->GetContextError());
-      return nullptr;
-    }
-    window = headless;
+    window = CreateHeadlessWindow(name, why);
   }
-#else
-  if (name == "egl" || name == "osmesa")
-  {
-    std::string why;
-    window = CreateVTKHeadlessWindow(name, why);
-    if (!window)
-    {
-      vtkGenericWarningMacro(<< "no " << name << " render window: " << why);
-      return nullptr;
-    }
-  }
-#endif
   else if (name == "x")
   {
-    const char* display = std::getenv("DISPLAY");
-    if (!display || !*display)
-    {
-      vtkGenericWarningMacro(<< "no x render window: DISPLAY is not set (run under xvfb-run, or "
-                                "use NPR_BACKEND=egl)");
-      return nullptr;
-    }
-    // VTK's X window aborts the process when the display cannot be opened: try it first.
-    if (!OpenXDisplay(display))
-    {
-      vtkGenericWarningMacro(<< "no x render window: cannot open the X display '" << display
-                             << "'");
-      return nullptr;
-    }
-#if NPR_HAS_OWN_HEADLESS_WINDOWS
-    window = vtkSmartPointer<vtkRenderWindow>::New(); // VTK's own X window
-#elif defined(VTK_USE_X)
-    // vtkRenderWindow::New() picks a window at run time since VTK 9.4: ask for X itself.
-    window = vtkSmartPointer<vtkXOpenGLRenderWindow>::New();
-#else
-    vtkGenericWarningMacro(<< "no x render window: this VTK was built without X");
-    return nullptr;
-#endif
-    window->SetOffScreenRendering(1);
+    window = CreateXWindow(why);
   }
   else
   {
     vtkGenericWarningMacro(<< "unknown render window backend '" << name
                            << "'; valid backends: " << GetKnownBackends());
+    return nullptr;
+  }
+  if (!window)
+  {
+    vtkGenericWarningMacro(<< "no " << name << " render window: " << why);
     return nullptr;
   }
   window->SetMultiSamples(0);
