@@ -243,25 +243,16 @@ void nprWriteBenchmarkCSV(const std::string& path, const std::vector<nprBenchmar
   }
 }
 
-void nprWriteBenchmarkMarkdown(
-  const std::string& path, const std::vector<nprBenchmarkRow>& rows, const nprBenchmarkInfo& info)
+namespace
 {
-  std::ofstream file = OpenForWriting(path);
-  file << "Renderer: " << info.Renderer << " (backend " << info.Backend << "); " << info.Frames
-       << " timed frames per method and view, interleaved with the shaded frame; whole run "
-       << nprFormat(info.Seconds / 60.0, 3) << " min.\n\n";
-  file << "Scenes:\n"
-       << info.Scenes << "\nCameras (after ResetCamera, perspective): " << info.Cameras
-       << ". Sizes: " << info.Sizes << ".\n\nMethods:\n"
-       << info.Methods << "\n";
-
-  // Per method and size, over scenes and cameras: medians of the times, means of the errors.
+// Per method and size, over scenes and cameras: medians of the times, means of the errors.
+void WriteMethodTable(std::ostream& file, const std::vector<nprBenchmarkRow>& rows,
+  const std::vector<std::string>& methods)
+{
   file << "| method | size | views | median ms | shaded ms | ratio to shaded | P@1 | R@1 | F1@1 "
           "| F1@2 | distance px |\n";
   file << "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
-  const auto methods = Distinct(rows, [](const nprBenchmarkRow& r) { return r.Method; });
-  const auto sizes = Distinct(rows, SizeName);
-  for (const std::string& size : sizes)
+  for (const std::string& size : Distinct(rows, SizeName))
   {
     for (const std::string& method : methods)
     {
@@ -291,8 +282,12 @@ void nprWriteBenchmarkMarkdown(
            << nprFormat(Mean(f2), 3) << " | " << nprFormat(Mean(distance), 3) << " |\n";
     }
   }
+}
 
-  // F1@1 per scene (mean over cameras and sizes): where each method loses accuracy.
+// F1@1 per scene (mean over cameras and sizes): where each method loses accuracy.
+void WriteSceneTable(std::ostream& file, const std::vector<nprBenchmarkRow>& rows,
+  const std::vector<std::string>& methods)
+{
   const auto scenes = Distinct(rows, [](const nprBenchmarkRow& r) { return r.Scene; });
   file << "\nF1 at 1 px by scene (mean over cameras and sizes):\n\n| method |";
   for (const std::string& scene : scenes)
@@ -322,6 +317,23 @@ void nprWriteBenchmarkMarkdown(
     }
     file << "\n";
   }
+}
+}
+
+void nprWriteBenchmarkMarkdown(
+  const std::string& path, const std::vector<nprBenchmarkRow>& rows, const nprBenchmarkInfo& info)
+{
+  std::ofstream file = OpenForWriting(path);
+  file << "Renderer: " << info.Renderer << " (backend " << info.Backend << "); " << info.Frames
+       << " timed frames per method and view, interleaved with the shaded frame; whole run "
+       << nprFormat(info.Seconds / 60.0, 3) << " min.\n\n";
+  file << "Scenes:\n"
+       << info.Scenes << "\nCameras (after ResetCamera, perspective): " << info.Cameras
+       << ". Sizes: " << info.Sizes << ".\n\nMethods:\n"
+       << info.Methods << "\n";
+  const auto methods = Distinct(rows, [](const nprBenchmarkRow& r) { return r.Method; });
+  WriteMethodTable(file, rows, methods);
+  WriteSceneTable(file, rows, methods);
 
   // The Pareto front of the plot.
   const auto front = nprParetoFront(nprPlotPoints(rows, "", true));
