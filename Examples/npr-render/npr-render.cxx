@@ -225,6 +225,56 @@ void WriteOutput(vtkRenderWindow* window, vtkRenderer* renderer, const nprRender
   }
 }
 
+// The window at the start camera's size, with the renderer; the camera as given or moved.
+vtkSmartPointer<vtkRenderWindow> OpenWindow(const nprRenderOptions& options, vtkRenderer* renderer,
+  const nprCameraState& given, int width, int height, nprOutputWindow* messages)
+{
+  vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
+    vtkNPRRenderWindowFactory::CreateRenderWindow(options.Backend.c_str()));
+  if (!window)
+  {
+    throw std::runtime_error(WhyNoWindow(messages->Last));
+  }
+  window->SetSize(width, height);
+  window->AddRenderer(renderer);
+  if (!options.CameraIn.empty())
+  {
+    given.ApplyTo(renderer->GetActiveCamera()); // clipping range as given
+  }
+  else
+  {
+    // After the window exists: the reset fits the scene to its aspect ratio.
+    nprApplyCameraMove(renderer, options.Camera);
+  }
+  return window;
+}
+
+// What a still render writes, after its timed frames if any: the image or drawing, the masks
+// and the camera file.
+void WriteStill(const nprRenderOptions& options, vtkRenderWindow* window, vtkRenderer* renderer,
+  vtkNPRPass* pass, nprProgress& progress, int width, int height)
+{
+  progress.Start();
+  WriteOutput(window, renderer, options);
+  if (!options.Output.empty())
+  {
+    progress.Done("wrote " + options.Output);
+  }
+  if (!options.EdgeMask.empty())
+  {
+    WriteEdgeMask(window, pass, options);
+  }
+  if (!options.ReferenceMask.empty())
+  {
+    WriteReferenceMask(renderer, options, width, height); // the camera of the render above
+  }
+  if (!options.CameraOut.empty())
+  {
+    nprWriteCameraFile(
+      options.CameraOut, nprCameraState::FromCamera(renderer->GetActiveCamera(), width, height));
+  }
+}
+
 int Run(const nprRenderOptions& options, nprOutputWindow* messages)
 {
   MakeOutputFolders(options);
@@ -243,38 +293,20 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
   {
     triangles += nprAddModel(renderer, options.Models[i], i, "npr-render", &progress);
   }
-
-  vtkCamera* camera = renderer->GetActiveCamera();
   int width, height;
   const nprCameraState given = nprReadStartCamera(options, width, height);
-
-  vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
-    vtkNPRRenderWindowFactory::CreateRenderWindow(options.Backend.c_str()));
-  if (!window)
-  {
-    throw std::runtime_error(WhyNoWindow(messages->Last));
-  }
-  window->SetSize(width, height);
-  window->AddRenderer(renderer);
-  if (!options.CameraIn.empty())
-  {
-    given.ApplyTo(camera); // clipping range as given
-  }
-  else
-  {
-    // After the window exists: the reset fits the scene to its aspect ratio.
-    nprApplyCameraMove(renderer, options.Camera);
-  }
+  vtkSmartPointer<vtkRenderWindow> window =
+    OpenWindow(options, renderer, given, width, height, messages);
   progress.Start();
   window->Render();
   progress.Done("first frame (" + options.Pass.Style + ")");
   WarnWhenNothingDrawn(window, triangles);
-
   if (options.Orbit > 0)
   {
     if (!options.CameraOut.empty())
     {
-      nprWriteCameraFile(options.CameraOut, nprCameraState::FromCamera(camera, width, height));
+      nprWriteCameraFile(
+        options.CameraOut, nprCameraState::FromCamera(renderer->GetActiveCamera(), width, height));
     }
     nprOrbitSettings orbit;
     orbit.Output = options.Output;
@@ -288,24 +320,7 @@ int Run(const nprRenderOptions& options, nprOutputWindow* messages)
   {
     TimeFrames(options, window, renderer, pass, triangles, width, height);
   }
-  progress.Start();
-  WriteOutput(window, renderer, options);
-  if (!options.Output.empty())
-  {
-    progress.Done("wrote " + options.Output);
-  }
-  if (!options.EdgeMask.empty())
-  {
-    WriteEdgeMask(window, pass, options);
-  }
-  if (!options.ReferenceMask.empty())
-  {
-    WriteReferenceMask(renderer, options, width, height); // the camera of the render above
-  }
-  if (!options.CameraOut.empty())
-  {
-    nprWriteCameraFile(options.CameraOut, nprCameraState::FromCamera(camera, width, height));
-  }
+  WriteStill(options, window, renderer, pass, progress, width, height);
   return 0;
 }
 }
