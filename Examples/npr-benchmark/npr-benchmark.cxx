@@ -96,26 +96,7 @@ nprBenchmarkRow ScoreMethod(const nprBenchmarkMethod& method, const nprMask& mas
   return row;
 }
 
-// One run over scenes, sizes and cameras: the stage, one pass a method, the rows.
-struct LineMethodsRun
-{
-  LineMethodsRun(const nprBenchmarkOptions& options, std::vector<nprBenchmarkMethod> methods)
-    : Options(options)
-    , Stage(options.LineWidth)
-    , Methods(std::move(methods))
-  {
-    for (const nprBenchmarkMethod& method : this->Methods)
-    {
-      this->Passes.push_back(this->Stage.MakePass(method));
-    }
-  }
-
-  const nprBenchmarkOptions& Options;
-  nprBenchmarkStage Stage;
-  std::vector<nprBenchmarkMethod> Methods;
-  std::vector<vtkSmartPointer<vtkNPRPass>> Passes;
-  std::vector<nprBenchmarkRow> Rows;
-};
+using LineMethodsRun = nprBenchmarkRun<nprBenchmarkRow>;
 
 // One scene at the window's size from one camera: the reference, every method timed and scored.
 void MeasureView(LineMethodsRun& run, const nprBenchmarkScene& scene,

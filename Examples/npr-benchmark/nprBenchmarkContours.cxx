@@ -238,31 +238,23 @@ void WriteMarkdown(const std::string& path, const std::vector<ContourRow>& rows,
   }
 }
 
-// The stage with one edge pass a variant, and the rows measured.
-struct ContoursRun
+// One edge pass a variant.
+std::vector<nprBenchmarkMethod> ContourMethods()
 {
-  explicit ContoursRun(const nprBenchmarkOptions& options)
-    : Options(options)
-    , Stage(options.LineWidth)
+  std::vector<nprBenchmarkMethod> methods;
+  for (const Variant& variant : Variants)
   {
-    for (const Variant& variant : Variants)
-    {
-      nprBenchmarkMethod method;
-      method.Name = variant.Name;
-      method.Pass.Creases = variant.AllTypes;
-      method.Pass.Contours = variant.AllTypes;
-      method.Pass.SmoothSilhouettes = variant.SmoothSilhouettes;
-      this->Methods.push_back(method);
-      this->Passes.push_back(this->Stage.MakePass(method));
-    }
+    nprBenchmarkMethod method;
+    method.Name = variant.Name;
+    method.Pass.Creases = variant.AllTypes;
+    method.Pass.Contours = variant.AllTypes;
+    method.Pass.SmoothSilhouettes = variant.SmoothSilhouettes;
+    methods.push_back(method);
   }
+  return methods;
+}
 
-  const nprBenchmarkOptions& Options;
-  nprBenchmarkStage Stage;
-  std::vector<nprBenchmarkMethod> Methods;
-  std::vector<vtkSmartPointer<vtkNPRPass>> Passes;
-  std::vector<ContourRow> Rows;
-};
+using ContoursRun = nprBenchmarkRun<ContourRow>;
 
 // The cameras of the run (--orbit's, or the first --cameras presets), and their line in the
 // report.
@@ -389,7 +381,7 @@ int nprRunBenchmarkContours(const nprBenchmarkOptions& options)
 {
   const nprClock::time_point start = nprClock::now();
   const std::vector<nprBenchmarkScene> scenes = nprStartBenchmarkRun(options);
-  ContoursRun run(options);
+  ContoursRun run(options, ContourMethods());
   std::string cameraLine;
   const std::vector<nprBenchmarkCamera> cameras = ContourCameras(options, scenes, cameraLine);
   for (const nprBenchmarkScene& scene : scenes)

@@ -6,6 +6,7 @@
 #define nprBenchmarkStage_h
 
 #include "nprBenchmarkMethods.h"
+#include "nprBenchmarkOptions.h"
 
 #include "vtkActor.h"
 #include "vtkNPRFeatureLines.h"
@@ -17,6 +18,7 @@
 #include "vtkSmartPointer.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 class vtkCamera;
@@ -81,6 +83,28 @@ struct nprBenchmarkStage
   // The object-space ground truth for the current camera and size (vtkNPRReferenceMask:
   // visible silhouettes, creases above 30 degrees, boundaries and non-manifold edges).
   nprMask ReferenceMask();
+};
+
+// One run of a mode over its methods: the stage, one pass a method, and the rows measured.
+template <typename Row>
+struct nprBenchmarkRun
+{
+  nprBenchmarkRun(const nprBenchmarkOptions& options, std::vector<nprBenchmarkMethod> methods)
+    : Options(options)
+    , Stage(options.LineWidth)
+    , Methods(std::move(methods))
+  {
+    for (const nprBenchmarkMethod& method : this->Methods)
+    {
+      this->Passes.push_back(this->Stage.MakePass(method));
+    }
+  }
+
+  const nprBenchmarkOptions& Options;
+  nprBenchmarkStage Stage;
+  std::vector<nprBenchmarkMethod> Methods;
+  std::vector<vtkSmartPointer<vtkNPRPass>> Passes;
+  std::vector<Row> Rows;
 };
 
 #endif
