@@ -52,6 +52,7 @@ struct SpeedMethod
   bool Unchanged = false;              // time a second render of the same frame
   bool Silhouette = false;             // vtkPolyDataSilhouette's lines over the plain surface
   bool CopiesPlain = false;            // draws the plain frame's pixels: checked in the warm-up
+  bool ObjectLines = false;            // vtkNPRFeatureLines' lines over the plain surface
 };
 
 struct SpeedRow
@@ -219,6 +220,10 @@ std::vector<SpeedMethod> MakeMethods()
   methods.push_back({ "edl", "vtkEDLShading", OverRenderSteps<vtkEDLShading>() });
   methods.push_back(
     { "silhouette", "vtkPolyDataSilhouette re-extracted + surface", nullptr, false, true });
+  // The project's object-space lines (silhouettes, creases, borders) for each frame's camera,
+  // drawn over the plain surface: what the edge style's lines cost in object space.
+  methods.push_back({ "objectlines", "vtkNPRFeatureLines re-extracted + surface", nullptr, false,
+    false, false, true });
   return methods;
 }
 
@@ -315,7 +320,8 @@ public:
 
   void Activate(const SpeedMethod& method)
   {
-    this->Stage.Activate(nullptr, false); // coincident-topology resolution as users get it
+    // Coincident-topology resolution as users get it; polygon offset for object lines.
+    this->Stage.Activate(nullptr, method.ObjectLines);
     this->Stage.Renderer->SetPass(method.Pass);
     this->Silhouette.Actor->SetVisibility(method.Silhouette);
     if (method.Silhouette)
@@ -349,6 +355,10 @@ public:
           if (method.Silhouette)
           {
             this->Silhouette.Filter->Modified(); // the extraction is part of every frame
+          }
+          if (method.ObjectLines)
+          {
+            this->Stage.UpdateFeatureLines(); // for this frame's camera
           }
         });
     }

@@ -161,7 +161,7 @@ SPEED_METHODS = (
     "vtkNPRPass sketch, unchanged frame drawn again",
     "vtkNPRPass drawing, unchanged frame drawn again", "vtkSobelGradientMagnitudePass",
     "vtkOutlineGlowPass", "vtkSSAOPass", "vtkEDLShading",
-    "vtkPolyDataSilhouette re-extracted + surface",
+    "vtkPolyDataSilhouette re-extracted + surface", "vtkNPRFeatureLines re-extracted + surface",
     "vtkNPRFeatureLines per camera change (SetCamera + Update)")
 
 
