@@ -44,6 +44,155 @@ namespace
 {
 using Scene = nprPassScene;
 
+// The test sphere (radius 0.5), with or without its point normals.
+vtkSmartPointer<vtkPolyData> SphereData(bool pointNormals)
+{
+  auto sphere = nprSphereSource(0.5, 24, 12);
+  sphere->Update();
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->DeepCopy(sphere->GetOutput());
+  if (!pointNormals)
+  {
+    data->GetPointData()->SetNormals(nullptr);
+  }
+  return data;
+}
+
+vtkSmartPointer<vtkActor> ActorFor(vtkPolyData* data)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(data);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+// The sphere drawn as wireframe or points, lines and points of the given size.
+vtkSmartPointer<vtkProp> DrawnAs(int representation, float lineWidth, float pointSize)
+{
+  auto actor = ActorFor(SphereData(true));
+  actor->GetProperty()->SetRepresentation(representation);
+  actor->GetProperty()->SetLineWidth(lineWidth);
+  actor->GetProperty()->SetPointSize(pointSize);
+  return actor;
+}
+
+vtkSmartPointer<vtkProp> CellNormalsOnly()
+{
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(SphereData(false));
+  normals->ComputePointNormalsOff();
+  normals->ComputeCellNormalsOn();
+  normals->Update();
+  return ActorFor(normals->GetOutput());
+}
+
+vtkSmartPointer<vtkProp> Flat()
+{
+  auto actor = ActorFor(SphereData(true));
+  actor->GetProperty()->SetInterpolationToFlat();
+  return actor;
+}
+
+vtkSmartPointer<vtkProp> Unlit()
+{
+  auto actor = ActorFor(SphereData(true));
+  actor->GetProperty()->LightingOff();
+  return actor;
+}
+
+vtkSmartPointer<vtkProp> ZeroLengthNormals()
+{
+  auto data = SphereData(false);
+  vtkNew<vtkFloatArray> zero;
+  zero->SetNumberOfComponents(3);
+  zero->SetNumberOfTuples(data->GetNumberOfPoints());
+  zero->Fill(0.0);
+  zero->SetName("Normals");
+  data->GetPointData()->SetNormals(zero);
+  return ActorFor(data);
+}
+
+vtkSmartPointer<vtkProp> ScalarColours()
+{
+  vtkNew<vtkElevationFilter> elevation;
+  elevation->SetInputData(SphereData(true));
+  elevation->SetLowPoint(0, -0.5, 0);
+  elevation->SetHighPoint(0, 0.5, 0);
+  elevation->Update();
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->ShallowCopy(elevation->GetOutput());
+  return ActorFor(data);
+}
+
+// The sphere with an 8 x 8 checker texture.
+vtkSmartPointer<vtkProp> Textured()
+{
+  vtkNew<vtkTextureMapToSphere> map;
+  map->SetInputData(SphereData(true));
+  map->Update();
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->ShallowCopy(map->GetOutput());
+  auto actor = ActorFor(data);
+  vtkNew<vtkImageData> checker;
+  checker->SetDimensions(8, 8, 1);
+  checker->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  for (int y = 0; y < 8; ++y)
+  {
+    for (int x = 0; x < 8; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        checker->SetScalarComponentFromDouble(x, y, 0, c, (x + y) % 2 ? 230 : 60);
+      }
+    }
+  }
+  vtkNew<vtkTexture> texture;
+  texture->SetInputData(checker);
+  actor->SetTexture(texture);
+  return actor;
+}
+
+// Two spheres side by side, the blocks of one composite mapper.
+vtkSmartPointer<vtkProp> Multiblock()
+{
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(2);
+  auto left = SphereData(true);
+  auto right = SphereData(true);
+  vtkNew<vtkTransform> shift;
+  shift->Translate(0.8, 0, 0);
+  vtkNew<vtkTransformPolyDataFilter> moved;
+  moved->SetTransform(shift);
+  moved->SetInputData(right);
+  moved->Update();
+  blocks->SetBlock(0, left);
+  blocks->SetBlock(1, moved->GetOutput());
+  vtkNew<nprCompositeMapper> mapper;
+  mapper->SetInputDataObject(blocks);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+// Cones on a 4 x 4 grid of points (vtkGlyph3DMapper).
+vtkSmartPointer<vtkProp> Glyphs()
+{
+  vtkNew<vtkPlaneSource> grid;
+  grid->SetResolution(3, 3);
+  grid->Update();
+  vtkNew<vtkConeSource> cone;
+  cone->SetResolution(16);
+  cone->SetHeight(0.2);
+  cone->SetRadius(0.1);
+  vtkNew<vtkGlyph3DMapper> mapper;
+  mapper->SetInputConnection(grid->GetOutputPort());
+  mapper->SetSourceConnection(cone->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
 // ---- Every kind of opaque actor: lines appear, nothing is reported, nothing crashes ----
 int ActorKinds()
 {
@@ -52,153 +201,19 @@ int ActorKinds()
     const char* Name;
     std::function<vtkSmartPointer<vtkProp>()> Make;
   };
-  auto sphereData = [](bool pointNormals)
-  {
-    auto sphere = nprSphereSource(0.5, 24, 12);
-    sphere->Update();
-    auto data = vtkSmartPointer<vtkPolyData>::New();
-    data->DeepCopy(sphere->GetOutput());
-    if (!pointNormals)
-    {
-      data->GetPointData()->SetNormals(nullptr);
-    }
-    return data;
-  };
-  auto actorFor = [](vtkPolyData* data)
-  {
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(data);
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    return actor;
-  };
-  // The sphere drawn as wireframe or points, lines and points of the given size.
-  auto drawnAs = [&](int representation, float lineWidth, float pointSize)
-  {
-    auto actor = actorFor(sphereData(true));
-    actor->GetProperty()->SetRepresentation(representation);
-    actor->GetProperty()->SetLineWidth(lineWidth);
-    actor->GetProperty()->SetPointSize(pointSize);
-    return actor;
-  };
   const Kind kinds[] = {
-    { "point normals", [&] { return actorFor(sphereData(true)); } },
-    { "cell normals only",
-      [&]
-      {
-        vtkNew<vtkPolyDataNormals> normals;
-        normals->SetInputData(sphereData(false));
-        normals->ComputePointNormalsOff();
-        normals->ComputeCellNormalsOn();
-        normals->Update();
-        return actorFor(normals->GetOutput());
-      } },
-    { "no normals", [&] { return actorFor(sphereData(false)); } },
-    { "flat",
-      [&]
-      {
-        auto actor = actorFor(sphereData(true));
-        actor->GetProperty()->SetInterpolationToFlat();
-        return actor;
-      } },
-    { "unlit",
-      [&]
-      {
-        auto actor = actorFor(sphereData(true));
-        actor->GetProperty()->LightingOff();
-        return actor;
-      } },
-    { "zero-length normals",
-      [&]
-      {
-        auto data = sphereData(false);
-        vtkNew<vtkFloatArray> zero;
-        zero->SetNumberOfComponents(3);
-        zero->SetNumberOfTuples(data->GetNumberOfPoints());
-        zero->Fill(0.0);
-        zero->SetName("Normals");
-        data->GetPointData()->SetNormals(zero);
-        return actorFor(data);
-      } },
-    { "scalar colours",
-      [&]
-      {
-        vtkNew<vtkElevationFilter> elevation;
-        elevation->SetInputData(sphereData(true));
-        elevation->SetLowPoint(0, -0.5, 0);
-        elevation->SetHighPoint(0, 0.5, 0);
-        elevation->Update();
-        auto data = vtkSmartPointer<vtkPolyData>::New();
-        data->ShallowCopy(elevation->GetOutput());
-        return actorFor(data);
-      } },
-    { "textured",
-      [&]
-      {
-        vtkNew<vtkTextureMapToSphere> map;
-        map->SetInputData(sphereData(true));
-        map->Update();
-        auto data = vtkSmartPointer<vtkPolyData>::New();
-        data->ShallowCopy(map->GetOutput());
-        auto actor = actorFor(data);
-        vtkNew<vtkImageData> checker;
-        checker->SetDimensions(8, 8, 1);
-        checker->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-        for (int y = 0; y < 8; ++y)
-        {
-          for (int x = 0; x < 8; ++x)
-          {
-            for (int c = 0; c < 3; ++c)
-            {
-              checker->SetScalarComponentFromDouble(x, y, 0, c, (x + y) % 2 ? 230 : 60);
-            }
-          }
-        }
-        vtkNew<vtkTexture> texture;
-        texture->SetInputData(checker);
-        actor->SetTexture(texture);
-        return actor;
-      } },
-    { "wireframe lines", [&] { return drawnAs(VTK_WIREFRAME, 2, 1); } },
-    { "points", [&] { return drawnAs(VTK_POINTS, 1, 6); } },
-    { "composite (multiblock)",
-      [&]
-      {
-        vtkNew<vtkMultiBlockDataSet> blocks;
-        blocks->SetNumberOfBlocks(2);
-        auto left = sphereData(true);
-        auto right = sphereData(true);
-        vtkNew<vtkTransform> shift;
-        shift->Translate(0.8, 0, 0);
-        vtkNew<vtkTransformPolyDataFilter> moved;
-        moved->SetTransform(shift);
-        moved->SetInputData(right);
-        moved->Update();
-        blocks->SetBlock(0, left);
-        blocks->SetBlock(1, moved->GetOutput());
-        vtkNew<nprCompositeMapper> mapper;
-        mapper->SetInputDataObject(blocks);
-        auto actor = vtkSmartPointer<vtkActor>::New();
-        actor->SetMapper(mapper);
-        return actor;
-      } },
-    { "glyphs",
-      [&]
-      {
-        vtkNew<vtkPlaneSource> grid;
-        grid->SetResolution(3, 3);
-        grid->Update();
-        vtkNew<vtkConeSource> cone;
-        cone->SetResolution(16);
-        cone->SetHeight(0.2);
-        cone->SetRadius(0.1);
-        vtkNew<vtkGlyph3DMapper> mapper;
-        mapper->SetInputConnection(grid->GetOutputPort());
-        mapper->SetSourceConnection(cone->GetOutputPort());
-        auto actor = vtkSmartPointer<vtkActor>::New();
-        actor->SetMapper(mapper);
-        return actor;
-      } },
+    { "point normals", [] { return vtkSmartPointer<vtkProp>(ActorFor(SphereData(true))); } },
+    { "cell normals only", CellNormalsOnly },
+    { "no normals", [] { return vtkSmartPointer<vtkProp>(ActorFor(SphereData(false))); } },
+    { "flat", Flat },
+    { "unlit", Unlit },
+    { "zero-length normals", ZeroLengthNormals },
+    { "scalar colours", ScalarColours },
+    { "textured", Textured },
+    { "wireframe lines", [] { return DrawnAs(VTK_WIREFRAME, 2, 1); } },
+    { "points", [] { return DrawnAs(VTK_POINTS, 1, 6); } },
+    { "composite (multiblock)", Multiblock },
+    { "glyphs", Glyphs },
   };
   for (const Kind& kind : kinds)
   {
