@@ -53,12 +53,11 @@
 
 namespace nprSceneMatrix
 {
-// Every kind of prop in one scene: nothing reported, nothing crashes, something drawn.
-void EveryKind(int style)
+namespace
 {
-  nprPassScene scene(360, 280);
-  scene.Pass->SetStyle(style);
-  vtkRenderer* renderer = scene.Renderer;
+// Spheres with point, cell or no normals; one as wireframe, one as points.
+void AddSpheres(vtkRenderer* renderer)
+{
   ActorFor(renderer, Sphere(1), -1.0, 1.0);
   ActorFor(renderer, Sphere(2), 0.0, 1.0);
   ActorFor(renderer, Sphere(0), 1.0, 1.0);
@@ -66,8 +65,11 @@ void EveryKind(int style)
   auto points = ActorFor(renderer, Sphere(1), 2.0, 0.0);
   points->GetProperty()->SetRepresentationToPoints();
   points->GetProperty()->SetPointSize(4);
+}
 
-  // Lines and vertices of their own.
+// Lines and vertices of their own, and a tube around them: polygons, so styled (vtkTubeFilter).
+void AddStrokes(vtkRenderer* renderer)
+{
   vtkNew<vtkPolyData> strokes;
   vtkNew<vtkPoints> strokePoints;
   vtkNew<vtkCellArray> lines, verts;
@@ -86,16 +88,17 @@ void EveryKind(int style)
   strokes->SetLines(lines);
   strokes->SetVerts(verts);
   ActorFor(renderer, strokes, 0.0, 0.0)->GetProperty()->SetPointSize(5);
-
-  // A tube around the strokes: polygons, so styled (vtkTubeFilter).
   vtkNew<vtkTubeFilter> tube;
   tube->SetInputData(strokes);
   tube->SetRadius(0.03);
   tube->SetNumberOfSides(8);
   tube->Update();
   ActorFor(renderer, tube->GetOutput(), 0.0, 0.3);
+}
 
-  // An isosurface inside its outline.
+// An isosurface inside its outline.
+void AddIsosurface(vtkRenderer* renderer)
+{
   vtkNew<vtkRTAnalyticSource> wavelet;
   wavelet->SetWholeExtent(-8, 8, -8, 8, -8, 8);
   vtkNew<vtkContourFilter> contour;
@@ -110,8 +113,11 @@ void EveryKind(int style)
   auto box = ActorFor(renderer, outline->GetOutput(), -0.5, -0.5);
   box->SetScale(0.05);
   box->GetProperty()->SetColor(0.0, 0.0, 0.0);
+}
 
-  // Glyphs.
+// Glyphs and an image actor.
+void AddGlyphsAndImage(vtkRenderer* renderer)
+{
   vtkNew<vtkPlaneSource> grid;
   grid->SetResolution(2, 2);
   grid->SetCenter(1.0, -1.0, 0.0);
@@ -124,8 +130,6 @@ void EveryKind(int style)
   vtkNew<vtkActor> glyphActor;
   glyphActor->SetMapper(glyphs);
   renderer->AddActor(glyphActor);
-
-  // An image actor.
   vtkNew<vtkImageData> image;
   image->SetDimensions(8, 8, 1);
   image->SetSpacing(0.05, 0.05, 1.0);
@@ -138,8 +142,11 @@ void EveryKind(int style)
   vtkNew<vtkImageActor> imageActor;
   imageActor->GetMapper()->SetInputData(image);
   renderer->AddActor(imageActor);
+}
 
-  // Text, flat and in the scene.
+// Text, flat and in the scene, a scalar bar, and cube axes with grid lines and 3D labels.
+void AddAnnotations(vtkRenderer* renderer, vtkCamera* camera)
+{
   vtkNew<vtkTextActor> text;
   text->SetInput("vtkTextActor");
   text->GetTextProperty()->SetColor(0.0, 0.0, 0.0);
@@ -158,17 +165,28 @@ void EveryKind(int style)
   billboard->SetPosition(0.0, -1.5, 0.0);
   billboard->GetTextProperty()->SetColor(0.0, 0.0, 1.0);
   renderer->AddActor(billboard);
-
-  // Cube axes with grid lines and 3D labels.
   vtkNew<vtkCubeAxesActor> axes;
   axes->SetBounds(-1.5, 2.5, -1.5, 1.5, -0.5, 0.5);
-  axes->SetCamera(scene.Camera());
+  axes->SetCamera(camera);
   axes->DrawXGridlinesOn();
   axes->DrawYGridlinesOn();
   axes->DrawZGridlinesOn();
   axes->SetUse2DMode(false);
   renderer->AddActor(axes);
+}
+}
 
+// Every kind of prop in one scene: nothing reported, nothing crashes, something drawn.
+void EveryKind(int style)
+{
+  nprPassScene scene(360, 280);
+  scene.Pass->SetStyle(style);
+  vtkRenderer* renderer = scene.Renderer;
+  AddSpheres(renderer);
+  AddStrokes(renderer);
+  AddIsosurface(renderer);
+  AddGlyphsAndImage(renderer);
+  AddAnnotations(renderer, scene.Camera());
   renderer->ResetCamera();
   auto shot = RenderTwice(scene);
   if (const char* dump = std::getenv("NPR_TEST_DUMP")) // a look at the scene
