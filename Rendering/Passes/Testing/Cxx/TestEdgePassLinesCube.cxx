@@ -33,16 +33,13 @@ namespace
 using Scene = nprPassScene;
 
 // ---- A unit cube from a known camera: line pixels on its visible edges and nowhere else ----
-int CubeEdges(bool parallel)
-{
-  Scene scene(400, 400);
-  const double* eye = nprCornerEye;
-  nprAddCornerCube(scene.Renderer, parallel, nprGrey);
-  scene.Edges()->SetLineWidth(1.0);
-  scene.Edges()->AntiAliasingOff();
-  auto mask = scene.Mask();
+using Segment = std::pair<std::array<double, 2>, std::array<double, 2>>;
 
-  // Visible edges of a convex box: those with at least one face turned towards the eye.
+// The visible edges of the unit cube seen from nprCornerEye, projected: those with at least one
+// face turned towards the eye (a convex box).
+std::vector<Segment> VisibleCubeEdges(Scene& scene, bool parallel)
+{
+  const double* eye = nprCornerEye;
   const double h = 0.5;
   const int normals[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 },
     { 0, 0, -1 } };
@@ -57,7 +54,7 @@ int CubeEdges(bool parallel)
     return normals[face][0] * toEye[0] + normals[face][1] * toEye[1] + normals[face][2] * toEye[2] >
       0;
   };
-  std::vector<std::pair<std::array<double, 2>, std::array<double, 2>>> visible;
+  std::vector<Segment> visible;
   for (int a = 0; a < 8; ++a)
   {
     for (int axis = 0; axis < 3; ++axis)
@@ -92,10 +89,21 @@ int CubeEdges(bool parallel)
       visible.push_back({ da, db });
     }
   }
-  NPR_CHECK(visible.size() == 9, "a cube seen from a corner shows 9 edges, got " << visible.size());
+  return visible;
+}
 
-  double worst = 0.0;
-  long long linePixels = 0, falsePixels = 0;
+// Precision: the line pixels (mask > 127), the farthest of them from every visible edge, and
+// the pixels lit at all farther than 2 px from every edge (inside the faces).
+struct LinePrecision
+{
+  long long LinePixels = 0;
+  long long FalsePixels = 0;
+  double Worst = 0.0;
+};
+
+LinePrecision MeasurePrecision(vtkImageData* mask, const std::vector<Segment>& visible)
+{
+  LinePrecision precision;
   for (int y = 0; y < 400; ++y)
   {
     for (int x = 0; x < 400; ++x)
@@ -108,16 +116,22 @@ int CubeEdges(bool parallel)
       }
       if (nprPixel(mask, x, y) > 127)
       {
-        ++linePixels;
-        worst = std::max(worst, nearest);
+        ++precision.LinePixels;
+        precision.Worst = std::max(precision.Worst, nearest);
       }
       if (nearest > 2.0 && nprPixel(mask, x, y) > 0)
       {
-        ++falsePixels;
+        ++precision.FalsePixels;
       }
     }
   }
-  // Recall: every visible edge is drawn along its length.
+  return precision;
+}
+
+// Recall: the fraction of points along the visible edges (2 px from their ends) with a line
+// pixel's centre within 1 px.
+double MeasureRecall(vtkImageData* mask, const std::vector<Segment>& visible)
+{
   long long samples = 0, found = 0;
   for (const auto& edge : visible)
   {
@@ -142,13 +156,27 @@ int CubeEdges(bool parallel)
       found += hit ? 1 : 0;
     }
   }
-  const double recall = samples ? static_cast<double>(found) / samples : 0.0;
-  std::cout << (parallel ? "parallel" : "perspective") << ": " << linePixels
-            << " line pixels, farthest " << worst << " px from an edge, " << falsePixels
-            << " pixels lit inside faces, recall " << recall << "\n";
-  NPR_CHECK(linePixels > 500, "too few line pixels: " << linePixels);
-  NPR_CHECK(worst <= 1.0, "a line pixel lies " << worst << " px from every visible edge");
-  NPR_CHECK(falsePixels == 0, falsePixels << " line pixels inside the faces");
+  return samples ? static_cast<double>(found) / samples : 0.0;
+}
+
+int CubeEdges(bool parallel)
+{
+  Scene scene(400, 400);
+  nprAddCornerCube(scene.Renderer, parallel, nprGrey);
+  scene.Edges()->SetLineWidth(1.0);
+  scene.Edges()->AntiAliasingOff();
+  auto mask = scene.Mask();
+  const std::vector<Segment> visible = VisibleCubeEdges(scene, parallel);
+  NPR_CHECK(visible.size() == 9, "a cube seen from a corner shows 9 edges, got " << visible.size());
+  const LinePrecision precision = MeasurePrecision(mask, visible);
+  const double recall = MeasureRecall(mask, visible);
+  std::cout << (parallel ? "parallel" : "perspective") << ": " << precision.LinePixels
+            << " line pixels, farthest " << precision.Worst << " px from an edge, "
+            << precision.FalsePixels << " pixels lit inside faces, recall " << recall << "\n";
+  NPR_CHECK(precision.LinePixels > 500, "too few line pixels: " << precision.LinePixels);
+  NPR_CHECK(precision.Worst <= 1.0,
+    "a line pixel lies " << precision.Worst << " px from every visible edge");
+  NPR_CHECK(precision.FalsePixels == 0, precision.FalsePixels << " line pixels inside the faces");
   NPR_CHECK(recall >= 0.98, "visible edges drawn along only " << recall << " of their length");
   return nprTestResult();
 }
