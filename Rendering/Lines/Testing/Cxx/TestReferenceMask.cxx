@@ -40,45 +40,56 @@ namespace
 using namespace nprFeatureLineTesting;
 
 // A unit cube from a known camera: the mask against the analytic visible edges.
-int MaskCube(bool parallel)
+// The box's edges projected, as x0, y0, x1, y1: visible (at least one face towards the viewer,
+// a convex box) and hidden.
+struct CubeEdgeSets
 {
-  MaskScene scene(400, 300);
-  const double* eye = nprCornerEye;
-  nprAddCornerCube(scene.Renderer, parallel);
-  vtkImageData* mask = scene.Mask();
-  NPR_CHECK(mask->GetDimensions()[0] == 400 && mask->GetDimensions()[1] == 300 &&
-      mask->GetNumberOfScalarComponents() == 1 && mask->GetScalarType() == VTK_UNSIGNED_CHAR,
-    "the mask is not 400x300 unsigned char");
+  std::vector<std::array<double, 4>> Visible, Hidden;
+};
 
-  // Visible edges of a convex box: at least one face towards the viewer.
+CubeEdgeSets ProjectCubeEdges(MaskScene& scene, bool parallel)
+{
+  const double* eye = nprCornerEye;
   double toward[3];
   for (int i = 0; i < 3; ++i)
   {
     toward[i] = -eye[i]; // direction of projection (focal point at the origin)
   }
-  std::vector<std::array<double, 4>> visible, hidden;
+  CubeEdgeSets edges;
   for (const BoxEdge& edge : BoxEdges())
   {
     const bool seen =
       BoxFaceFront(edge.Faces[0][0], edge.Faces[0][1], parallel, parallel ? toward : eye) ||
       BoxFaceFront(edge.Faces[1][0], edge.Faces[1][1], parallel, parallel ? toward : eye);
     const auto a = scene.Project(edge.Ends.first), b = scene.Project(edge.Ends.second);
-    (seen ? visible : hidden).push_back({ a[0], a[1], b[0], b[1] });
+    (seen ? edges.Visible : edges.Hidden).push_back({ a[0], a[1], b[0], b[1] });
   }
-  NPR_CHECK(visible.size() == 9 && hidden.size() == 3, "a cube seen from a corner shows 9 edges");
-  auto nearest = [](const std::vector<std::array<double, 4>>& edges, const double p[2])
-  {
-    double best = 1e300;
-    for (const auto& e : edges)
-    {
-      best = std::min(best, nprSegmentDistance(p, &e[0], &e[2]));
-    }
-    return best;
-  };
+  return edges;
+}
 
-  // Precision: every mask pixel's centre lies within half a pixel diagonal of a visible edge.
-  double worst = 0.0;
-  long long pixels = 0, onHidden = 0;
+double Nearest(const std::vector<std::array<double, 4>>& edges, const double p[2])
+{
+  double best = 1e300;
+  for (const auto& e : edges)
+  {
+    best = std::min(best, nprSegmentDistance(p, &e[0], &e[2]));
+  }
+  return best;
+}
+
+// Precision: every mask pixel 0 or 255, its centre's farthest distance from the visible edges,
+// and the mask pixels on hidden edges only.
+struct MaskPrecision
+{
+  double Worst = 0.0;
+  long long Pixels = 0;
+  long long OnHidden = 0;
+};
+
+MaskPrecision MeasureMaskPrecision(
+  vtkImageData* mask, const MaskScene& scene, const CubeEdgeSets& edges)
+{
+  MaskPrecision precision;
   for (int y = 0; y < scene.Height; ++y)
   {
     for (int x = 0; x < scene.Width; ++x)
@@ -88,18 +99,25 @@ int MaskCube(bool parallel)
       NPR_CHECK(value == 0 || value == 255, "mask value " << value);
       if (value)
       {
-        ++pixels;
-        worst = std::max(worst, nearest(visible, p));
+        ++precision.Pixels;
+        precision.Worst = std::max(precision.Worst, Nearest(edges.Visible, p));
       }
-      if (value && nearest(hidden, p) <= 0.5 && nearest(visible, p) > 1.5)
+      if (value && Nearest(edges.Hidden, p) <= 0.5 && Nearest(edges.Visible, p) > 1.5)
       {
-        ++onHidden;
+        ++precision.OnHidden;
       }
     }
   }
-  // Recall: along every visible edge, a mask pixel in the 3x3 pixels around each point.
+  return precision;
+}
+
+// Recall: points every 0.1 px along the visible edges, and those with a mask pixel in the 3x3
+// pixels around them.
+std::pair<long long, long long> MeasureMaskRecall(
+  vtkImageData* mask, const MaskScene& scene, const CubeEdgeSets& edges)
+{
   long long samples = 0, found = 0;
-  for (const auto& e : visible)
+  for (const auto& e : edges.Visible)
   {
     const double length = std::hypot(e[2] - e[0], e[3] - e[1]);
     const int steps = static_cast<int>(length / 0.1);
@@ -116,22 +134,13 @@ int MaskCube(bool parallel)
       found += hit ? 1 : 0;
     }
   }
-  vtkNPRReferenceMask* reference = scene.Reference;
-  std::cout << (parallel ? "parallel" : "perspective") << ": " << pixels
-            << " mask pixels, farthest centre " << worst << " px from a visible edge, " << onHidden
-            << " on hidden edges, " << found << "/" << samples << " edge points found; "
-            << reference->GetNumberOfFeatureEdges() << " edges, " << reference->GetNumberOfSamples()
-            << " samples, " << reference->GetNumberOfRayCasts() << " rays, "
-            << reference->GetNumberOfVisibleSamples() << " visible\n";
-  NPR_CHECK(pixels > 900, "too few mask pixels: " << pixels);
-  NPR_CHECK(pixels == reference->GetNumberOfLinePixels(), "GetNumberOfLinePixels is wrong");
-  NPR_CHECK(worst <= std::sqrt(0.5) + 1e-6, "a mask pixel lies " << worst << " px from the edges");
-  NPR_CHECK(onHidden == 0, onHidden << " mask pixels on hidden edges");
-  NPR_CHECK(found == samples,
-    "visible edges missed at " << samples - found << " of " << samples << " points");
-  NPR_CHECK(reference->GetNumberOfFeatureEdges() == 12, "the cube's 12 edges are feature lines");
+  return { samples, found };
+}
 
-  // The visible lines: the same mask with them on, and every visible point in a mask pixel.
+// The visible lines: the same mask with them on, and every visible point in a mask pixel.
+void CheckVisibleLines(MaskScene& scene, vtkImageData* mask)
+{
+  vtkNPRReferenceMask* reference = scene.Reference;
   std::vector<unsigned char> first(static_cast<unsigned char*>(mask->GetScalarPointer()),
     static_cast<unsigned char*>(mask->GetScalarPointer()) + scene.Width * scene.Height);
   reference->GenerateVisibleLinesOn();
@@ -155,6 +164,39 @@ int MaskCube(bool parallel)
                                                                                              : 1;
   }
   NPR_CHECK(outside <= 2, outside << " visible-line points outside the mask's pixels");
+}
+
+int MaskCube(bool parallel)
+{
+  MaskScene scene(400, 300);
+  nprAddCornerCube(scene.Renderer, parallel);
+  vtkImageData* mask = scene.Mask();
+  NPR_CHECK(mask->GetDimensions()[0] == 400 && mask->GetDimensions()[1] == 300 &&
+      mask->GetNumberOfScalarComponents() == 1 && mask->GetScalarType() == VTK_UNSIGNED_CHAR,
+    "the mask is not 400x300 unsigned char");
+  const CubeEdgeSets edges = ProjectCubeEdges(scene, parallel);
+  NPR_CHECK(edges.Visible.size() == 9 && edges.Hidden.size() == 3,
+    "a cube seen from a corner shows 9 edges");
+  const MaskPrecision precision = MeasureMaskPrecision(mask, scene, edges);
+  const auto recall = MeasureMaskRecall(mask, scene, edges);
+  const long long samples = recall.first, found = recall.second;
+  vtkNPRReferenceMask* reference = scene.Reference;
+  std::cout << (parallel ? "parallel" : "perspective") << ": " << precision.Pixels
+            << " mask pixels, farthest centre " << precision.Worst << " px from a visible edge, "
+            << precision.OnHidden << " on hidden edges, " << found << "/" << samples
+            << " edge points found; " << reference->GetNumberOfFeatureEdges() << " edges, "
+            << reference->GetNumberOfSamples() << " samples, " << reference->GetNumberOfRayCasts()
+            << " rays, " << reference->GetNumberOfVisibleSamples() << " visible\n";
+  NPR_CHECK(precision.Pixels > 900, "too few mask pixels: " << precision.Pixels);
+  NPR_CHECK(
+    precision.Pixels == reference->GetNumberOfLinePixels(), "GetNumberOfLinePixels is wrong");
+  NPR_CHECK(precision.Worst <= std::sqrt(0.5) + 1e-6,
+    "a mask pixel lies " << precision.Worst << " px from the edges");
+  NPR_CHECK(precision.OnHidden == 0, precision.OnHidden << " mask pixels on hidden edges");
+  NPR_CHECK(found == samples,
+    "visible edges missed at " << samples - found << " of " << samples << " points");
+  NPR_CHECK(reference->GetNumberOfFeatureEdges() == 12, "the cube's 12 edges are feature lines");
+  CheckVisibleLines(scene, mask);
   return nprTestResult();
 }
 NPR_TEST_CASE("mask-cube", [] { return MaskCube(false); });
