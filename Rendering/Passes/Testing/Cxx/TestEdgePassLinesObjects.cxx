@@ -85,9 +85,21 @@ int TouchingObjects()
 NPR_TEST_CASE("touching-objects", TouchingObjects);
 
 // ---- Anti-aliasing: intermediate coverage along slanted lines, and less staircase ----
-int AntiAliasing()
+// A 2 x 1 box turned by 12 degrees about the view axis, 5 units away, and the window positions
+// of its top edge's ends, from (-1, 0.5) to (1, 0.5) turned.
+struct SlantedEdge
 {
-  Scene scene(400, 300);
+  double From[2], To[2];
+
+  // The edge's row at the centre of column x.
+  double RowAt(int x) const
+  {
+    return From[1] + (x + 0.5 - From[0]) * (To[1] - From[1]) / (To[0] - From[0]);
+  }
+};
+
+SlantedEdge AddSlantedBox(Scene& scene)
+{
   vtkNew<vtkCubeSource> cube;
   cube->SetXLength(2);
   cube->SetYLength(1);
@@ -98,64 +110,86 @@ int AntiAliasing()
   tilted->SetInputConnection(cube->GetOutputPort());
   nprAddActor(scene.Renderer, tilted->GetOutputPort());
   scene.LookAtOrigin(5);
-  scene.Edges()->SetLineWidth(1.5);
-
-  // The top edge runs from (-1, 0.5) to (1, 0.5) turned by 12 degrees; in the middle columns
-  // the coverage-weighted row of the line should follow a straight line.
   const double ends[2][3] = { { -1, 0.5, 0.5 }, { 1, 0.5, 0.5 } };
-  double e0[2], e1[2], rotated[2][3];
+  double rotated[2][3];
   for (int i = 0; i < 2; ++i)
   {
     tilt->TransformPoint(ends[i], rotated[i]);
   }
-  scene.Project(rotated[0], e0);
-  scene.Project(rotated[1], e1);
-  auto measure = [&](vtkImageData* mask, long long& intermediate, long long& lit)
+  SlantedEdge edge;
+  scene.Project(rotated[0], edge.From);
+  scene.Project(rotated[1], edge.To);
+  return edge;
+}
+
+// In the middle columns, the line's pixels, those partly covered, and the residual of the
+// coverage-weighted row of the line from its least-squares straight line: the staircase.
+double Staircase(
+  vtkImageData* mask, const SlantedEdge& edge, long long& intermediate, long long& lit)
+{
+  intermediate = lit = 0;
+  std::vector<double> xs, ys;
+  for (int x = static_cast<int>(edge.From[0]) + 20; x < static_cast<int>(edge.To[0]) - 20; ++x)
   {
-    intermediate = lit = 0;
-    std::vector<double> xs, ys;
-    for (int x = static_cast<int>(e0[0]) + 20; x < static_cast<int>(e1[0]) - 20; ++x)
+    const double yEdge = edge.RowAt(x);
+    double sum = 0, weighted = 0;
+    for (int y = static_cast<int>(yEdge) - 4; y <= static_cast<int>(yEdge) + 4; ++y)
     {
-      const double yEdge = e0[1] + (x + 0.5 - e0[0]) * (e1[1] - e0[1]) / (e1[0] - e0[0]);
-      double sum = 0, weighted = 0;
-      for (int y = static_cast<int>(yEdge) - 4; y <= static_cast<int>(yEdge) + 4; ++y)
-      {
-        const int v = nprPixel(mask, x, y);
-        lit += v > 0 ? 1 : 0;
-        intermediate += v > 25 && v < 230 ? 1 : 0;
-        sum += v;
-        weighted += v * (y + 0.5);
-      }
-      if (sum > 0)
-      {
-        xs.push_back(x + 0.5);
-        ys.push_back(weighted / sum);
-      }
+      const int v = nprPixel(mask, x, y);
+      lit += v > 0 ? 1 : 0;
+      intermediate += v > 25 && v < 230 ? 1 : 0;
+      sum += v;
+      weighted += v * (y + 0.5);
     }
-    // Residual of the line's centre from its least-squares straight line: the staircase.
-    const double n = static_cast<double>(xs.size());
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (size_t i = 0; i < xs.size(); ++i)
+    if (sum > 0)
     {
-      sx += xs[i];
-      sy += ys[i];
-      sxx += xs[i] * xs[i];
-      sxy += xs[i] * ys[i];
+      xs.push_back(x + 0.5);
+      ys.push_back(weighted / sum);
     }
-    const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-    const double offset = (sy - slope * sx) / n;
-    double residual = 0;
-    for (size_t i = 0; i < xs.size(); ++i)
+  }
+  const double n = static_cast<double>(xs.size());
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (size_t i = 0; i < xs.size(); ++i)
+  {
+    sx += xs[i];
+    sy += ys[i];
+    sxx += xs[i] * xs[i];
+    sxy += xs[i] * ys[i];
+  }
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const double offset = (sy - slope * sx) / n;
+  double residual = 0;
+  for (size_t i = 0; i < xs.size(); ++i)
+  {
+    const double r = ys[i] - (slope * xs[i] + offset);
+    residual += r * r;
+  }
+  return std::sqrt(residual / std::max(1.0, n));
+}
+
+// The coverage within 8 px of the edge, summed over the middle columns.
+double CoverageAcross(vtkImageData* mask, const SlantedEdge& edge)
+{
+  double sum = 0;
+  for (int x = static_cast<int>(edge.From[0]) + 20; x < static_cast<int>(edge.To[0]) - 20; ++x)
+  {
+    for (int y = 0; y < 300; ++y)
     {
-      const double r = ys[i] - (slope * xs[i] + offset);
-      residual += r * r;
+      sum += std::abs(y + 0.5 - edge.RowAt(x)) < 8 ? nprPixel(mask, x, y) / 255.0 : 0.0;
     }
-    return std::sqrt(residual / std::max(1.0, n));
-  };
+  }
+  return sum;
+}
+
+int AntiAliasing()
+{
+  Scene scene(400, 300);
+  const SlantedEdge edge = AddSlantedBox(scene);
+  scene.Edges()->SetLineWidth(1.5);
   long long intermediateOn, litOn, intermediateOff, litOff;
-  const double staircaseOn = measure(scene.Mask(), intermediateOn, litOn);
+  const double staircaseOn = Staircase(scene.Mask(), edge, intermediateOn, litOn);
   scene.Edges()->AntiAliasingOff();
-  const double staircaseOff = measure(scene.Mask(), intermediateOff, litOff);
+  const double staircaseOff = Staircase(scene.Mask(), edge, intermediateOff, litOff);
   std::cout << "anti-aliasing on: " << intermediateOn << " of " << litOn
             << " line pixels partly covered, centre wobble " << staircaseOn
             << " px; off: " << intermediateOff << " of " << litOff << ", wobble " << staircaseOff
@@ -168,29 +202,16 @@ int AntiAliasing()
 
   // The width is honoured: a width-6 line is about 4 times as heavy as a width-1.5 line.
   scene.Edges()->AntiAliasingOn();
-  auto coverageSum = [&](vtkImageData* mask)
-  {
-    double sum = 0;
-    for (int x = static_cast<int>(e0[0]) + 20; x < static_cast<int>(e1[0]) - 20; ++x)
-    {
-      for (int y = 0; y < 300; ++y)
-      {
-        const double yEdge = e0[1] + (x + 0.5 - e0[0]) * (e1[1] - e0[1]) / (e1[0] - e0[0]);
-        sum += std::abs(y + 0.5 - yEdge) < 8 ? nprPixel(mask, x, y) / 255.0 : 0.0;
-      }
-    }
-    return sum;
-  };
-  const double thin = coverageSum(scene.Mask());
+  const double thin = CoverageAcross(scene.Mask(), edge);
   scene.Edges()->SetLineWidth(6.0);
-  const double thick = coverageSum(scene.Mask());
+  const double thick = CoverageAcross(scene.Mask(), edge);
   std::cout << "coverage across the edge: width 1.5 -> " << thin << ", width 6 -> " << thick
             << "\n";
   NPR_CHECK(thick > 3.0 * thin && thick < 5.0 * thin, "line width not honoured");
   // Widths are at 72 DPI: a window at 144 DPI draws them twice as wide.
   scene.Edges()->SetLineWidth(1.5);
   scene.Window->SetDPI(144);
-  const double doubled = coverageSum(scene.Mask());
+  const double doubled = CoverageAcross(scene.Mask(), edge);
   scene.Window->SetDPI(72);
   std::cout << "width 1.5 at 144 DPI -> " << doubled << "\n";
   NPR_CHECK(doubled > 1.6 * thin && doubled < 2.4 * thin, "the DPI scale is not applied");
