@@ -41,25 +41,20 @@ namespace
 {
 using namespace nprFeatureLineTesting;
 
-// A torus (ring R, tube r) with analytic normals, seen obliquely in perspective: an outer loop
-// and interior contours, every point near the analytic contour generator and that generator
-// covered.
-int SmoothTorus()
+// The torus of the test (ring R, tube r) and the eye it is seen from.
+struct TorusView
 {
-  const double pi = vtkMath::Pi();
-  const double R = 1.0, r = 0.35;
-  const int nu = 96, nv = 48;
-  vtkSmartPointer<vtkPolyData> torus = nprMakeTorus(R, r, nu, nv);
+  double R, r;
+  double Eye[3];
+};
 
-  const double eye[3] = { 0.3, -3.0, 1.6 };
-  auto filter = MakeFilter(AllTypes);
-  filter->SmoothContoursOn();
-  filter->SetEyePosition(eye);
-  filter->SetInputData(torus);
-  filter->Update();
-  const Contour contour = SmoothContour(filter);
-
-  // The analytic facing cosine at the torus point nearest a point x.
+// The largest analytic facing cosine at the torus points nearest the contour's points, which
+// are also returned.
+double WorstFacing(vtkNPRFeatureLines* filter, const Contour& contour, const TorusView& torus,
+  std::vector<std::array<double, 3>>& points)
+{
+  const double R = torus.R, r = torus.r;
+  const double* eye = torus.Eye;
   auto facing = [&](const double x[3], double surface[3])
   {
     const double u = std::atan2(x[1], x[0]);
@@ -71,24 +66,25 @@ int SmoothTorus()
     const double toEye[3] = { s[0] - eye[0], s[1] - eye[1], s[2] - eye[2] };
     return vtkMath::Dot(n, toEye) / vtkMath::Norm(toEye);
   };
-  // Linear interpolation of g along an edge of length l errs by l^2/8 max|g''|, with
-  // |g''| <= k^2 |p - eye| + 3k on a surface of largest curvature k = 1/r; the nearest
-  // surface point is within the sag l^2 k / 8, which moves g by about that (|n| = 1) and the
-  // cosine by that over the distance.
-  const double longest = std::hypot(2 * pi * (R + r) / nu, 2 * pi * r / nv);
-  const double k = 1.0 / r;
-  const double farthest = vtkMath::Norm(eye) + R + r, nearest = vtkMath::Norm(eye) - R - r;
-  const double tolerance = (longest * longest / 8.0) * (k * k * farthest + 3.0 * k + k) / nearest;
   double worst = 0.0;
-  std::vector<std::array<double, 3>> contourPoints;
   for (const auto& use : contour.Uses)
   {
     double x[3], s[3];
     filter->GetOutput()->GetPoint(use.first, x);
     worst = std::max(worst, std::abs(facing(x, s)));
-    contourPoints.push_back({ x[0], x[1], x[2] });
+    points.push_back({ x[0], x[1], x[2] });
   }
-  // Coverage: the analytic generator, found along v for 360 values of u, near the contour.
+  return worst;
+}
+
+// Coverage: the analytic generator, found along v for 360 values of u; its number of points and
+// the farthest of them from the contour's points.
+std::pair<int, double> AnalyticCoverage(
+  const TorusView& torus, const std::vector<std::array<double, 3>>& contourPoints)
+{
+  const double pi = vtkMath::Pi();
+  const double R = torus.R, r = torus.r;
+  const double* eye = torus.Eye;
   double farthestMiss = 0.0;
   int roots = 0;
   for (int i = 0; i < 360; ++i)
@@ -125,44 +121,83 @@ int SmoothTorus()
       ++roots;
     }
   }
-  // The loops' sizes: the outer one reaches beyond the ring, the others stay inside R + r.
+  return { roots, farthestMiss };
+}
+
+// Each loop of the contour's reach from the torus axis, largest first.
+std::vector<double> LoopReach(vtkNPRFeatureLines* filter, const Contour& contour)
+{
   std::vector<double> reach;
+  std::map<vtkIdType, std::vector<vtkIdType>> next;
+  for (const auto& s : contour.Segments)
   {
-    std::map<vtkIdType, std::vector<vtkIdType>> next;
-    for (const auto& s : contour.Segments)
+    next[s[0]].push_back(s[1]);
+    next[s[1]].push_back(s[0]);
+  }
+  std::set<vtkIdType> seen;
+  for (const auto& start : next)
+  {
+    if (seen.count(start.first))
     {
-      next[s[0]].push_back(s[1]);
-      next[s[1]].push_back(s[0]);
+      continue;
     }
-    std::set<vtkIdType> seen;
-    for (const auto& start : next)
+    double most = 0.0;
+    std::vector<vtkIdType> stack = { start.first };
+    while (!stack.empty())
     {
-      if (seen.count(start.first))
+      const vtkIdType p = stack.back();
+      stack.pop_back();
+      if (!seen.insert(p).second)
       {
         continue;
       }
-      double most = 0.0;
-      std::vector<vtkIdType> stack = { start.first };
-      while (!stack.empty())
+      double x[3];
+      filter->GetOutput()->GetPoint(p, x);
+      most = std::max(most, std::hypot(x[0], x[1]));
+      for (vtkIdType q : next[p])
       {
-        const vtkIdType p = stack.back();
-        stack.pop_back();
-        if (!seen.insert(p).second)
-        {
-          continue;
-        }
-        double x[3];
-        filter->GetOutput()->GetPoint(p, x);
-        most = std::max(most, std::hypot(x[0], x[1]));
-        for (vtkIdType q : next[p])
-        {
-          stack.push_back(q);
-        }
+        stack.push_back(q);
       }
-      reach.push_back(most);
     }
+    reach.push_back(most);
   }
   std::sort(reach.rbegin(), reach.rend());
+  return reach;
+}
+
+// A torus (ring R, tube r) with analytic normals, seen obliquely in perspective: an outer loop
+// and interior contours, every point near the analytic contour generator and that generator
+// covered.
+int SmoothTorus()
+{
+  const double pi = vtkMath::Pi();
+  const TorusView view{ 1.0, 0.35, { 0.3, -3.0, 1.6 } };
+  const double R = view.R, r = view.r;
+  const int nu = 96, nv = 48;
+  vtkSmartPointer<vtkPolyData> torus = nprMakeTorus(R, r, nu, nv);
+  auto filter = MakeFilter(AllTypes);
+  filter->SmoothContoursOn();
+  filter->SetEyePosition(view.Eye);
+  filter->SetInputData(torus);
+  filter->Update();
+  const Contour contour = SmoothContour(filter);
+
+  // Linear interpolation of g along an edge of length l errs by l^2/8 max|g''|, with
+  // |g''| <= k^2 |p - eye| + 3k on a surface of largest curvature k = 1/r; the nearest
+  // surface point is within the sag l^2 k / 8, which moves g by about that (|n| = 1) and the
+  // cosine by that over the distance.
+  const double longest = std::hypot(2 * pi * (R + r) / nu, 2 * pi * r / nv);
+  const double k = 1.0 / r;
+  const double farthest = vtkMath::Norm(view.Eye) + R + r;
+  const double nearest = vtkMath::Norm(view.Eye) - R - r;
+  const double tolerance = (longest * longest / 8.0) * (k * k * farthest + 3.0 * k + k) / nearest;
+  std::vector<std::array<double, 3>> contourPoints;
+  const double worst = WorstFacing(filter, contour, view, contourPoints);
+  const std::pair<int, double> coverage = AnalyticCoverage(view, contourPoints);
+  const int roots = coverage.first;
+  const double farthestMiss = coverage.second;
+  // The loops' sizes: the outer one reaches beyond the ring, the others stay inside R + r.
+  const std::vector<double> reach = LoopReach(filter, contour);
   std::cout << "torus " << nu << "x" << nv << ": " << contour.Segments.size() << " segments, "
             << contour.Loops << " loops, closed " << contour.Closed << "; loop reach";
   for (double x : reach)
