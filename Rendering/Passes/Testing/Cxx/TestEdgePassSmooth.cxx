@@ -70,50 +70,48 @@ double Distance(const std::array<double, 2>& a, const double b[2])
 // with normal n = (cos u cos v, sin u cos v, sin v), seen from an eye E: n . (p - E) = 0, that is
 // A cos v + B sin v = -r with A = R - (Ex cos u + Ey sin u), B = -Ez, two solutions v per u. A
 // contour point is visible where the segment from the eye to it stays outside the solid torus.
-int TorusCusp()
+struct CuspView
 {
-  const double R = 1.0, r = 0.4, elevation = vtkMath::RadiansFromDegrees(20.0);
-  Scene scene(800, 600);
-  nprAddMesh(scene.Renderer, nprMakeTorus(R, r, 720, 360));
-  const double eye[3] = { 0.0, -4.0 * std::cos(elevation), 4.0 * std::sin(elevation) };
-  vtkCamera* camera = scene.Camera();
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetPosition(eye);
-  camera->SetViewUp(0.0, 0.0, 1.0);
-  camera->SetClippingRange(1.0, 10.0);
-  scene.Edges()->CreasesOff();
-  scene.Edges()->ContoursOff();
-  auto mask = scene.Mask();
-  const auto pixels = LinePixels(mask);
+  double R, r;
+  double Eye[3];
+};
 
+struct ContourPoint
+{
+  double Display[2];
+  bool Visible;
+};
+
+// Whether the segment from the eye to p stays outside the solid torus: sampled, short of p (the
+// ray is tangent there).
+bool VisibleFromEye(const CuspView& view, const double p[3])
+{
+  const double R = view.R, r = view.r;
+  const double* eye = view.Eye;
   auto solid = [&](const double x[3])
   {
     const double q = x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + R * R - r * r;
     return q * q - 4.0 * R * R * (x[0] * x[0] + x[1] * x[1]); // < 0 inside
   };
-  auto visible = [&](const double p[3])
+  for (int k = 1; k < 20000; ++k)
   {
-    // Samples of the segment, short of the point (the ray is tangent there).
-    for (int k = 1; k < 20000; ++k)
+    const double t = k / 20000.0 * (1.0 - 1e-4);
+    const double x[3] = { eye[0] + t * (p[0] - eye[0]), eye[1] + t * (p[1] - eye[1]),
+      eye[2] + t * (p[2] - eye[2]) };
+    if (solid(x) < -1e-9)
     {
-      const double t = k / 20000.0 * (1.0 - 1e-4);
-      const double x[3] = { eye[0] + t * (p[0] - eye[0]), eye[1] + t * (p[1] - eye[1]),
-        eye[2] + t * (p[2] - eye[2]) };
-      if (solid(x) < -1e-9)
-      {
-        return false;
-      }
+      return false;
     }
-    return true;
-  };
-  // Each branch of the contour generator, sampled along u: projected points and visibility.
-  const int samples = 4000;
-  struct ContourPoint
-  {
-    double Display[2];
-    bool Visible;
-  };
-  std::vector<ContourPoint> branches[2];
+  }
+  return true;
+}
+
+// Each branch of the contour generator, sampled along u: projected points and visibility.
+void SampleBranches(
+  Scene& scene, const CuspView& view, int samples, std::vector<ContourPoint> branches[2])
+{
+  const double R = view.R, r = view.r;
+  const double* eye = view.Eye;
   for (int i = 0; i < samples; ++i)
   {
     const double u = 2.0 * Pi * i / samples;
@@ -126,23 +124,17 @@ int TorusCusp()
         (R + r * std::cos(v)) * std::sin(u), r * std::sin(v) };
       ContourPoint point;
       scene.Project(p, point.Display);
-      point.Visible = visible(p);
+      point.Visible = VisibleFromEye(view, p);
       branches[b].push_back(point);
     }
   }
-  // The contour's endings inside the outline: where a branch turns hidden while no other
-  // visible contour passes within 6 px (else the contour goes behind another one: a T-junction).
-  std::vector<const ContourPoint*> visiblePoints;
-  for (const auto& branch : branches)
-  {
-    for (const ContourPoint& point : branch)
-    {
-      if (point.Visible)
-      {
-        visiblePoints.push_back(&point);
-      }
-    }
-  }
+}
+
+// The contour's endings inside the outline: where a branch turns hidden while no other visible
+// contour passes within 6 px (else the contour goes behind another one: a T-junction).
+std::vector<std::array<double, 2>> FindEndings(
+  const std::vector<ContourPoint> branches[2], int samples)
+{
   std::vector<std::array<double, 2>> endings;
   for (int b = 0; b < 2; ++b)
   {
@@ -174,32 +166,71 @@ int TorusCusp()
       }
     }
   }
+  return endings;
+}
+
+// A line pixel within 2 px of the ending: the line does not fade out before it. Past the ending
+// the depth operator still sees the fold, seen nearly edge-on, for a few pixels: how far the line
+// runs on (line pixels near the ending but off the visible contour) is bounded.
+void CheckEnding(const std::vector<std::array<double, 2>>& pixels,
+  const std::vector<const ContourPoint*>& visiblePoints, const std::array<double, 2>& ending)
+{
+  double nearest = 1e30, runOn = 0.0;
+  for (const auto& pixel : pixels)
+  {
+    const double d = Distance(pixel, ending.data());
+    nearest = std::min(nearest, d);
+    if (d < 20.0)
+    {
+      double toContour = 1e30;
+      for (const ContourPoint* point : visiblePoints)
+      {
+        toContour = std::min(toContour, Distance(pixel, point->Display));
+      }
+      runOn = toContour > 2.0 ? std::max(runOn, d) : runOn;
+    }
+  }
+  std::cout << "ending at " << ending[0] << ", " << ending[1] << ": nearest line pixel " << nearest
+            << " px; the line runs on " << runOn << " px past it\n";
+  NPR_CHECK(nearest <= 2.0, "the interior contour stops " << nearest << " px short of its end");
+  NPR_CHECK(runOn <= 12.0, "the line runs on " << runOn << " px past the contour's end");
+}
+
+int TorusCusp()
+{
+  const double elevation = vtkMath::RadiansFromDegrees(20.0);
+  const CuspView view{ 1.0, 0.4, { 0.0, -4.0 * std::cos(elevation), 4.0 * std::sin(elevation) } };
+  Scene scene(800, 600);
+  nprAddMesh(scene.Renderer, nprMakeTorus(view.R, view.r, 720, 360));
+  vtkCamera* camera = scene.Camera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(view.Eye);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  camera->SetClippingRange(1.0, 10.0);
+  scene.Edges()->CreasesOff();
+  scene.Edges()->ContoursOff();
+  auto mask = scene.Mask();
+  const auto pixels = LinePixels(mask);
+  const int samples = 4000;
+  std::vector<ContourPoint> branches[2];
+  SampleBranches(scene, view, samples, branches);
+  std::vector<const ContourPoint*> visiblePoints;
+  for (const auto& branch : branches)
+  {
+    for (const ContourPoint& point : branch)
+    {
+      if (point.Visible)
+      {
+        visiblePoints.push_back(&point);
+      }
+    }
+  }
+  const std::vector<std::array<double, 2>> endings = FindEndings(branches, samples);
   std::cout << "contour endings (analytic): " << endings.size() << "\n";
   NPR_CHECK(endings.size() == 2, "this view has two endings, found " << endings.size());
   for (const auto& ending : endings)
   {
-    // A line pixel within 2 px of the ending: the line does not fade out before it. Past the
-    // ending the depth operator still sees the fold, seen nearly edge-on, for a few pixels: how
-    // far the line runs on (line pixels near the ending but off the visible contour) is bounded.
-    double nearest = 1e30, runOn = 0.0;
-    for (const auto& pixel : pixels)
-    {
-      const double d = Distance(pixel, ending.data());
-      nearest = std::min(nearest, d);
-      if (d < 20.0)
-      {
-        double toContour = 1e30;
-        for (const ContourPoint* point : visiblePoints)
-        {
-          toContour = std::min(toContour, Distance(pixel, point->Display));
-        }
-        runOn = toContour > 2.0 ? std::max(runOn, d) : runOn;
-      }
-    }
-    std::cout << "ending at " << ending[0] << ", " << ending[1] << ": nearest line pixel "
-              << nearest << " px; the line runs on " << runOn << " px past it\n";
-    NPR_CHECK(nearest <= 2.0, "the interior contour stops " << nearest << " px short of its end");
-    NPR_CHECK(runOn <= 12.0, "the line runs on " << runOn << " px past the contour's end");
+    CheckEnding(pixels, visiblePoints, ending);
   }
   return nprTestResult();
 }
