@@ -144,14 +144,10 @@ vtkSmartPointer<vtkRenderPass> GBufferAlone()
   return steps;
 }
 
-std::vector<SpeedMethod> MakeMethods()
+// The edge style with parts of it off, and as it was before its composite and coverage were
+// drawn over the blocks near lines and its surfaces copied back by a blit.
+void AddEdgeVariants(std::vector<SpeedMethod>& methods)
 {
-  std::vector<SpeedMethod> methods;
-  methods.push_back({ "plain", "plain VTK frame", nullptr });
-  for (const char* style : { "edges", "toon+edges", "sketch", "toon", "inked", "drawing" })
-  {
-    methods.push_back({ style, std::string("vtkNPRPass ") + style, NPRStyle(style) });
-  }
   // What bounds two of them, measured beside them: the edge pass with every line type off (the
   // G-buffer capture and the depth-sprite copy back, no line taps) and with silhouettes only (no
   // normals written or compared), and the inking pass with a one-pixel wireframe (no wide lines:
@@ -183,6 +179,10 @@ std::vector<SpeedMethod> MakeMethods()
   vtkNPRPass::SafeDownCast(fullCoverage)->GetEdgePass()->SkipLineFreeBlocksOff();
   methods.push_back(
     { "sketch-full-coverage", "vtkNPRPass sketch, line coverage over every pixel", fullCoverage });
+}
+
+void AddBounds(std::vector<SpeedMethod>& methods)
+{
   // The bound under the floor: the G-buffer drawn as the edge style draws it (normals, ids) and
   // nothing shown from it, so the floor's difference to it is the copy into the window.
   methods.push_back(
@@ -191,6 +191,10 @@ std::vector<SpeedMethod> MakeMethods()
   // into the window by one full-screen fetch per pixel (nprOneFetchPass).
   methods.push_back({ "one-fetch", "render steps into a texture, one full-screen fetch",
     OverRenderSteps<nprOneFetchPass>(), false, false, true });
+}
+
+void AddOptionalLineTests(std::vector<SpeedMethod>& methods)
+{
   // What the optional line tests cost: creases from the face normals (the G-buffer's geometry
   // attachment RGBA32F instead of RG32F), smooth silhouettes, suggestive contours.
   auto faceCreases = NPRStyle("edges");
@@ -206,6 +210,10 @@ std::vector<SpeedMethod> MakeMethods()
   auto thin = NPRStyle("inked");
   vtkNPRPass::SafeDownCast(thin)->GetInkPass()->SetLineWidth(0.5);
   methods.push_back({ "inked-thin", "vtkNPRPass inked, 1 px wireframe", thin });
+}
+
+void AddUnchangedFrames(std::vector<SpeedMethod>& methods)
+{
   // Its own pass, so that the edges method above draws every frame from scratch.
   methods.push_back(
     { "unchanged", "vtkNPRPass edges, unchanged frame drawn again", NPRStyle("edges"), true });
@@ -213,6 +221,11 @@ std::vector<SpeedMethod> MakeMethods()
     NPRStyle("sketch"), true });
   methods.push_back({ "unchanged-drawing", "vtkNPRPass drawing, unchanged frame drawn again",
     NPRStyle("drawing"), true });
+}
+
+// VTK's own passes, and lines over the plain surface in object space.
+void AddPeers(std::vector<SpeedMethod>& methods)
+{
   methods.push_back(
     { "sobel", "vtkSobelGradientMagnitudePass", OverRenderSteps<vtkSobelGradientMagnitudePass>() });
   methods.push_back({ "glow", "vtkOutlineGlowPass", OverRenderSteps<vtkOutlineGlowPass>() });
@@ -224,6 +237,21 @@ std::vector<SpeedMethod> MakeMethods()
   // drawn over the plain surface: what the edge style's lines cost in object space.
   methods.push_back({ "objectlines", "vtkNPRFeatureLines re-extracted + surface", nullptr, false,
     false, false, true });
+}
+
+std::vector<SpeedMethod> MakeMethods()
+{
+  std::vector<SpeedMethod> methods;
+  methods.push_back({ "plain", "plain VTK frame", nullptr });
+  for (const char* style : { "edges", "toon+edges", "sketch", "toon", "inked", "drawing" })
+  {
+    methods.push_back({ style, std::string("vtkNPRPass ") + style, NPRStyle(style) });
+  }
+  AddEdgeVariants(methods);
+  AddBounds(methods);
+  AddOptionalLineTests(methods);
+  AddUnchangedFrames(methods);
+  AddPeers(methods);
   return methods;
 }
 
