@@ -331,10 +331,6 @@ public:
 private:
   void MutateOnce(std::string& data, bool text)
   {
-    static const char* numbers[] = { "0", "-1", "1", "2", "3", "7", "8", "9", "255", "256", "65535",
-      "65536", "2147483647", "2147483648", "-2147483648", "4294967295", "4294967296",
-      "9223372036854775807", "99999999999999999999", "1e308", "-1e308", "1e-320", "nan", "inf",
-      "-inf", "-0", "0.5", "1e9", "" };
     static const uint32_t integers[] = { 0, 1, 2, 3, 0x7f, 0x80, 0xff, 0xffff, 0x7fffffff,
       0x80000000, 0xffffffff, 0x7fc00000 /* float NaN */, 0x7f800000 /* float Inf */ };
     const size_t size = data.size();
@@ -362,24 +358,8 @@ private:
         }
         break;
       case 3: // insert random bytes or a copy of a chunk
-      {
-        const size_t at = this->Below(size + 1);
-        if (size && this->Below(2))
-        {
-          const size_t from = this->Below(size);
-          data.insert(at, data.substr(from, 1 + this->Below(std::min<size_t>(size - from, 64))));
-        }
-        else
-        {
-          std::string bytes(1 + this->Below(8), '\0');
-          for (char& c : bytes)
-          {
-            c = static_cast<char>(this->Below(256));
-          }
-          data.insert(at, bytes);
-        }
+        this->Insert(data);
         break;
-      }
       case 4: // delete a chunk
         if (size)
         {
@@ -391,17 +371,8 @@ private:
         data.resize(this->Below(size + 1));
         break;
       case 6: // splice in a piece of another seed
-      {
-        const std::string& other = this->Pool[this->Below(this->Pool.size())];
-        if (!other.empty())
-        {
-          const size_t from = this->Below(other.size());
-          const size_t at = this->Below(size + 1);
-          data.replace(at, this->Below(std::min<size_t>(size - at, 64) + 1),
-            other.substr(from, 1 + this->Below(std::min<size_t>(other.size() - from, 128))));
-        }
+        this->Splice(data);
         break;
-      }
       case 7: // overwrite a chunk with a chunk of itself
         if (size > 2)
         {
@@ -411,36 +382,79 @@ private:
         }
         break;
       default: // text: a number replaced by an interesting one, or a line repeated
-        if (size && this->Below(4))
-        {
-          size_t at = this->Below(size);
-          const size_t digit = data.find_first_of("0123456789", at);
-          if (digit == std::string::npos)
-          {
-            break;
-          }
-          size_t start = digit;
-          while (start > 0 && std::strchr("0123456789.-+eE", data[start - 1]))
-          {
-            --start;
-          }
-          size_t end = digit;
-          while (end < size && std::strchr("0123456789.-+eE", data[end]))
-          {
-            ++end;
-          }
-          data.replace(start, end - start, numbers[this->Below(sizeof(numbers) / sizeof(char*))]);
-        }
-        else if (size)
-        {
-          const size_t start = data.rfind('\n', this->Below(size));
-          const size_t from = start == std::string::npos ? 0 : start + 1;
-          const size_t end = data.find('\n', from);
-          const std::string line =
-            data.substr(from, end == std::string::npos ? end : end - from + 1);
-          this->Below(2) ? data.insert(from, line) : data.erase(from, line.size());
-        }
+        this->MutateText(data);
         break;
+    }
+  }
+
+  void Insert(std::string& data)
+  {
+    const size_t size = data.size();
+    const size_t at = this->Below(size + 1);
+    if (size && this->Below(2))
+    {
+      const size_t from = this->Below(size);
+      data.insert(at, data.substr(from, 1 + this->Below(std::min<size_t>(size - from, 64))));
+    }
+    else
+    {
+      std::string bytes(1 + this->Below(8), '\0');
+      for (char& c : bytes)
+      {
+        c = static_cast<char>(this->Below(256));
+      }
+      data.insert(at, bytes);
+    }
+  }
+
+  void Splice(std::string& data)
+  {
+    const size_t size = data.size();
+    const std::string& other = this->Pool[this->Below(this->Pool.size())];
+    if (!other.empty())
+    {
+      const size_t from = this->Below(other.size());
+      const size_t at = this->Below(size + 1);
+      data.replace(at, this->Below(std::min<size_t>(size - at, 64) + 1),
+        other.substr(from, 1 + this->Below(std::min<size_t>(other.size() - from, 128))));
+    }
+  }
+
+  // A number replaced by an interesting one, or a line repeated or removed.
+  void MutateText(std::string& data)
+  {
+    static const char* numbers[] = { "0", "-1", "1", "2", "3", "7", "8", "9", "255", "256", "65535",
+      "65536", "2147483647", "2147483648", "-2147483648", "4294967295", "4294967296",
+      "9223372036854775807", "99999999999999999999", "1e308", "-1e308", "1e-320", "nan", "inf",
+      "-inf", "-0", "0.5", "1e9", "" };
+    const size_t size = data.size();
+    if (size && this->Below(4))
+    {
+      size_t at = this->Below(size);
+      const size_t digit = data.find_first_of("0123456789", at);
+      if (digit == std::string::npos)
+      {
+        return;
+      }
+      size_t start = digit;
+      while (start > 0 && std::strchr("0123456789.-+eE", data[start - 1]))
+      {
+        --start;
+      }
+      size_t end = digit;
+      while (end < size && std::strchr("0123456789.-+eE", data[end]))
+      {
+        ++end;
+      }
+      data.replace(start, end - start, numbers[this->Below(sizeof(numbers) / sizeof(char*))]);
+    }
+    else if (size)
+    {
+      const size_t start = data.rfind('\n', this->Below(size));
+      const size_t from = start == std::string::npos ? 0 : start + 1;
+      const size_t end = data.find('\n', from);
+      const std::string line = data.substr(from, end == std::string::npos ? end : end - from + 1);
+      this->Below(2) ? data.insert(from, line) : data.erase(from, line.size());
     }
   }
 
