@@ -119,11 +119,9 @@ void ShowBandedSphere(Scene& scene)
 }
 
 // ---- A lit sphere in toon shading shows exactly N shades of its colour ----
-int ToonBands()
+// N bands give N shades, per pixel and per vertex.
+void CheckBandCounts(Scene& scene)
 {
-  Scene scene(360, 300);
-  ShowBandedSphere(scene);
-  scene.Pass->SetStyleToToon();
   for (bool perVertex : { false, true })
   {
     scene.Toon()->SetPerVertex(perVertex);
@@ -139,17 +137,14 @@ int ToonBands()
         std::to_string(bands) + " bands" + (perVertex ? " per vertex" : " per pixel"));
     }
   }
+}
 
-  // On a coarse sphere the two differ: per vertex, band borders are straight within a triangle.
-  vtkActor* sphere = vtkActor::SafeDownCast(scene.Renderer->GetActors()->GetItemAsObject(0));
-  auto coarse = nprSphereSource(0.5, 12, 8);
-  vtkPolyDataMapper::SafeDownCast(sphere->GetMapper())->SetInputConnection(coarse->GetOutputPort());
-  scene.Camera()->SetParallelScale(0.6);
-  scene.Toon()->SetNumberOfBands(3);
+// On a coarse sphere the two differ: per vertex, band borders are straight within a triangle.
+void CheckCoarseSphere(Scene& scene, const std::vector<Color>& shades)
+{
   auto perVertexImage = scene.Render();
   scene.Toon()->SetPerVertex(false);
   auto perPixelImage = scene.Render();
-  const auto shades = ExpectedShades(Orange, { 1.0 / 3, 2.0 / 3, 1.0 });
   CheckShades(perVertexImage, shades, "coarse sphere per vertex");
   CheckShades(perPixelImage, shades, "coarse sphere per pixel");
   long long differing = 0;
@@ -164,8 +159,11 @@ int ToonBands()
             << " pixels differ between per-vertex and per-pixel on the coarse sphere\n";
   NPR_CHECK(differing > 200,
     "per-vertex toon looks like per-pixel toon (" << differing << " pixels differ)");
+}
 
-  // A user table: its entries are the bands.
+// A user table: its entries are the bands.
+void CheckUserTable(Scene& scene)
+{
   vtkNew<vtkLookupTable> table;
   table->SetNumberOfTableValues(2);
   table->SetTableValue(0, 0.25, 0.25, 0.25);
@@ -178,11 +176,15 @@ int ToonBands()
   NPR_CHECK(
     std::abs(shade[0] - 0.25) < 1.0 / 255, "GetShade(0.2) with the table gives " << shade[0]);
   scene.Toon()->SetTable(nullptr);
+}
 
-  // Zero-length normals: no NaN colour, only band colours (the darkest where n is 0).
+// Zero-length normals on every other point of the mesh: no NaN colour, only band colours (the
+// darkest where n is 0).
+void CheckZeroLengthNormals(
+  Scene& scene, vtkActor* sphere, vtkPolyData* mesh, const std::vector<Color>& shades)
+{
   vtkNew<vtkPolyData> flattened;
-  coarse->Update();
-  flattened->DeepCopy(coarse->GetOutput());
+  flattened->DeepCopy(mesh);
   vtkDataArray* normals = flattened->GetPointData()->GetNormals();
   for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); i += 2)
   {
@@ -203,7 +205,24 @@ int ToonBands()
     NPR_CHECK(colors.size() >= 2, "zero-length normals: " << colors.size() << " colours");
   }
   scene.Toon()->SetPerVertex(false);
+}
 
+int ToonBands()
+{
+  Scene scene(360, 300);
+  ShowBandedSphere(scene);
+  scene.Pass->SetStyleToToon();
+  CheckBandCounts(scene);
+  vtkActor* sphere = vtkActor::SafeDownCast(scene.Renderer->GetActors()->GetItemAsObject(0));
+  auto coarse = nprSphereSource(0.5, 12, 8);
+  vtkPolyDataMapper::SafeDownCast(sphere->GetMapper())->SetInputConnection(coarse->GetOutputPort());
+  scene.Camera()->SetParallelScale(0.6);
+  scene.Toon()->SetNumberOfBands(3);
+  const auto shades = ExpectedShades(Orange, { 1.0 / 3, 2.0 / 3, 1.0 });
+  CheckCoarseSphere(scene, shades);
+  CheckUserTable(scene);
+  coarse->Update();
+  CheckZeroLengthNormals(scene, sphere, coarse->GetOutput(), shades);
   // An unlit actor keeps its flat colour.
   sphere->GetProperty()->LightingOff();
   CheckShades(scene.Render(), ExpectedShades(Orange, { 1.0 }), "an unlit actor");
