@@ -50,26 +50,17 @@ double Distance(const Image2& a, const Image2& b)
 }
 
 // ---- A unit cube from a corner: 9 visible edges, 3 hidden, against the analytic projection ----
-int DrawingCube(bool parallel)
+// The analytic edges of the corner cube as pairs of corner indices, visible (a face towards the
+// viewer) or hidden.
+void CubeEdgesByVisibility(
+  bool parallel, std::set<std::pair<int, int>>& visible, std::set<std::pair<int, int>>& hidden)
 {
-  DrawingScene scene(400, 300);
   const double* eye = nprCornerEye;
-  nprAddCornerCube(scene.Renderer, parallel);
-  scene.Lines->HiddenLinesOn();
-  const std::vector<Stroke> strokes = scene.Strokes();
-
   double toward[3];
   for (int i = 0; i < 3; ++i)
   {
     toward[i] = -eye[i];
   }
-  std::vector<Image2> corners;
-  for (int c = 0; c < 8; ++c)
-  {
-    corners.push_back(scene.Project(Corner(c)));
-  }
-  // The analytic edges as pairs of corner indices, visible or hidden.
-  std::set<std::pair<int, int>> visible, hidden;
   for (const BoxEdge& edge : BoxEdges())
   {
     int ends[2];
@@ -89,6 +80,22 @@ int DrawingCube(bool parallel)
       BoxFaceFront(edge.Faces[1][0], edge.Faces[1][1], parallel, parallel ? toward : eye);
     (seen ? visible : hidden).insert({ std::min(ends[0], ends[1]), std::max(ends[0], ends[1]) });
   }
+}
+
+int DrawingCube(bool parallel)
+{
+  DrawingScene scene(400, 300);
+  nprAddCornerCube(scene.Renderer, parallel);
+  scene.Lines->HiddenLinesOn();
+  const std::vector<Stroke> strokes = scene.Strokes();
+
+  std::vector<Image2> corners;
+  for (int c = 0; c < 8; ++c)
+  {
+    corners.push_back(scene.Project(Corner(c)));
+  }
+  std::set<std::pair<int, int>> visible, hidden;
+  CubeEdgesByVisibility(parallel, visible, hidden);
   NPR_CHECK(visible.size() == 9 && hidden.size() == 3, "a cube seen from a corner shows 9 edges");
 
   // Every stroke point is a corner's projection (within 0.5 px; in fact to rounding), and the

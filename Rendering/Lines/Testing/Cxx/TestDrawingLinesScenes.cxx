@@ -251,18 +251,10 @@ int DrawingErrors()
 NPR_TEST_CASE("drawing-errors", DrawingErrors);
 
 // ---- The scene's own line cells (LinePrimitives) ----
-// A unit cube at the origin, a red 2 px line behind it along x (z = -1, from x -2 to 2) and a
-// blue one before it (z = 1), under a parallel camera on +z: the line behind is hidden where the
-// cube covers it, x in [-0.5, 0.5], the one before is whole; each stroke in its actor's colour
-// and width; none without LinePrimitives.
-int DrawingLinePrimitives()
+// Two polylines 4 units long across the view, 2 px wide: red behind the cube (z = -1), blue in
+// front of it (z = 1).
+void AddLinesAcross(vtkRenderer* renderer)
 {
-  DrawingScene scene(400, 300);
-  vtkNew<vtkPolyDataMapper> cubeMapper;
-  cubeMapper->SetInputData(CubeSource());
-  vtkNew<vtkActor> cube;
-  cube->SetMapper(cubeMapper);
-  scene.Renderer->AddActor(cube);
   for (const double z : { -1.0, 1.0 })
   {
     vtkNew<vtkPoints> points;
@@ -281,8 +273,23 @@ int DrawingLinePrimitives()
     actor->SetMapper(mapper);
     actor->GetProperty()->SetColor(z < 0.0 ? 1.0 : 0.0, 0.0, z < 0.0 ? 0.0 : 1.0);
     actor->GetProperty()->SetLineWidth(2.0);
-    scene.Renderer->AddActor(actor);
+    renderer->AddActor(actor);
   }
+}
+
+// A unit cube at the origin, a red 2 px line behind it along x (z = -1, from x -2 to 2) and a
+// blue one before it (z = 1), under a parallel camera on +z: the line behind is hidden where the
+// cube covers it, x in [-0.5, 0.5], the one before is whole; each stroke in its actor's colour
+// and width; none without LinePrimitives.
+int DrawingLinePrimitives()
+{
+  DrawingScene scene(400, 300);
+  vtkNew<vtkPolyDataMapper> cubeMapper;
+  cubeMapper->SetInputData(CubeSource());
+  vtkNew<vtkActor> cube;
+  cube->SetMapper(cubeMapper);
+  scene.Renderer->AddActor(cube);
+  AddLinesAcross(scene.Renderer);
   nprParallelFromFront(scene.Camera(), 1.5, 5.0, 15.0);
   scene.Lines->HiddenLinesOn();
   const auto countLines = [](const std::vector<Stroke>& strokes)

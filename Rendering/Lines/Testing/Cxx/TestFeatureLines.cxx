@@ -139,7 +139,9 @@ void SetView(vtkNPRFeatureLines* filter, const View& view)
     filter->SetEyePosition(v[0], v[1], v[2]);
   }
 }
-int CubeSilhouettes()
+
+// Every view's silhouettes of the cube, as quads and as triangles, are the analytic outline.
+void CheckViews()
 {
   for (bool triangulate : { false, true })
   {
@@ -162,8 +164,11 @@ int CubeSilhouettes()
         std::string(view.Name) + (triangulate ? " (triangles)" : ""));
     }
   }
+}
 
-  // Both types: the union, with both bits on the outline.
+// Both types: the union, with both bits on the outline.
+void CheckUnion()
+{
   auto both = MakeFilter(vtkNPRFeatureLines::SILHOUETTE | vtkNPRFeatureLines::CREASE);
   both->SetInputData(CubeSource());
   SetView(both, Views[0]);
@@ -173,9 +178,12 @@ int CubeSilhouettes()
   CheckEdges(EdgesOf(lines, vtkNPRFeatureLines::SILHOUETTE), BoxSilhouettes(false, Views[0].Vector),
     "silhouette bits of the union");
   CheckEdges(EdgesOf(lines, vtkNPRFeatureLines::CREASE), AllBoxEdges(), "crease bits of the union");
+}
 
-  // SetCamera with an actor matrix (rotation, non-uniform scale, translation): the silhouettes
-  // are those of the transformed mesh seen from the camera directly.
+// SetCamera with an actor matrix (rotation, non-uniform scale, translation): the silhouettes
+// are those of the transformed mesh seen from the camera directly.
+void CheckCameraMatrix()
+{
   vtkNew<vtkTransform> transform;
   transform->Translate(3.0, -1.0, 2.0);
   transform->RotateWXYZ(35.0, 1.0, 2.0, 0.5);
@@ -218,6 +226,13 @@ int CubeSilhouettes()
     NPR_CHECK(inModel.size() == 6 && inModel == inWorld,
       "SetCamera with a matrix finds other silhouettes than the transformed mesh");
   }
+}
+
+int CubeSilhouettes()
+{
+  CheckViews();
+  CheckUnion();
+  CheckCameraMatrix();
   return nprTestResult();
 }
 NPR_TEST_CASE("cube-silhouettes", CubeSilhouettes);
