@@ -562,8 +562,6 @@ std::string WriteSpeedCSV(const std::vector<SpeedRow>& rows, const std::string& 
   return problems;
 }
 
-// One scene and size's table: the median of the runs' medians; the ratio and the difference to
-// the plain frame are taken within each run.
 // The lowest and highest of the runs' figures ("8.2 to 10.1"), or the one run's: the spread a
 // difference between two methods has to beat.
 std::string RunRange(const std::vector<double>& values)
@@ -577,6 +575,8 @@ std::string RunRange(const std::vector<double>& values)
                             : nprFixed(*range.first, 1) + " to " + nprFixed(*range.second, 1);
 }
 
+// One scene and size's table: the median of the runs' medians; the ratio and the difference to
+// the plain frame are taken within each run.
 void WriteSpeedTable(std::ostream& md, const std::vector<SpeedRow>& rows,
   const std::vector<SpeedMethod>& methods, const nprBenchmarkScene& scene,
   const std::string& sizeName)

@@ -238,8 +238,8 @@ CaseFrames DrawCase(nprBenchmarkStage& stage, vtkNPRPass* pass, const nprBenchma
   const nprClock::time_point referenceStart = nprClock::now();
   frames.Reference = stage.ReferenceMask();
   frames.ReferenceSeconds = nprSecondsSince(referenceStart);
-  stage.Camera()->SetClippingRange(
-    row.Near, row.Far); // as the user set it, whatever the reference did
+  // The range as the user set it, whatever the reference did.
+  stage.Camera()->SetClippingRange(row.Near, row.Far);
   stage.Activate(pass, false);
   stage.TimedFrame(false);
   frames.Buffer = ReadGBuffer(stage.Window, pass->GetGBufferPass(), row.Near, row.Far);
